@@ -1,0 +1,5 @@
+// The styles of src_fix/, one line each. No include guard on purpose: this list is
+// included once for the class declarations and again with FIX_CLASS / COMPUTE_CLASS
+// defined, where each header expands to its FixStyle(...) / ComputeStyle(...) line
+// (the LAMMPS style-header convention). Adding a style = adding its header here.
+#include "fix_ohmdem_probe.h"

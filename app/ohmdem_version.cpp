@@ -1,0 +1,4 @@
+// The project version, one definition for the engine and the post tool.
+namespace ohmdem {
+const char *version() { return OHMDEM_VERSION; }
+}  // namespace ohmdem
