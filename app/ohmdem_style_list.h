@@ -2,4 +2,5 @@
 // included once for the class declarations and again with FIX_CLASS / COMPUTE_CLASS
 // defined, where each header expands to its FixStyle(...) / ComputeStyle(...) line
 // (the LAMMPS style-header convention). Adding a style = adding its header here.
-#include "fix_ohmdem_probe.h"
+#include "fix_bearing_race.h"
+#include "fix_bearing_cage.h"

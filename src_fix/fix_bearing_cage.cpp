@@ -1,0 +1,306 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/cage. Contact physics in cage_contact.{h,cpp}; this file
+   parses, assigns balls to pockets, integrates the cage rotation, reduces the
+   reactions in tag order (ordered_reduce.h) and handles restart.
+------------------------------------------------------------------------- */
+
+#include "fix_bearing_cage.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "cage_contact.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "fix_property_global.h"
+#include "modify.h"
+#include "ordered_reduce.h"
+#include "style_args.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr int kVectorSize = 6;
+// Per-atom state in a fix property/atom (migrates, restarts); the first kPeratomCols columns
+// are this fix's per-atom output.
+enum Col { POCKET, FORCE, FX, FY, NCOL };
+constexpr int kPeratomCols = 2;  // pocket index, pocket force on the ball (signed, N)
+constexpr int kRestartSize = 8;
+}  // namespace
+
+FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  parse(narg, arg);
+  vector_flag = 1;
+  size_vector = kVectorSize;
+  global_freq = 1;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = kPeratomCols;
+  peratom_freq = 1;
+  restart_global = 1;
+  array_atom = nullptr;
+}
+
+FixBearingCage::~FixBearingCage() = default;
+
+void FixBearingCage::parse(int narg, char **arg)
+{
+  ohmdem::StyleArgs a(error, "fix bearing/cage", narg, arg, 3);
+  bool have[5] = {false, false, false, false, false};
+  while (!a.done()) {
+    const std::string kw = a.word("keyword", "a keyword");
+    if (kw == "pockets") {
+      npockets_ = a.integer(kw, "the number of pockets, an integer >= 2", 2, 100000);
+      have[0] = true;
+    } else if (kw == "radius") {
+      pitch_radius_ = a.positive(kw, "the pitch radius of the pockets, a positive length (m)");
+      have[1] = true;
+    } else if (kw == "clearance") {
+      clearance_ = a.non_negative(kw, "the pocket clearance per side, a length >= 0 (m)");
+      have[2] = true;
+    } else if (kw == "type") {
+      cage_type_ = a.integer(kw, "the cage material type, an atom type 1..ntypes", 1, 1 << 30);
+      have[3] = true;
+    } else if (kw == "mass") {
+      mass_ = a.positive(kw, "the cage mass, a positive mass (kg)");
+      have[4] = true;
+    } else if (kw == "inertia") {
+      inertia_ = a.positive(kw, "the cage moment of inertia about its axis, > 0 (kg m^2)");
+    } else if (kw == "drag") {
+      drag_ = a.non_negative(kw, "a rotational drag coefficient >= 0 (N m s)");
+    } else if (kw == "centre" || kw == "center") {
+      cx_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = a.number(kw, "two coordinates x y (m)");
+    } else if (kw == "angle") {
+      angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * M_PI / 180.0;
+    } else {
+      a.unknown(kw.c_str(), "pockets radius clearance type mass inertia drag centre angle");
+    }
+  }
+  const char *names[5] = {"pockets", "radius", "clearance", "type", "mass"};
+  for (int k = 0; k < 5; ++k)
+    if (!have[k]) a.fail(names[k], "a value: the keyword is required", "nothing");
+  if (cage_type_ > atom->ntypes)
+    a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(atom->ntypes),
+           std::to_string(cage_type_).c_str());
+  // A thin ring at the pitch radius unless given.
+  if (inertia_ <= 0.0) inertia_ = mass_ * pitch_radius_ * pitch_radius_;
+}
+
+int FixBearingCage::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE;
+}
+
+void FixBearingCage::post_create()
+{
+  // Which pocket each ball sits in (fixed at the first run; -1 = not yet) and the last
+  // pocket force, in a fix property/atom: migrates with the atom, written to restart files.
+  const std::string name = std::string("bearingCage_") + id;
+  if (!modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style, false)) {
+    const char *fixarg[] = {name.c_str(), "all", "property/atom", name.c_str(), "vector",
+                            "yes", "no", "no", "-1.", "0.", "0.", "0."};
+    modify->add_fix_property_atom(12, const_cast<char **>(fixarg), style);
+  }
+  init();
+}
+
+void FixBearingCage::init()
+{
+  if (!atom->sphere_flag || !atom->rmass_flag)
+    error->fix_error(FLERR, this, "requires atom_style sphere");
+  const std::string name = std::string("bearingCage_") + id;
+  state_ = static_cast<FixPropertyAtom *>(
+      modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+}
+
+double FixBearingCage::pocket_angle(int k) const
+{
+  return angle_ + angle0_ + 2.0 * M_PI * k / npockets_;
+}
+
+void FixBearingCage::build_model()
+{
+  double rmax = 0.0;
+  int type = -1;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    rmax = std::max(rmax, atom->radius[i]);
+    type = std::max(type, atom->type[i]);
+  }
+  double rg;
+  int tg;
+  MPI_Allreduce(&rmax, &rg, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&type, &tg, 1, MPI_INT, MPI_MAX, world);
+  if (tg < 1) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  const int nt = atom->ntypes;
+  auto *E = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", nt, 0, style));
+  auto *nu = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", nt, 0, style));
+  auto *e = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+      "coefficientRestitution", "property/global", "peratomtypepair", nt, nt, style));
+  const int b = tg - 1, c = cage_type_ - 1;
+  try {
+    model_ = std::make_unique<ohmdem::CageContactModel>(
+        rg, clearance_,
+        ohmdem::effective_modulus(E->compute_vector(b), nu->compute_vector(b),
+                                  E->compute_vector(c), nu->compute_vector(c)),
+        e->compute_array(b, c));
+  } catch (const std::exception &ex) {
+    error->fix_error(FLERR, this, ex.what());
+  }
+  const double spacing = 2.0 * M_PI * pitch_radius_ / npockets_;
+  if (2.0 * (rg + clearance_) >= spacing)
+    error->fix_error(FLERR, this,
+                     "pockets overlap: ball diameter + 2*clearance must be smaller than the "
+                     "pocket spacing 2*pi*radius/pockets");
+}
+
+// Each unassigned ball goes to the nearest pocket; two balls in one pocket is an error.
+void FixBearingCage::assign_pockets()
+{
+  double **state = state_->array_atom;
+  std::vector<ohmdem::TaggedValues<1>> mine;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double &pocket = state[i][POCKET];
+    if (pocket < 0.0) {
+      const double phi = std::atan2(atom->x[i][1] - cy_, atom->x[i][0] - cx_) - angle_ - angle0_;
+      long k = std::lround(phi * npockets_ / (2.0 * M_PI));
+      k = ((k % npockets_) + npockets_) % npockets_;
+      pocket = static_cast<double>(k);
+    }
+    mine.push_back({static_cast<std::int64_t>(atom->tag[i]), {pocket}});
+  }
+  const auto all = ohmdem::gather_by_tag<1>(mine, world);
+  std::vector<std::int64_t> owner(npockets_, -1);
+  for (const auto &r : all) {
+    const int k = static_cast<int>(r.v[0]);
+    if (k < 0 || k >= npockets_) error->fix_error(FLERR, this, "invalid pocket index in restart");
+    if (owner[k] >= 0) {
+      const std::string msg = "atoms " + std::to_string(owner[k]) + " and " +
+                              std::to_string(r.tag) + " are both in pocket " + std::to_string(k) +
+                              ": place one ball per pocket (check 'pockets' and 'angle')";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    owner[k] = r.tag;
+  }
+}
+
+void FixBearingCage::setup(int vflag)
+{
+  build_model();
+  assign_pockets();
+  if (restored_) {
+    // Right after read_restart: reuse the forces of the step the restart was written at
+    // (see FixBearingRace::setup).
+    restored_ = false;
+    array_atom = state_->array_atom;
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(atom->mask[i] & groupbit)) continue;
+      atom->f[i][0] += array_atom[i][FX];
+      atom->f[i][1] += array_atom[i][FY];
+    }
+    return;
+  }
+  post_force(vflag);
+}
+
+void FixBearingCage::initial_integrate(int)
+{
+  const double dt = update->dt;
+  omega_ += 0.5 * dt * (torque_ - drag_ * omega_) / inertia_;
+  angle_ += dt * omega_;
+}
+
+void FixBearingCage::final_integrate()
+{
+  omega_ += 0.5 * update->dt * (torque_ - drag_ * omega_) / inertia_;
+}
+
+void FixBearingCage::post_force(int)
+{
+  array_atom = state_->array_atom;  // may have moved when atoms were exchanged
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  ohmdem::CageContactState s;
+  s.centre = {cx_, cy_};
+  s.cage_omega = omega_;
+  std::vector<ohmdem::TaggedValues<2>> mine;  // normal force, torque on the cage
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double *out = array_atom[i];
+    if (!(atom->mask[i] & groupbit)) continue;
+    out[FORCE] = out[FX] = out[FY] = 0.0;
+    const int k = static_cast<int>(out[POCKET]);
+    s.ball_x = {x[i][0], x[i][1]};
+    s.ball_v = {v[i][0], v[i][1]};
+    s.ball_mass = atom->rmass[i];
+    s.pocket_angle = pocket_angle(k);
+    const auto c = ohmdem::cage_contact(*model_, s);
+    if (!c.touching) continue;
+    f[i][0] += c.force_on_ball.x;
+    f[i][1] += c.force_on_ball.y;
+    out[FORCE] = c.offset > 0.0 ? -c.fn : c.fn;
+    out[FX] = c.force_on_ball.x;
+    out[FY] = c.force_on_ball.y;
+    mine.push_back({static_cast<std::int64_t>(atom->tag[i]), {c.fn, c.torque_on_cage}});
+  }
+  const auto all = ohmdem::gather_by_tag<2>(mine, world);
+  const auto sum = ohmdem::ordered_sum<2>(all);
+  sum_fn_ = sum[0];
+  torque_ = sum[1];
+  ncontacts_ = static_cast<int>(all.size());
+  max_fn_ = 0.0;
+  for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[0]);
+}
+
+double FixBearingCage::compute_vector(int n)
+{
+  switch (n) {
+    case 0: return angle_;
+    case 1: return omega_;
+    case 2: return ncontacts_;
+    case 3: return sum_fn_;
+    case 4: return max_fn_;
+    case 5: return torque_;
+    default: return 0.0;
+  }
+}
+
+void FixBearingCage::write_restart(FILE *fp)
+{
+  const double list[kRestartSize] = {angle_, omega_, static_cast<double>(npockets_), torque_,
+                                     sum_fn_, max_fn_, static_cast<double>(ncontacts_), 0.0};
+  if (comm->me == 0) {
+    const int size = kRestartSize * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), kRestartSize, fp);
+  }
+}
+
+void FixBearingCage::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  if (static_cast<int>(list[2]) != npockets_)
+    error->fix_error(FLERR, this, "restart data has a different number of pockets");
+  angle_ = list[0];
+  omega_ = list[1];
+  torque_ = list[3];
+  sum_fn_ = list[4];
+  max_fn_ = list[5];
+  ncontacts_ = static_cast<int>(list[6]);
+  restored_ = true;
+}
+
+double FixBearingCage::memory_usage()
+{
+  return 0.0;  // per-atom state lives in the fix property/atom, which reports its own
+}

@@ -1,0 +1,73 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/cage: a rigid cage with N pockets, one rotational
+   degree of freedom, driven by the balls.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+
+FixStyle(bearing/cage,FixBearingCage)
+
+#else
+
+#ifndef LMP_FIX_BEARING_CAGE_H
+#define LMP_FIX_BEARING_CAGE_H
+
+#include <memory>
+
+#include "fix.h"
+
+namespace ohmdem {
+struct CageContactModel;
+}
+
+namespace LAMMPS_NS {
+
+class FixBearingCage : public Fix {
+ public:
+  FixBearingCage(class LAMMPS *, int, char **);
+  ~FixBearingCage() override;
+  int setmask() override;
+  void post_create() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void post_force(int) override;
+  void final_integrate() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  double compute_vector(int) override;
+  double memory_usage() override;
+
+  double angle() const { return angle_; }
+  double omega() const { return omega_; }
+  int pockets() const { return npockets_; }
+
+ private:
+  void parse(int narg, char **arg);
+  void build_model();
+  void assign_pockets();
+  double pocket_angle(int k) const;
+
+  int npockets_ = 0;
+  double pitch_radius_ = 0, clearance_ = 0;
+  int cage_type_ = 0;
+  double mass_ = 0, inertia_ = 0, drag_ = 0;
+  double cx_ = 0, cy_ = 0;
+  double angle0_ = 0;  // pocket 0 at this angle when the cage angle is 0
+
+  // cage state, identical on all ranks, written to restart
+  double angle_ = 0, omega_ = 0;
+
+  // last force evaluation
+  double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
+  int ncontacts_ = 0;
+
+  std::unique_ptr<ohmdem::CageContactModel> model_;
+  class FixPropertyAtom *state_ = nullptr;  // pocket index and last force of each ball
+  bool restored_ = false;  // state was just read from a restart file
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,424 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/race: an analytic bearing ring with a toroidal groove.
+   Contact physics lives in race_contact.{h,cpp}; this file parses, integrates the
+   ring's own degrees of freedom, reduces reactions and handles restart.
+------------------------------------------------------------------------- */
+
+#include "fix_bearing_race.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "fix_property_global.h"
+#include "force.h"
+#include "modify.h"
+#include "ordered_reduce.h"
+#include "race_contact.h"
+#include "style_args.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using ohmdem::RaceContactModel;
+
+namespace {
+constexpr int kVectorSize = 10;
+// Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
+// restart files. The first kPeratomCols columns are this fix's per-atom output.
+enum Col { FN, DELTA, FT, PX, PY, FX, FY, TZ, SHEAR, NCOL };
+constexpr int kPeratomCols = 5;  // fn, delta, ft, contact point x, y
+constexpr int kRestartSize = 16;
+}  // namespace
+
+FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+{
+  parse(narg, arg);
+
+  vector_flag = 1;
+  size_vector = kVectorSize;
+  global_freq = 1;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = kPeratomCols;
+  peratom_freq = 1;
+  restart_global = 1;
+  array_atom = nullptr;
+}
+
+FixBearingRace::~FixBearingRace() = default;
+
+void FixBearingRace::parse(int narg, char **arg)
+{
+  ohmdem::StyleArgs a(error, "fix bearing/race", narg, arg, 3);
+  const std::string side = a.word("side", "inner or outer as first argument");
+  if (side == "inner") inner_ = true;
+  else if (side == "outer") inner_ = false;
+  else a.fail("side", "inner or outer as first argument", side.c_str());
+
+  bool have_radius = false, have_groove = false, have_type = false;
+  bool have_force = false, have_settle = false, have_interference = false;
+  double dir_x = 0.0, dir_y = -1.0;
+  while (!a.done()) {
+    const std::string kw = a.word("keyword", "a keyword");
+    if (kw == "radius") {
+      radius_ = a.positive(kw, "the race radius at the groove bottom, a positive length (m)");
+      have_radius = true;
+    } else if (kw == "groove") {
+      groove_ = a.positive(kw, "the groove radius of curvature, a positive length (m)");
+      have_groove = true;
+    } else if (kw == "type") {
+      race_type_ = a.integer(kw, "the race material type, an atom type 1..ntypes", 1, 1 << 30);
+      have_type = true;
+    } else if (kw == "centre" || kw == "center") {
+      cx_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = a.number(kw, "two coordinates x y (m)");
+    } else if (kw == "omega") {
+      omega_ = a.number(kw, "the ring angular speed about z (rad/s)");
+    } else if (kw == "ramp") {
+      ramp_ = a.non_negative(kw, "the duration of the linear speed ramp, a time >= 0 (s)");
+    } else if (kw == "mass") {
+      ring_mass_ = a.positive(kw, "the ring mass, a positive mass (kg)");
+    } else if (kw == "damp") {
+      ring_damp_ = a.non_negative(kw, "the ring damping coefficient >= 0 (N s/m)");
+    } else if (kw == "load") {
+      const std::string mode = a.word(kw, "none, force, fixed or radial");
+      if (mode == "none") load_ = Load::None;
+      else if (mode == "force") load_ = Load::Force;
+      else if (mode == "fixed") load_ = Load::Fixed;
+      else if (mode == "radial") load_ = Load::Radial;
+      else a.fail(kw, "none, force, fixed or radial", mode.c_str());
+      // Shorthand: "load force F" / "load radial F" = "load force force F".
+      if ((load_ == Load::Force || load_ == Load::Radial) && a.next_is_number()) {
+        load_force_ = a.positive("load", "the load magnitude F > 0 (N)");
+        have_force = true;
+      }
+    } else if (kw == "force") {
+      load_force_ = a.positive(kw, "the load magnitude F > 0 (N)");
+      have_force = true;
+    } else if (kw == "settle") {
+      settle_time_ = a.positive(kw, "the settling time T > 0 (s)");
+      have_settle = true;
+    } else if (kw == "interference") {
+      interference_ = a.number(kw, "a radial interference toward the balls (m)");
+      have_interference = true;
+    } else if (kw == "direction") {
+      dir_x = a.number(kw, "the radial load direction dx dy");
+      dir_y = a.number(kw, "the radial load direction dx dy");
+      if (!(std::hypot(dir_x, dir_y) > 0.0)) a.fail(kw, "a non-zero direction dx dy", "0 0");
+    } else {
+      a.unknown(kw.c_str(), "radius groove type centre omega ramp load force settle interference "
+                             "direction mass damp");
+    }
+  }
+  if (!have_radius) a.fail("radius", "a value: the keyword is required", "nothing");
+  if (!have_groove) a.fail("groove", "a value: the keyword is required", "nothing");
+  if (!have_type) a.fail("type", "a value: the keyword is required", "nothing");
+  if (race_type_ > atom->ntypes)
+    a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(atom->ntypes),
+           std::to_string(race_type_).c_str());
+  // Which load keywords each mode needs.
+  if ((load_ == Load::Force || load_ == Load::Radial) && !have_force)
+    a.fail("force", "a value: load force and load radial need 'force F'", "nothing");
+  if (load_ == Load::Fixed) {
+    if (have_settle == have_interference)
+      a.fail("load fixed", "exactly one of 'settle T' (with 'force F') or 'interference U'",
+             have_settle ? "both" : "neither");
+    if (have_settle && !have_force)
+      a.fail("force", "a value: load fixed with settle needs 'force F'", "nothing");
+    if (have_settle) load_ = Load::Settle;
+    else u_ = interference_;
+  }
+  if (load_ == Load::Radial) {
+    const double n = std::hypot(dir_x, dir_y);
+    load_fx_ = load_force_ * dir_x / n;
+    load_fy_ = load_force_ * dir_y / n;
+  }
+  const bool dynamic = load_ == Load::Force || load_ == Load::Settle || load_ == Load::Radial;
+  if (dynamic && ring_mass_ <= 0.0)
+    a.fail("mass", "a positive ring mass (kg): required by load force, fixed settle and radial",
+           "nothing");
+}
+
+int FixBearingRace::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE;
+}
+
+void FixBearingRace::post_create()
+{
+  // Per-ball contact state (tangential spring history, last forces) in a fix property/atom:
+  // it migrates with the atom between processes and is written to restart files.
+  const std::string name = std::string("bearingRace_") + id;
+  if (!modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style, false)) {
+    std::vector<const char *> fixarg = {name.c_str(), "all", "property/atom", name.c_str(),
+                                        "vector", "yes", "no", "no"};
+    for (int k = 0; k < NCOL; ++k) fixarg.push_back("0.");
+    modify->add_fix_property_atom(static_cast<int>(fixarg.size()),
+                                  const_cast<char **>(fixarg.data()), style);
+  }
+  init();
+}
+
+void FixBearingRace::init()
+{
+  if (!atom->sphere_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
+  const std::string name = std::string("bearingRace_") + id;
+  state_ = static_cast<FixPropertyAtom *>(
+      modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+}
+
+// Ball type and radius of the group, the materials, and the Hertz model built from them.
+void FixBearingRace::build_model()
+{
+  double rmin = 1e300, rmax = -1e300;
+  int tmin = 1 << 30, tmax = -1;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    rmin = std::min(rmin, atom->radius[i]);
+    rmax = std::max(rmax, atom->radius[i]);
+    tmin = std::min(tmin, atom->type[i]);
+    tmax = std::max(tmax, atom->type[i]);
+  }
+  double rr[2] = {rmin, -rmax}, rg[2];
+  MPI_Allreduce(rr, rg, 2, MPI_DOUBLE, MPI_MIN, world);
+  int tt[2] = {tmin, -tmax}, tg[2];
+  MPI_Allreduce(tt, tg, 2, MPI_INT, MPI_MIN, world);
+  rmin = rg[0];
+  rmax = -rg[1];
+  if (tg[0] == (1 << 30)) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  if (rmax - rmin > 1e-12 * rmax)
+    error->fix_error(FLERR, this, "all balls of the group must have the same radius");
+  if (tg[0] != -tg[1])
+    error->fix_error(FLERR, this, "all balls of the group must have the same atom type");
+  ball_radius_ = rmax;
+  ball_type_ = tg[0];
+
+  const int nt = atom->ntypes;
+  auto *E = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", nt, 0, style));
+  auto *nu = static_cast<FixPropertyGlobal *>(
+      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", nt, 0, style));
+  auto *e = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+      "coefficientRestitution", "property/global", "peratomtypepair", nt, nt, style));
+  auto *mu = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+      "coefficientFriction", "property/global", "peratomtypepair", nt, nt, style));
+  const int b = ball_type_ - 1, r = race_type_ - 1;
+  const double Eb = E->compute_vector(b), Er = E->compute_vector(r);
+  const double nub = nu->compute_vector(b), nur = nu->compute_vector(r);
+  try {
+    model_ = std::make_unique<RaceContactModel>(
+        inner_ ? ohmdem::RaceSide::Inner : ohmdem::RaceSide::Outer, ball_radius_, radius_,
+        groove_, ohmdem::effective_modulus(Eb, nub, Er, nur),
+        ohmdem::effective_shear_modulus(Eb, nub, Er, nur), e->compute_array(b, r),
+        mu->compute_array(b, r));
+  } catch (const std::exception &ex) {
+    const std::string msg = std::string("invalid race: ") + ex.what() +
+                            " (ball radius " + std::to_string(ball_radius_) + " m, groove " +
+                            std::to_string(groove_) + " m, race radius " +
+                            std::to_string(radius_) + " m)";
+    error->fix_error(FLERR, this, msg.c_str());
+  }
+
+  // Balls must fit between an inner and an outer race of the same bearing.
+  for (int k = 0; k < modify->nfix; ++k) {
+    auto *other = dynamic_cast<FixBearingRace *>(modify->fix[k]);
+    if (!other || other == this || other->inner_ == inner_) continue;
+    const double r_in = inner_ ? radius_ : other->radius_;
+    const double r_out = inner_ ? other->radius_ : radius_;
+    const double clearance = r_out - r_in - 2.0 * ball_radius_;
+    if (clearance < -1e-9 * r_out) {
+      const std::string msg = "balls of diameter " + std::to_string(2 * ball_radius_) +
+                              " m do not fit between the inner race (radius " +
+                              std::to_string(r_in) + " m) and the outer race (radius " +
+                              std::to_string(r_out) + " m): diametral clearance " +
+                              std::to_string(clearance) + " m < 0";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  }
+}
+
+void FixBearingRace::setup(int vflag)
+{
+  build_model();
+  if (restored_) {
+    // Right after read_restart: reuse the forces of the step the restart was written at.
+    // Recomputing them would use full-step instead of half-step velocities in the damping
+    // and friction terms, and the split run would drift from the single run.
+    restored_ = false;
+    array_atom = state_->array_atom;
+    double **f = atom->f, **torque = atom->torque;
+    for (int i = 0; i < atom->nlocal; ++i) {
+      if (!(atom->mask[i] & groupbit)) continue;
+      f[i][0] += array_atom[i][FX];
+      f[i][1] += array_atom[i][FY];
+      torque[i][2] += array_atom[i][TZ];
+    }
+    return;
+  }
+  post_force(vflag);
+}
+
+double FixBearingRace::target_omega(double t) const
+{
+  if (ramp_ > 0.0 && t < ramp_) return omega_ * t / ramp_;
+  return omega_;
+}
+
+double FixBearingRace::current_radius() const
+{
+  return inner_ ? radius_ + u_ : radius_ - u_;
+}
+
+// Half a velocity-Verlet kick of the ring's free degrees of freedom.
+void FixBearingRace::ring_half_kick(double dt)
+{
+  const double h = 0.5 * dt;
+  if ((load_ == Load::Force || load_ == Load::Settle) && !frozen_) {
+    u_dot_ += h * (load_force_ - sum_fn_ - ring_damp_ * u_dot_) / ring_mass_;
+  } else if (load_ == Load::Radial) {
+    // The balls push the ring with the opposite of the forces the ring puts on them.
+    vcx_ += h * (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
+    vcy_ += h * (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
+  }
+}
+
+void FixBearingRace::initial_integrate(int)
+{
+  const double dt = update->dt;
+  ring_half_kick(dt);
+  angle_ += dt * target_omega(time_ + 0.5 * dt);
+  u_ += dt * u_dot_;
+  cx_ += dt * vcx_;
+  cy_ += dt * vcy_;
+  time_ += dt;
+  if (load_ == Load::Settle && !frozen_ && time_ >= settle_time_) {
+    frozen_ = true;  // displacement control from now on, at the radius reached under F
+    u_dot_ = 0.0;
+  }
+}
+
+void FixBearingRace::final_integrate()
+{
+  ring_half_kick(update->dt);
+}
+
+void FixBearingRace::post_force(int)
+{
+  array_atom = state_->array_atom;  // may have moved when atoms were exchanged
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega;
+  double **torque = atom->torque;
+  const int nlocal = atom->nlocal;
+  const bool update_history = !update->setupflag;
+  const double dt = update->dt;
+
+  ohmdem::RaceContactState s;
+  s.race_centre = {cx_, cy_};
+  s.race_v = {vcx_, vcy_};
+  s.race_radius = current_radius();
+  s.race_radius_rate = u_dot_;
+  s.race_omega = target_omega(time_);
+
+  // per touching ball: force on the ball x, y, normal force, torque on the race
+  std::vector<ohmdem::TaggedValues<4>> mine;
+  for (int i = 0; i < nlocal; ++i) {
+    double *out = array_atom[i];
+    if (!(atom->mask[i] & groupbit)) continue;
+    for (int k = FN; k <= TZ; ++k) out[k] = 0.0;
+    s.ball_x = {x[i][0], x[i][1]};
+    s.ball_v = {v[i][0], v[i][1]};
+    s.ball_omega = omega[i][2];
+    s.ball_mass = atom->rmass[i];
+    const auto c = ohmdem::race_contact(*model_, s, dt, update_history, out[SHEAR]);
+    if (!c.touching) continue;
+    f[i][0] += c.force_on_ball.x;
+    f[i][1] += c.force_on_ball.y;
+    torque[i][2] += c.torque_on_ball;
+    out[FN] = c.fn;
+    out[DELTA] = c.delta;
+    out[FT] = c.ft;
+    out[PX] = c.point.x;
+    out[PY] = c.point.y;
+    out[FX] = c.force_on_ball.x;
+    out[FY] = c.force_on_ball.y;
+    out[TZ] = c.torque_on_ball;
+    mine.push_back({static_cast<std::int64_t>(atom->tag[i]),
+                    {c.force_on_ball.x, c.force_on_ball.y, c.fn, c.torque_on_race}});
+  }
+  const auto all = ohmdem::gather_by_tag<4>(mine, world);
+  const auto sum = ohmdem::ordered_sum<4>(all);
+  fx_ = sum[0];
+  fy_ = sum[1];
+  sum_fn_ = sum[2];
+  torque_ = sum[3];
+  ncontacts_ = static_cast<int>(all.size());
+  max_fn_ = 0.0;
+  for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
+}
+
+double FixBearingRace::compute_vector(int n)
+{
+  switch (n) {
+    case 0: return sum_fn_;
+    case 1: return torque_;
+    case 2: return u_;
+    case 3: return cx_;
+    case 4: return cy_;
+    case 5: return ncontacts_;
+    case 6: return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
+    case 7: return max_fn_;
+    case 8: return angle_;
+    case 9: return target_omega(time_);
+    default: return 0.0;
+  }
+}
+
+void FixBearingRace::write_restart(FILE *fp)
+{
+  const double list[kRestartSize] = {time_, angle_, u_, u_dot_, cx_, cy_, vcx_, vcy_,
+                                     frozen_ ? 1.0 : 0.0, static_cast<double>(inner_),
+                                     sum_fn_, torque_, fx_, fy_, max_fn_,
+                                     static_cast<double>(ncontacts_)};
+  if (comm->me == 0) {
+    const int size = kRestartSize * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), kRestartSize, fp);
+  }
+}
+
+void FixBearingRace::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  if (static_cast<bool>(list[9]) != inner_)
+    error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
+  time_ = list[0];
+  angle_ = list[1];
+  u_ = list[2];
+  u_dot_ = list[3];
+  cx_ = list[4];
+  cy_ = list[5];
+  vcx_ = list[6];
+  vcy_ = list[7];
+  frozen_ = list[8] != 0.0;
+  sum_fn_ = list[10];
+  torque_ = list[11];
+  fx_ = list[12];
+  fy_ = list[13];
+  max_fn_ = list[14];
+  ncontacts_ = static_cast<int>(list[15]);
+  restored_ = true;
+}
+
+double FixBearingRace::memory_usage()
+{
+  return 0.0;  // per-atom state lives in the fix property/atom, which reports its own
+}
