@@ -27,7 +27,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-constexpr int kVectorSize = 6;
+constexpr int kVectorSize = 7;
 // Per-atom state in a fix property/atom (migrates, restarts); the first kPeratomCols columns
 // are this fix's per-atom output.
 enum Col { POCKET, FORCE, FX, FY, NCOL };
@@ -234,7 +234,8 @@ void FixBearingCage::post_force(int)
   ohmdem::CageContactState s;
   s.centre = {cx_, cy_};
   s.cage_omega = omega_;
-  std::vector<ohmdem::TaggedValues<2>> mine;  // normal force, torque on the cage
+  // per ball: pocket force, torque on the cage, orbital angular speed about the axis
+  std::vector<ohmdem::TaggedValues<3>> mine;
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -245,21 +246,32 @@ void FixBearingCage::post_force(int)
     s.ball_mass = atom->rmass[i];
     s.pocket_angle = pocket_angle(k);
     const auto c = ohmdem::cage_contact(*model_, s);
-    if (!c.touching) continue;
+    const double rx = x[i][0] - cx_, ry = x[i][1] - cy_;
+    const double r2 = rx * rx + ry * ry;
+    const double orbit = r2 > 0.0 ? (rx * v[i][1] - ry * v[i][0]) / r2 : 0.0;
+    const auto tag = static_cast<std::int64_t>(atom->tag[i]);
+    if (!c.touching) {
+      mine.push_back({tag, {0.0, 0.0, orbit}});
+      continue;
+    }
     f[i][0] += c.force_on_ball.x;
     f[i][1] += c.force_on_ball.y;
     out[FORCE] = c.offset > 0.0 ? -c.fn : c.fn;
     out[FX] = c.force_on_ball.x;
     out[FY] = c.force_on_ball.y;
-    mine.push_back({static_cast<std::int64_t>(atom->tag[i]), {c.fn, c.torque_on_cage}});
+    mine.push_back({tag, {c.fn, c.torque_on_cage, orbit}});
   }
-  const auto all = ohmdem::gather_by_tag<2>(mine, world);
-  const auto sum = ohmdem::ordered_sum<2>(all);
+  const auto all = ohmdem::gather_by_tag<3>(mine, world);
+  const auto sum = ohmdem::ordered_sum<3>(all);
   sum_fn_ = sum[0];
   torque_ = sum[1];
-  ncontacts_ = static_cast<int>(all.size());
+  ball_orbit_ = all.empty() ? 0.0 : sum[2] / static_cast<double>(all.size());
+  ncontacts_ = 0;
   max_fn_ = 0.0;
-  for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[0]);
+  for (const auto &r : all) {
+    if (r.v[0] > 0.0) ++ncontacts_;
+    max_fn_ = std::max(max_fn_, r.v[0]);
+  }
 }
 
 double FixBearingCage::compute_vector(int n)
@@ -271,6 +283,7 @@ double FixBearingCage::compute_vector(int n)
     case 3: return sum_fn_;
     case 4: return max_fn_;
     case 5: return torque_;
+    case 6: return ball_orbit_;
     default: return 0.0;
   }
 }
@@ -278,7 +291,8 @@ double FixBearingCage::compute_vector(int n)
 void FixBearingCage::write_restart(FILE *fp)
 {
   const double list[kRestartSize] = {angle_, omega_, static_cast<double>(npockets_), torque_,
-                                     sum_fn_, max_fn_, static_cast<double>(ncontacts_), 0.0};
+                                     sum_fn_, max_fn_, static_cast<double>(ncontacts_),
+                                     ball_orbit_};
   if (comm->me == 0) {
     const int size = kRestartSize * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
@@ -297,6 +311,7 @@ void FixBearingCage::restart(char *buf)
   sum_fn_ = list[4];
   max_fn_ = list[5];
   ncontacts_ = static_cast<int>(list[6]);
+  ball_orbit_ = list[7];
   restored_ = true;
 }
 

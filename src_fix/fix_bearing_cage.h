@@ -60,6 +60,7 @@ class FixBearingCage : public Fix {
 
   // last force evaluation
   double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
+  double ball_orbit_ = 0;  // mean orbital angular speed of the balls about the axis
   int ncontacts_ = 0;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;

@@ -39,7 +39,11 @@ def read_columns(path):
                 return i
         sys.exit('ERROR: %s: no column starting with %r in header %s' % (path, prefix, header))
     data = np.array([r for r in rows if len(r) == len(header)])
-    return data[:, col('time')], data[:, col('omega_cage')]
+    # The ball set's orbital speed is what FTF describes: ohmdem's signal.txt has it as
+    # omega_balls (its omega_cage is the cage body, which floats within its pocket play).
+    names = [n.lower() for n in header]
+    speed = 'omega_balls' if any(n.startswith('omega_balls') for n in names) else 'omega_cage'
+    return data[:, col('time')], data[:, col(speed)]
 
 
 def main():

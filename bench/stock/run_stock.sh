@@ -86,7 +86,7 @@ scene mesh_move    "$LIGGGHTS" "$HERE/in.stock_mesh" cage.txt -var steps "$STEPS
                    -var meshdir "$MESHES" -var motion move
 scene mesh_surface "$LIGGGHTS" "$HERE/in.stock_mesh" cage.txt -var steps "$STEPS" \
                    -var meshdir "$MESHES" -var motion surface
-# scene ohmdem     "$OHMDEM" "$ROOT/inputs/bearing_6208/in.bearing" signal.txt -var tend "$TEND"
+scene ohmdem       "$OHMDEM" "$ROOT/inputs/bearing_6208/in.bearing" signal.txt -var tend "$TEND" -var nout 100
 
 # ---- summary -----------------------------------------------------------------------------
 echo
