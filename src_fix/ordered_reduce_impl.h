@@ -13,6 +13,12 @@ std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &l
                 "TaggedValues must be packed to be sent as bytes");
   int nprocs = 1;
   MPI_Comm_size(comm, &nprocs);
+  auto by_tag = [](const TaggedValues<N> &a, const TaggedValues<N> &b) { return a.tag < b.tag; };
+  if (nprocs == 1) {  // one rank: no collective needed, same order as with several
+    std::vector<TaggedValues<N>> all(local);
+    std::sort(all.begin(), all.end(), by_tag);
+    return all;
+  }
   const int mybytes = static_cast<int>(local.size() * sizeof(TaggedValues<N>));
   std::vector<int> bytes(nprocs), displ(nprocs, 0);
   MPI_Allgather(&mybytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, comm);
@@ -24,8 +30,7 @@ std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &l
   std::vector<TaggedValues<N>> all(total / sizeof(TaggedValues<N>));
   MPI_Allgatherv(local.data(), mybytes, MPI_BYTE, all.data(), bytes.data(), displ.data(),
                  MPI_BYTE, comm);
-  std::sort(all.begin(), all.end(),
-            [](const TaggedValues<N> &a, const TaggedValues<N> &b) { return a.tag < b.tag; });
+  std::sort(all.begin(), all.end(), by_tag);
   return all;
 }
 
