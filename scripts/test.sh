@@ -10,3 +10,10 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2
+
+# The post-processing and network kernels again under AddressSanitizer + UBSan: bad input
+# must give a clear error, never a memory error (the engine itself links the uninstrumented
+# libliggghts and is not built here).
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOHMDEM_ASAN=ON
+cmake --build build-asan -j2 --target ohmdem-post post_tests test_network
+ASAN_OPTIONS=detect_leaks=1 ctest --test-dir build-asan --output-on-failure -j2 -L 'post|network'

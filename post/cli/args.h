@@ -1,0 +1,51 @@
+// Command-line options of one ohmdem-post command: declared with their help text, parsed
+// strictly (an unknown option or a missing value is an error naming it), printed by --help.
+#ifndef OHMDEM_POST_CLI_ARGS_H
+#define OHMDEM_POST_CLI_ARGS_H
+
+#include <cmath>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace ohmdem::post::cli {
+
+class Args {
+ public:
+  Args(std::string command, std::string synopsis, std::string description);
+
+  // An option taking `arity` values (metavar names them in --help); default shown in --help.
+  void option(const std::string &name, const std::string &metavar, const std::string &help,
+              const std::string &def = "", int arity = 1);
+  void flag(const std::string &name, const std::string &help);
+  void section(const std::string &title);  // a heading in --help
+
+  // Returns false when --help was given (help already printed to `out`).
+  bool parse(const std::vector<std::string> &argv, std::ostream &out);
+  void print_help(std::ostream &out) const;
+
+  bool has(const std::string &name) const;
+  std::string get(const std::string &name) const;  // the given value, else the default
+  std::vector<std::string> values(const std::string &name) const;  // for arity > 1
+  double number(const std::string &name, double fallback = NAN) const;
+  long long integer(const std::string &name, long long fallback) const;
+  const std::vector<std::string> &positional() const { return positional_; }
+  const std::string &command() const { return command_; }
+
+ private:
+  struct Spec {
+    std::string name, metavar, help, def;
+    int arity = 0;  // 0 = flag
+  };
+  const Spec *spec(const std::string &name) const;
+
+  std::string command_, synopsis_, description_;
+  std::vector<Spec> specs_;  // in declaration order, sections as specs with empty name
+  std::map<std::string, std::vector<std::string>> given_;
+  std::vector<std::string> positional_;
+};
+
+}  // namespace ohmdem::post::cli
+
+#endif

@@ -1,0 +1,200 @@
+// ohmdem-post diagnose: the most likely bearing defect, its score, evidence and size.
+#include <cmath>
+#include <iostream>
+
+#include "../diagnose.h"
+#include "../error.h"
+#include "../text_scan.h"
+#include "commands.h"
+#include "common.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+Json evidence_json(const std::vector<Evidence> &ev)
+{
+  Json arr = Json::array();
+  for (const auto &e : ev) {
+    Json o = Json::object();
+    o.set("spectrum", e.spectrum);
+    o.set("label", e.label);
+    o.set("expected_hz", e.expected_hz);
+    o.set("frequency_hz", e.frequency_hz);
+    o.set("amplitude", e.amplitude);
+    o.set("prominence_db", e.prominence_db);
+    arr.push_back(o);
+  }
+  return arr;
+}
+
+std::string percent_off(double f, double nominal)
+{
+  return format_number(100 * (f / nominal - 1), 3) + " %";
+}
+
+}  // namespace
+
+int run_diagnose(const std::vector<std::string> &argv)
+{
+  Args a("diagnose", "[options] FILE...",
+         "Finds the peaks of the spectrum and of the envelope spectrum (band from the kurtogram\n"
+         "unless --band), matches them to the defect families - inner race (BPFI, shaft\n"
+         "sidebands), outer race (BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic\n"
+         "combs whose fundamental may be off by --tolerance (slip), and reports the most likely\n"
+         "defect (none, inner, outer, ball, cage) with a score in [0, 1] and the matched peaks.\n"
+         "The defect size is estimated from the pulse widths of a level signal such as R(t).\n"
+         "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
+  add_input_options(a);
+  add_bearing_options(a);
+  a.section("Diagnosis");
+  a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
+  a.option("--harmonics", "N", "harmonics in each family's comb", "5");
+  a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
+  a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
+  a.option("--levels", "N", "kurtogram levels", "7");
+  a.flag("--no-size", "skip the defect size estimate");
+  a.flag("--keep-sliding",
+         "analyse the sliding phase too (default: start at t_sliding_end "
+         "of run.json)");
+  add_output_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  const RunMetadata meta = run_metadata(a);
+  const Signal s = load_input(a, meta, 256, !a.has("--keep-sliding"));
+  const BearingChoice bc = bearing_choice(a, meta);
+  if (!bc.geometry)
+    throw Error(
+        "diagnose: give the bearing (--bearing 6208|6205 or --nb --db --dp) or a "
+        "run.json with it");
+  if (!bc.fr)
+    throw Error(
+        "diagnose: give the shaft speed (--rpm, --shaft-hz or --omega) or a run.json "
+        "with omega_inner");
+  DiagnoseOptions o;
+  o.geometry = *bc.geometry;
+  o.fr = *bc.fr;
+  o.tolerance = a.number("--tolerance", 0.02);
+  const long long h = a.integer("--harmonics", 5);
+  if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
+  o.harmonics = static_cast<int>(h);
+  o.min_score = a.number("--min-score", 0.3);
+  const long long levels = a.integer("--levels", 7);
+  if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
+  o.kurtogram_levels = static_cast<int>(levels);
+  if (a.has("--band")) {
+    const auto v = a.values("--band");
+    o.band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+    if (!(o.band.hi > o.band.lo) || o.band.lo < 0)
+      throw Error("option --band expects 0 <= F1 < F2");
+  }
+  o.estimate_size = !a.has("--no-size");
+  const Diagnosis d = diagnose(s, o);
+  Output out(a);
+
+  MetaList m = s.meta;
+  m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
+  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" + bc.fr_source + ")");
+  m.emplace_back("envelope band (Hz)",
+                 format_number(d.band.lo) + " to " + format_number(d.band.hi) +
+                     (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
+                                                           format_number(d.band_kurtosis, 4) + ")"
+                                                     : " (--band)"));
+  const FamilyScore *chosen = nullptr;
+  for (const auto &f : d.families)
+    if (f.defect == d.defect) chosen = &f;
+
+  if (out.format() == OutputFormat::Json) {
+    Json j = Json::object();
+    j.set("defect", d.defect);
+    j.set("score", d.score);
+    j.set("frequency_hz", d.defect == "none" ? Json() : Json(d.frequency_hz));
+    j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
+    j.set("fundamental", d.defect == "none" ? Json() : Json(d.label));
+    j.set("evidence", evidence_json(d.evidence));
+    Json fams = Json::object();
+    for (const auto &f : d.families) {
+      Json o2 = Json::object();
+      o2.set("score", f.score);
+      o2.set("fundamental", f.label);
+      o2.set("nominal_hz", f.nominal_hz);
+      o2.set("frequency_hz", f.frequency_hz);
+      o2.set("comb", f.comb);
+      o2.set("chance", f.chance);
+      o2.set("margin_db", f.margin);
+      o2.set("spectrum", f.spectrum);
+      fams.set(f.defect, o2);
+    }
+    j.set("families", fams);
+    Json sz = Json::object();
+    sz.set("valid", d.size.valid);
+    sz.set("method", d.size.method);
+    sz.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
+    sz.set("size_deg", d.size.valid ? Json(d.size.size_deg) : Json());
+    sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
+    sz.set("pulses", d.size.pulses);
+    j.set("size", sz);
+    Json band = Json::array();
+    band.push_back(d.band.lo);
+    band.push_back(d.band.hi);
+    j.set("band_hz", band);
+    j.set("band_kurtosis", d.band_kurtosis);
+    j.set("shaft_hz", o.fr);
+    j.set("bearing", o.geometry.name);
+    if (meta.defect) j.set("run_defect", *meta.defect);
+    j.set("meta", meta_json(m));
+    out.stream() << j.dump(2) << '\n';
+    return 0;
+  }
+  if (out.format() == OutputFormat::Csv) {
+    Report r;
+    r.meta = m;
+    r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
+                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+    std::vector<Cell> row{d.defect,
+                          d.score,
+                          d.defect == "none" ? NAN : d.frequency_hz,
+                          chosen ? chosen->nominal_hz : NAN,
+                          d.size.valid ? d.size.size_deg : NAN,
+                          d.size.valid ? d.size.pulse_width_s : NAN};
+    for (const auto &f : d.families) row.emplace_back(f.score);
+    r.rows.push_back(row);
+    write_report(out.stream(), r, out.format());
+    return 0;
+  }
+  // aligned table: the verdict, then the families, then the evidence
+  std::ostream &os = out.stream();
+  for (const auto &kv : m) os << "# " << kv.first << ": " << kv.second << '\n';
+  os << "defect:        " << d.defect << '\n';
+  os << "score:         " << format_number(d.score, 3) << '\n';
+  if (chosen)
+    os << "frequency:     " << format_number(d.frequency_hz, 7) << " Hz = " << d.label
+       << " (kinematic " << format_number(chosen->nominal_hz, 7) << " Hz, "
+       << percent_off(d.frequency_hz, chosen->nominal_hz) << ")\n";
+  if (d.size.valid)
+    os << "size:          " << format_number(d.size.size_deg, 4) << " deg, arc "
+       << format_number(d.size.arc_m * 1e3, 4) << " mm (pulse width "
+       << format_number(d.size.pulse_width_s * 1e6, 4) << " us, " << d.size.method << ", "
+       << d.size.pulses << (d.size.method == "pulses" ? " pulses" : " periods") << ")\n";
+  else if (d.defect != "none")
+    os << "size:          n/a (" << d.size.method << ")\n";
+  os << '\n';
+  Report fr;
+  fr.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
+                "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
+  for (const auto &f : d.families)
+    fr.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
+                       f.frequency_hz, f.spectrum});
+  write_table(os, fr);
+  if (!d.evidence.empty()) {
+    os << '\n';
+    Report ev;
+    ev.columns = {"evidence", "spectrum", "expected_Hz", "peak_Hz", "amplitude", "prominence_dB"};
+    for (const auto &e : d.evidence)
+      ev.rows.push_back(
+          {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
+    write_table(os, ev);
+  }
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

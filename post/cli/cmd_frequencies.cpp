@@ -1,0 +1,92 @@
+// ohmdem-post frequencies: kinematic defect frequencies from geometry and shaft speed.
+#include <iostream>
+
+#include "../error.h"
+#include "commands.h"
+#include "common.h"
+
+namespace ohmdem::post::cli {
+
+int run_frequencies(const std::vector<std::string> &argv)
+{
+  Args a("frequencies",
+         "--bearing 6208|6205 | --nb N --db M --dp M [--beta DEG]  "
+         "--rpm RPM | --shaft-hz HZ | --omega RAD/S",
+         "Kinematic frequencies of a bearing with a rotating inner ring and a fixed outer ring\n"
+         "(Harris): FTF = fr/2 (1 - d/D cos b), BPFO = Nb FTF, BPFI = Nb fr/2 (1 + d/D cos b),\n"
+         "BSF = D/(2d) fr (1 - (d/D cos b)^2); a ball defect strikes the races at 2 BSF.");
+  add_bearing_options(a);
+  a.option("--harmonics", "N", "also list harmonics 2..N of each frequency", "1");
+  a.option("--metadata", "FILE", "read bearing and speed from a run.json");
+  add_output_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  if (!a.positional().empty())
+    throw Error("frequencies: unexpected argument '" + a.positional().front() + "'");
+  const RunMetadata meta =
+      a.has("--metadata") ? read_run_metadata(a.get("--metadata")) : RunMetadata{};
+  const BearingChoice bc = bearing_choice(a, meta);
+  if (!bc.geometry)
+    throw Error("frequencies: give a bearing (--bearing 6208|6205 or --nb --db --dp)");
+  if (!bc.fr) throw Error("frequencies: give the shaft speed (--rpm, --shaft-hz or --omega)");
+  const long long harmonics = a.integer("--harmonics", 1);
+  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const BearingGeometry &g = *bc.geometry;
+  const DefectFrequencies f = defect_frequencies(g, *bc.fr);
+  Output out(a);
+
+  struct Row {
+    const char *key, *label, *formula;
+    double value;
+  };
+  const Row rows[] = {
+      {"fr", "shaft", "fr", f.fr},
+      {"ftf", "FTF (cage)", "fr/2 (1 - d/D cos b)", f.ftf},
+      {"bpfo", "BPFO (outer race)", "Nb FTF", f.bpfo},
+      {"bpfi", "BPFI (inner race)", "Nb fr/2 (1 + d/D cos b)", f.bpfi},
+      {"bsf", "BSF (ball spin)", "D/(2d) fr (1 - (d/D cos b)^2)", f.bsf},
+      {"two_bsf", "2xBSF (ball defect)", "2 BSF", 2 * f.bsf},
+  };
+  MetaList meta_out = {
+      {"bearing", g.name},
+      {"balls", std::to_string(g.nb)},
+      {"ball diameter (m)", format_number(g.db)},
+      {"pitch diameter (m)", format_number(g.dp)},
+      {"contact angle (deg)", format_number(g.contact_angle_deg)},
+      {"shaft frequency (Hz)", format_number(f.fr, 10)},
+  };
+  if (out.format() == OutputFormat::Json) {
+    Json j = Json::object();
+    Json b = Json::object();
+    b.set("name", g.name);
+    b.set("nb", g.nb);
+    b.set("db_m", g.db);
+    b.set("dp_m", g.dp);
+    b.set("contact_angle_deg", g.contact_angle_deg);
+    j.set("bearing", b);
+    for (const auto &r : rows) j.set(std::string(r.key) + "_hz", r.value);
+    if (harmonics > 1) {
+      Json h = Json::object();
+      for (const auto &r : rows) {
+        Json arr = Json::array();
+        for (long long k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.value);
+        h.set(r.key, arr);
+      }
+      j.set("harmonics_hz", h);
+    }
+    out.stream() << j.dump(2) << '\n';
+    return 0;
+  }
+  Report rep;
+  rep.meta = meta_out;
+  rep.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
+  rep.table_digits = 7;
+  for (const auto &r : rows)
+    for (long long k = 1; k <= harmonics; ++k) {
+      const double v = static_cast<double>(k) * r.value;
+      rep.rows.push_back({r.label, static_cast<int>(k), v, v / f.fr, r.formula});
+    }
+  write_report(out.stream(), rep, out.format());
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

@@ -1,0 +1,219 @@
+// ohmdem-post plot: PNG figures through gnuplot.
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "../envelope.h"
+#include "../error.h"
+#include "../gnuplot.h"
+#include "../read_table.h"
+#include "../text_scan.h"
+#include "commands.h"
+#include "common.h"
+#include "spectrum_options.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+std::vector<std::string> split_list(const std::string &s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// Defect-frequency markers up to fmax: harmonics 1..h of FTF, BPFO, BPFI and 2 BSF.
+std::vector<PlotMarker> defect_markers(const DefectFrequencies &k, int harmonics, double fmax)
+{
+  struct Fam {
+    const char *name;
+    double f;
+    const char *color;
+  };
+  const Fam fams[] = {{"FTF", k.ftf, "#7f8c8d"},
+                      {"BPFO", k.bpfo, "#2471a3"},
+                      {"BPFI", k.bpfi, "#c0392b"},
+                      {"2BSF", 2 * k.bsf, "#239b56"}};
+  std::vector<PlotMarker> m;
+  for (const auto &f : fams)
+    for (int h = 1; h <= harmonics; ++h)
+      if (h * f.f <= fmax)
+        m.push_back({h * f.f, (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name, f.color});
+  return m;
+}
+
+Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, bool envelope_kind)
+{
+  const BearingChoice bc = bearing_choice(a, meta);
+  std::optional<DefectFrequencies> kin;
+  if (bc.geometry && bc.fr) kin = defect_frequencies(*bc.geometry, *bc.fr);
+  const long long harmonics = a.integer("--harmonics", 3);
+  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
+  double fmax = a.number("--fmax", NAN);
+  if (!std::isfinite(fmax))
+    fmax = kin ? std::min(s.rate / 2, (harmonics + 0.5) * std::max(kin->bpfi, kin->bpfo) * 1.1)
+               : s.rate / 2;
+  std::vector<double> x = s.x;
+  Figure fig;
+  std::string what = "spectrum";
+  if (envelope_kind) {
+    Band band{0, s.rate / 2};
+    std::string how = "whole band";
+    if (a.has("--band")) {
+      const auto v = a.values("--band");
+      band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+      how = "band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
+    } else if (!a.has("--no-kurtogram")) {
+      const double min_bw =
+          kin ? std::min(s.rate / 4, 1.1 * 5 * std::max(kin->bpfi, kin->bpfo)) : s.rate / 256;
+      const Kurtogram kg = kurtogram(x, s.rate, 7, min_bw);
+      band = {kg.best.lo, kg.best.hi};
+      how = "kurtogram band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
+    }
+    x = envelope(x, s.rate, band);
+    what = "envelope spectrum (" + how + ")";
+  }
+  const SpectrumOptions so = spectrum_options(a, x.size(), s.rate);
+  const Spectrum sp = spectrum(x, s.rate, so);
+  PlotSeries ser;
+  ser.title = what;
+  const double fmin = a.number("--fmin", 0);
+  for (std::size_t k = 0; k < sp.bins(); ++k) {
+    const double f = sp.frequency(k);
+    if (f < fmin || f > fmax) continue;
+    ser.x.push_back(f);
+    ser.y.push_back(sp.value[k]);
+  }
+  std::vector<double> xo, yo;
+  decimate_minmax(ser.x, ser.y, 40000, xo, yo);
+  ser.x = xo;
+  ser.y = yo;
+  fig.series.push_back(ser);
+  if (kin) fig.markers = defect_markers(*kin, static_cast<int>(harmonics), fmax);
+  const std::string unit = unit_of(a, s.name);
+  fig.xlabel = "frequency (Hz)";
+  fig.ylabel = std::string(scaling_name(sp.scaling)) + " of " + s.name +
+               (unit.empty() ? "" : " (" + unit + scaling_unit(sp.scaling) + ")");
+  fig.title = (envelope_kind ? "Envelope spectrum of " : "Spectrum of ") + s.name + ", " +
+              window_name(sp.window) + " window, df " + format_number(sp.df, 4) + " Hz" +
+              (kin ? ", " + bc.geometry->name + " at " + format_number(kin->fr, 5) + " Hz" : "");
+  fig.xmin = fmin;
+  fig.xmax = fmax;
+  fig.logy = a.has("--logy");
+  return fig;
+}
+
+Figure signal_figure(const Args &a, const Signal &s)
+{
+  std::vector<double> t(s.size());
+  for (std::size_t i = 0; i < t.size(); ++i) t[i] = s.time(i);
+  PlotSeries ser;
+  ser.title = s.name;
+  decimate_minmax(t, s.x, 20000, ser.x, ser.y);
+  Figure fig;
+  fig.series.push_back(ser);
+  const std::string unit = unit_of(a, s.name);
+  fig.xlabel = "time (s)";
+  fig.ylabel = s.name + (unit.empty() ? "" : " (" + unit + ")");
+  fig.title = s.name + "(t), " + format_number(s.rate) + " Hz, " + std::to_string(s.size()) +
+              " samples" + (s.size() > 20000 ? " (min/max per pixel column)" : "");
+  return fig;
+}
+
+Figure indicators_figure(const Args &a)
+{
+  if (a.positional().size() != 1) throw Error("plot --kind indicators reads one CSV or table file");
+  const ColumnTable t = read_table(a.positional().front());
+  if (!a.has("--x") || !a.has("--y"))
+    throw Error("plot --kind indicators needs --x COLUMN and --y COLUMN[,COLUMN...] (columns: " +
+                t.column_list() + ")");
+  const std::size_t xc = t.find(a.get("--x"));
+  t.require_finite(xc);
+  Figure fig;
+  fig.xlabel = t.names[xc];
+  std::string ys;
+  for (const std::string &name : split_list(a.get("--y"))) {
+    const std::size_t yc = t.find(name);
+    t.require_finite(yc);
+    PlotSeries ser;
+    ser.title = t.names[yc];
+    ser.style = "linespoints pt 7 ps 1";
+    std::vector<std::size_t> order(t.rows());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+      return t.columns[xc][p] < t.columns[xc][q];
+    });
+    for (std::size_t i : order) {
+      ser.x.push_back(t.columns[xc][i]);
+      ser.y.push_back(t.columns[yc][i]);
+    }
+    fig.series.push_back(ser);
+    ys += (ys.empty() ? "" : ", ") + t.names[yc];
+  }
+  if (fig.series.empty()) throw Error("option --y names no column");
+  fig.ylabel = fig.series.size() == 1 ? ys : "indicator";
+  fig.title = ys + " versus " + t.names[xc];
+  fig.logy = a.has("--logy");
+  return fig;
+}
+
+}  // namespace
+
+int run_plot(const std::vector<std::string> &argv)
+{
+  Args a("plot", "--kind signal|spectrum|envelope|indicators --output FIG.png [options] FILE",
+         "PNG figures rendered by gnuplot (pngcairo): the signal; its spectrum or envelope\n"
+         "spectrum with the bearing's defect frequencies (FTF, BPFO, BPFI, 2xBSF and harmonics)\n"
+         "marked; indicators versus a swept parameter from a CSV/table (e.g. collected stats).");
+  a.section("Figure");
+  a.option("--kind", "KIND", "signal | spectrum | envelope | indicators", "signal");
+  a.option("--output", "FILE", "the PNG to write (required)");
+  a.option("--title", "TEXT", "figure title (default: describes the content)");
+  a.option("--size", "WxH", "image size in pixels", "1100x600");
+  a.flag("--logy", "logarithmic vertical axis");
+  a.option("--fmin", "HZ", "lowest frequency shown", "0");
+  a.option("--fmax", "HZ",
+           "highest frequency shown (default: a little above the 3rd "
+           "harmonic of BPFI/BPFO when the bearing is known, else Nyquist)");
+  a.option("--harmonics", "N", "harmonics of each defect frequency marked", "3");
+  a.option("--band", "F1 F2", "envelope band (Hz) (default: the kurtogram's)", "", 2);
+  a.flag("--no-kurtogram", "envelope of the whole band when no --band is given");
+  a.option("--x", "COLUMN", "indicators: the swept parameter column");
+  a.option("--y", "COL[,COL]", "indicators: the indicator column(s)");
+  add_input_options(a);
+  add_spectrum_options(a, "amplitude");
+  add_bearing_options(a);
+  a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
+  if (!a.parse(argv, std::cout)) return 0;
+  if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
+  const std::string kind = a.get("--kind");
+  Figure fig;
+  if (kind == "indicators") {
+    fig = indicators_figure(a);
+  } else if (kind == "signal" || kind == "spectrum" || kind == "envelope") {
+    const RunMetadata meta = run_metadata(a);
+    const Signal s = load_input(a, meta, kind == "signal" ? 2 : 64);
+    fig = kind == "signal" ? signal_figure(a, s) : spectrum_figure(a, s, meta, kind == "envelope");
+  } else {
+    throw Error("option --kind expects signal|spectrum|envelope|indicators, got '" + kind + "'");
+  }
+  if (a.has("--title")) fig.title = a.get("--title");
+  const std::string size = a.get("--size");
+  int w = 0, h = 0;
+  char sep = 0;
+  std::istringstream ss(size);
+  if (!(ss >> w >> sep >> h) || sep != 'x' || w < 100 || h < 100 || w > 10000 || h > 10000)
+    throw Error("option --size expects WIDTHxHEIGHT in pixels (100..10000), got '" + size + "'");
+  fig.width = w;
+  fig.height = h;
+  render_png(fig, a.get("--output"));
+  std::cout << "wrote " << a.get("--output") << "\n";
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

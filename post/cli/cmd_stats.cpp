@@ -1,0 +1,139 @@
+// ohmdem-post stats: the statistical indicators of the paper and more, over a window or per
+// sliding window.
+#include <cmath>
+#include <iostream>
+
+#include "../error.h"
+#include "../stats.h"
+#include "commands.h"
+#include "common.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+struct Definition {
+  const char *key, *definition;
+  bool dimensionless;
+};
+const Definition kIndicators[] = {
+    {"peak", "max |x|", false},
+    {"mean", "mean of x", false},
+    {"rms", "sqrt(mean x^2)", false},
+    {"std", "population standard deviation (ddof 0)", false},
+    {"skewness", "m3 / m2^1.5 (biased)", true},
+    {"kurtosis", "m4 / m2^2, Pearson (normal law = 3)", true},
+    {"crest", "peak / rms", true},
+    {"shape", "rms / mean|x|", true},
+    {"impulse", "peak / mean|x|", true},
+    {"clearance", "peak / (mean sqrt|x|)^2", true},
+};
+
+std::vector<double> values(const Indicators &r)
+{
+  return {r.peak,     r.mean,  r.rms,   r.std,     r.skewness,
+          r.kurtosis, r.crest, r.shape, r.impulse, r.clearance};
+}
+
+}  // namespace
+
+int run_stats(const std::vector<std::string> &argv)
+{
+  Args a("stats", "[options] FILE...",
+         "Statistical indicators of the signal over [--from, --to], or per sliding window.\n"
+         "Moments are computed on the signal as given (the mean is not removed unless\n"
+         "--remove-mean); kurtosis is Pearson's (3 for a normal law).");
+  add_input_options(a);
+  a.section("Indicators");
+  a.option("--window-length", "S", "compute per sliding window of this length (s)");
+  a.option("--step", "S", "hop between sliding windows (s) (default: the window length)");
+  a.flag("--remove-mean", "subtract the mean of each window before computing");
+  add_output_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  const RunMetadata meta = run_metadata(a);
+  Signal s = load_input(a, meta, 2);
+  Output out(a);
+  const std::string unit = unit_of(a, s.name);
+  const bool remove_mean = a.has("--remove-mean");
+
+  // windows [i0, i1)
+  std::vector<std::pair<std::size_t, std::size_t>> windows;
+  if (a.has("--window-length")) {
+    const double len = a.number("--window-length");
+    const double step = a.has("--step") ? a.number("--step") : len;
+    if (!(len > 0) || !(step > 0)) throw Error("--window-length and --step must be > 0 s");
+    const auto wl = static_cast<std::size_t>(std::llround(len * s.rate));
+    const auto ws = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
+    if (wl < 2 || wl > s.size())
+      throw Error("--window-length " + format_number(len) + " s gives " + std::to_string(wl) +
+                  " samples; it must hold 2 to " + std::to_string(s.size()) + " samples");
+    for (std::size_t i0 = 0; i0 + wl <= s.size(); i0 += ws) windows.emplace_back(i0, i0 + wl);
+  } else {
+    windows.emplace_back(0, s.size());
+  }
+
+  std::vector<Indicators> res;
+  std::vector<double> buf;
+  for (auto [i0, i1] : windows) {
+    buf.assign(s.x.begin() + static_cast<long>(i0), s.x.begin() + static_cast<long>(i1));
+    if (remove_mean) {
+      const double m = indicators(buf).mean;
+      for (double &v : buf) v -= m;
+    }
+    res.push_back(indicators(buf));
+  }
+  MetaList meta_out = s.meta;
+  meta_out.emplace_back("mean removed", remove_mean ? "yes" : "no");
+  meta_out.emplace_back("kurtosis", "Pearson (normal law = 3)");
+
+  if (out.format() == OutputFormat::Json) {
+    auto one = [&](std::size_t w) {
+      Json o = Json::object();
+      o.set("t_start_s", s.time(windows[w].first));
+      o.set("t_end_s", s.time(windows[w].second - 1));
+      o.set("n", res[w].n);
+      const auto v = values(res[w]);
+      for (std::size_t k = 0; k < v.size(); ++k) o.set(kIndicators[k].key, v[k]);
+      return o;
+    };
+    Json j = windows.size() == 1 && !a.has("--window-length") ? one(0) : Json::object();
+    if (a.has("--window-length")) {
+      Json arr = Json::array();
+      for (std::size_t w = 0; w < windows.size(); ++w) arr.push_back(one(w));
+      j.set("windows", arr);
+    }
+    j.set("unit", unit);
+    j.set("mean_removed", remove_mean);
+    j.set("meta", meta_json(meta_out));
+    out.stream() << j.dump(2) << '\n';
+    return 0;
+  }
+
+  Report r;
+  r.meta = meta_out;
+  if (out.format() == OutputFormat::Table && !a.has("--window-length")) {
+    r.columns = {"indicator", with_unit("value", ""), "definition"};
+    const auto v = values(res[0]);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      r.rows.push_back({std::string(kIndicators[k].key) +
+                            (kIndicators[k].dimensionless || unit.empty() ? "" : " (" + unit + ")"),
+                        v[k], kIndicators[k].definition});
+    r.rows.push_back(
+        {"samples", res[0].n,
+         "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});
+    r.table_digits = 10;
+  } else {
+    r.columns = {"t_start_s", "t_end_s", "n"};
+    for (const auto &d : kIndicators)
+      r.columns.push_back(d.dimensionless ? d.key : with_unit(d.key, unit));
+    for (std::size_t w = 0; w < windows.size(); ++w) {
+      std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
+      for (double v : values(res[w])) row.emplace_back(v);
+      r.rows.push_back(row);
+    }
+  }
+  write_report(out.stream(), r, out.format());
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

@@ -1,0 +1,87 @@
+#include "commands.h"
+
+#include <cstring>
+#include <iostream>
+#include <new>
+
+#include "../error.h"
+
+namespace ohmdem {
+const char *version();
+}
+
+namespace ohmdem::post::cli {
+
+const std::vector<Command> &commands()
+{
+  static const std::vector<Command> table = {
+      {"stats", "statistical indicators (peak, RMS, crest, kurtosis, ...), optionally per window",
+       run_stats},
+      {"spectrum",
+       "one-sided amplitude/power/PSD spectrum (window, detrend, padding, Welch), peaks",
+       run_spectrum},
+      {"envelope", "band-pass + Hilbert envelope and its spectrum; kurtogram to choose the band",
+       run_envelope},
+      {"frequencies", "kinematic defect frequencies (FTF, BPFO, BPFI, BSF) of a bearing",
+       run_frequencies},
+      {"diagnose", "most likely defect (inner/outer/ball/cage/none), score, evidence, size",
+       run_diagnose},
+      {"plot", "PNG figures with gnuplot: signal, spectrum with defect frequencies, indicators",
+       run_plot},
+  };
+  return table;
+}
+
+namespace {
+
+void usage(std::ostream &out)
+{
+  out << "ohmdem-post " << ohmdem::version()
+      << ": post-processing of bearing signals (ohmdem, LIGGGHTS outputs, measured records)\n\n"
+         "usage: ohmdem-post <command> [options] FILE...\n\ncommands:\n";
+  for (const auto &c : commands()) {
+    std::string n = c.name;
+    n.resize(13, ' ');
+    out << "  " << n << c.summary << "\n";
+  }
+  out << "\n'ohmdem-post <command> --help' describes a command's options.\n";
+}
+
+}  // namespace
+
+int dispatch(int argc, char **argv)
+{
+  if (argc < 2) {
+    usage(std::cerr);
+    std::cerr << "ERROR: no command given\n";
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    usage(std::cout);
+    return 0;
+  }
+  if (name == "--version") {
+    std::cout << "ohmdem-post " << ohmdem::version() << "\n";
+    return 0;
+  }
+  for (const auto &c : commands()) {
+    if (name != c.name) continue;
+    try {
+      return c.run(std::vector<std::string>(argv + 2, argv + argc));
+    } catch (const Error &e) {
+      std::cerr << "ERROR: " << e.what() << "\n";
+    } catch (const std::bad_alloc &) {
+      std::cerr << "ERROR: out of memory\n";
+    } catch (const std::exception &e) {
+      std::cerr << "ERROR: " << c.name << ": " << e.what() << "\n";
+    }
+    return 1;
+  }
+  std::cerr << "ERROR: unknown command '" << name << "' (commands:";
+  for (const auto &c : commands()) std::cerr << " " << c.name;
+  std::cerr << "; see ohmdem-post --help)\n";
+  return 2;
+}
+
+}  // namespace ohmdem::post::cli

@@ -1,0 +1,199 @@
+#include "common.h"
+
+#include <cmath>
+#include <iostream>
+
+#include "../error.h"
+#include "../read_log.h"
+#include "../text_scan.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+void add_input_options(Args &a)
+{
+  a.section("Input");
+  a.option("--input", "KIND", "input format: auto|table|log|dump", "auto");
+  a.option("--column", "NAME|N",
+           "signal column: header name (R, c_x[2], f_ID[1], v_name) or 1-based number; "
+           "default: the only non-time column, else R");
+  a.option("--time-column", "NAME|N",
+           "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use --rate; "
+           "default: time, t, TimeStep or Step");
+  a.option("--rate", "HZ", "sampling rate of a signal without time stamps (overrides any time)");
+  a.option("--dt", "S", "time step length for step-stamped data (dumps, logs, fix ave/time)");
+  a.option("--log", "FILE",
+           "take the time step length from this LIGGGHTS log (its last "
+           "'timestep' command)");
+  a.option("--aggregate", "HOW", "dumps: reduce the rows of a frame: sum|mean|min|max|rms|count",
+           "mean");
+  a.flag("--resample", "interpolate non-uniform time stamps linearly (default: refuse them)");
+  a.option("--from", "S", "start of the analysis window (s, same clock as the file)");
+  a.option("--to", "S", "end of the analysis window (s)");
+  a.option("--metadata", "FILE", "run metadata (JSON); default: run.json next to the input");
+  a.flag("--no-metadata", "ignore run.json next to the input");
+}
+
+InputOptions input_options(const Args &a)
+{
+  InputOptions o;
+  o.files = a.positional();
+  if (o.files.empty())
+    throw Error(a.command() + ": no input file (see ohmdem-post " + a.command() + " --help)");
+  o.format = a.get("--input");
+  o.column = a.get("--column");
+  o.time_column = a.get("--time-column");
+  o.rate = a.number("--rate", 0);
+  o.dt = a.number("--dt", 0);
+  if (a.has("--rate") && !(o.rate > 0)) throw Error("option --rate expects a rate > 0 Hz");
+  if (a.has("--dt") && !(o.dt > 0)) throw Error("option --dt expects a step > 0 s");
+  if (a.has("--log")) {
+    if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
+    o.dt = log_timestep(a.get("--log"));
+  }
+  o.aggregate = parse_aggregate(a.get("--aggregate"));
+  o.resample = a.has("--resample");
+  o.from = a.number("--from");
+  o.to = a.number("--to");
+  return o;
+}
+
+RunMetadata run_metadata(const Args &a)
+{
+  if (a.has("--metadata")) return read_run_metadata(a.get("--metadata"));
+  if (a.has("--no-metadata") || a.positional().empty()) return {};
+  const std::string p = find_run_metadata(a.positional().front());
+  return p.empty() ? RunMetadata{} : read_run_metadata(p);
+}
+
+Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
+                  bool skip_sliding_phase)
+{
+  InputOptions o = input_options(a);
+  o.min_samples = min_samples;
+  bool auto_from = false;
+  if (skip_sliding_phase && !a.has("--from") && meta.t_sliding_end) {
+    o.from = *meta.t_sliding_end;
+    auto_from = true;
+  }
+  Signal s = load_signal(o, meta);
+  if (meta.present()) s.meta.emplace_back("metadata", meta.path);
+  if (auto_from)
+    s.meta.emplace_back("sliding phase skipped", "t < " + format_number(o.from) + " s");
+  return s;
+}
+
+void add_output_options(Args &a)
+{
+  a.section("Output");
+  a.option("--format", "FMT", "table|csv|json", "table");
+  a.option("--output", "FILE", "write to FILE instead of standard output");
+  a.option("--unit", "UNIT", "unit of the signal, for column names (default: ohm for R)");
+}
+
+Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.get("--format")))
+{
+  if (a.has("--output")) {
+    file_ = std::make_unique<std::ofstream>(a.get("--output"));
+    if (!*file_) throw Error("cannot write '" + a.get("--output") + "'");
+  }
+}
+
+void add_bearing_options(Args &a)
+{
+  a.section("Bearing and speed");
+  a.option("--bearing", "NAME", "preset geometry: 6208 (the paper) or 6205 (CWRU)");
+  a.option("--nb", "N", "number of balls");
+  a.option("--db", "M", "ball diameter (m)");
+  a.option("--dp", "M", "pitch diameter (m)");
+  a.option("--beta", "DEG", "contact angle (degrees)");
+  a.option("--rpm", "RPM", "shaft speed (rev/min)");
+  a.option("--shaft-hz", "HZ", "shaft frequency (Hz); --fr is the same");
+  a.option("--fr", "HZ", "shaft frequency (Hz), as in MATLAB's bearing tools");
+  a.option("--omega", "RAD/S", "shaft angular speed (rad/s), as omega_inner in our decks");
+}
+
+BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
+{
+  BearingChoice c;
+  BearingGeometry g;
+  bool have = false;
+  if (a.has("--bearing")) {
+    g = bearing_preset(a.get("--bearing"));
+    have = true;
+    c.geometry_source = "--bearing";
+  } else if (meta.bearing && (*meta.bearing == "6208" || *meta.bearing == "6205") &&
+             !(meta.nb && meta.db && meta.dp)) {
+    g = bearing_preset(*meta.bearing);
+    have = true;
+    c.geometry_source = meta.path;
+  } else if (meta.nb && meta.db && meta.dp) {
+    g.name = meta.bearing ? *meta.bearing : "custom";
+    g.nb = static_cast<int>(std::lround(*meta.nb));
+    g.db = *meta.db;
+    g.dp = *meta.dp;
+    g.contact_angle_deg = meta.contact_angle.value_or(0);
+    have = true;
+    c.geometry_source = meta.path;
+  }
+  const bool explicit_geom = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has("--beta");
+  if (explicit_geom) {
+    if (!have && !(a.has("--nb") && a.has("--db") && a.has("--dp")))
+      throw Error(
+          "explicit geometry needs --nb, --db and --dp (and optionally --beta), or a "
+          "--bearing preset to modify");
+    if (!have) g.name = "custom";
+    if (a.has("--nb")) {
+      const long long nb = a.integer("--nb", 0);
+      if (nb < 1 || nb > 1000) throw Error("option --nb expects a ball count in 1..1000");
+      g.nb = static_cast<int>(nb);
+    }
+    if (a.has("--db")) g.db = a.number("--db");
+    if (a.has("--dp")) g.dp = a.number("--dp");
+    if (a.has("--beta")) g.contact_angle_deg = a.number("--beta");
+    if (have) g.name += " (modified)";
+    have = true;
+    c.geometry_source = "command line";
+  }
+  if (have) {
+    validate(g);
+    c.geometry = g;
+  }
+  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega");
+  if (speeds > 1) throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr or --omega");
+  double fr = NAN;
+  if (a.has("--rpm")) fr = a.number("--rpm") / 60;
+  if (a.has("--shaft-hz")) fr = a.number("--shaft-hz");
+  if (a.has("--fr")) fr = a.number("--fr");
+  if (a.has("--omega")) fr = a.number("--omega") / (2 * kPi);
+  if (speeds) {
+    if (!(fr > 0)) throw Error("the shaft speed must be > 0");
+    c.fr = fr;
+    c.fr_source = "command line";
+  } else if (meta.omega_inner) {
+    if (!(*meta.omega_inner > 0)) throw Error(meta.path + ": \"omega_inner\" must be > 0");
+    c.fr = *meta.omega_inner / (2 * kPi);
+    c.fr_source = meta.path;
+  }
+  return c;
+}
+
+std::string unit_of(const Args &a, const std::string &q)
+{
+  if (a.has("--unit")) return a.get("--unit");
+  if (q == "R" || q.rfind("R_", 0) == 0) return "ohm";
+  if (q == "time" || q == "t") return "s";
+  if (q.rfind("fn_", 0) == 0) return "N";
+  if (q.rfind("omega", 0) == 0) return "rad/s";
+  return "";
+}
+
+std::string with_unit(const std::string &name, const std::string &unit)
+{
+  return unit.empty() ? name : name + "_" + unit;
+}
+
+}  // namespace ohmdem::post::cli

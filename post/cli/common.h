@@ -1,0 +1,56 @@
+// Options shared by several commands: input selection, output format, bearing and speed.
+#ifndef OHMDEM_POST_CLI_COMMON_H
+#define OHMDEM_POST_CLI_COMMON_H
+
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "../bearing.h"
+#include "../load_signal.h"
+#include "../report.h"
+#include "../run_metadata.h"
+#include "args.h"
+
+namespace ohmdem::post::cli {
+
+void add_input_options(Args &a);
+InputOptions input_options(const Args &a);
+// --metadata FILE, else run.json next to the first input (unless --no-metadata), else none.
+RunMetadata run_metadata(const Args &a);
+// Loads the signal and applies the metadata's t_sliding_end as default --from when asked.
+Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
+                  bool skip_sliding_phase = false);
+
+void add_output_options(Args &a);
+class Output {
+ public:
+  explicit Output(const Args &a);  // --output FILE or stdout; --format
+  std::ostream &stream() { return file_ ? *file_ : *out_; }
+  OutputFormat format() const { return format_; }
+
+ private:
+  std::unique_ptr<std::ofstream> file_;
+  std::ostream *out_;
+  OutputFormat format_;
+};
+
+void add_bearing_options(Args &a);
+struct BearingChoice {
+  std::optional<BearingGeometry> geometry;
+  std::optional<double> fr;  // shaft frequency (Hz)
+  std::string geometry_source, fr_source;
+};
+// Command line first (--bearing, --nb/--db/--dp/--beta, --rpm/--shaft-hz/--fr/--omega), then
+// the run's metadata.
+BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
+
+// Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.
+std::string unit_of(const Args &a, const std::string &quantity);
+std::string with_unit(const std::string &name, const std::string &unit);
+
+}  // namespace ohmdem::post::cli
+
+#endif

@@ -1,0 +1,7 @@
+// ohmdem-post: the post-processing command line (commands in commands.cpp).
+#include "commands.h"
+
+int main(int argc, char **argv)
+{
+  return ohmdem::post::cli::dispatch(argc, argv);
+}

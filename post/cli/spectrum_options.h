@@ -1,0 +1,33 @@
+// Spectrum and peak options shared by `spectrum` and `envelope`.
+#ifndef OHMDEM_POST_CLI_SPECTRUM_OPTIONS_H
+#define OHMDEM_POST_CLI_SPECTRUM_OPTIONS_H
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "../bearing.h"
+#include "../peaks.h"
+#include "../report.h"
+#include "../spectrum.h"
+#include "args.h"
+
+namespace ohmdem::post::cli {
+
+void add_spectrum_options(Args &a, const char *default_scale);
+SpectrumOptions spectrum_options(const Args &a, std::size_t n, double rate);
+void add_peak_options(Args &a);
+PeakOptions peak_options(const Args &a);
+MetaList spectrum_meta(const Spectrum &s, Detrend d);
+
+// Label of the nearest defect-family harmonic within `tolerance` (relative), "" if none.
+std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tolerance);
+
+// Writes peaks (default) or every bin in [fmin, fmax] (--bins) in the chosen format.
+void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Spectrum &s,
+                    MetaList meta, const std::string &unit,
+                    const std::optional<DefectFrequencies> &kin, const char *what, bool bins);
+
+}  // namespace ohmdem::post::cli
+
+#endif

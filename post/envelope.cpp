@@ -1,0 +1,126 @@
+#include "envelope.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "error.h"
+#include "fft.h"
+#include "sampled_signal.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+void check_band(Band &band, double rate)
+{
+  const double nyq = rate / 2;
+  if (band.hi <= 0) band.hi = nyq;
+  if (band.lo < 0 || band.hi > nyq * (1 + 1e-12) || !(band.hi > band.lo))
+    throw Error("band [" + format_number(band.lo) + ", " + format_number(band.hi) +
+                "] Hz must satisfy 0 <= f1 < f2 <= fs/2 = " + format_number(nyq) + " Hz");
+}
+
+}  // namespace
+
+std::vector<double> envelope(const std::vector<double> &x, double rate, Band band)
+{
+  const std::size_t n = x.size();
+  if (n < 4) throw Error("an envelope needs at least 4 samples, got " + std::to_string(n));
+  check_band(band, rate);
+  // work arrays kept between calls (single-threaded tool): no page faults on repeated use
+  static std::vector<Complex> X, Y;
+  rfft(x.data(), n, X);
+  const double df = rate / static_cast<double>(n);
+  const std::size_t nb = X.size();
+  const bool has_nyquist = n % 2 == 0;
+  // analytic signal z = x_band + i H[x_band]: both parts through c2r transforms of half spectra
+  // (cheaper than one c2c of length n); for the whole band the real part is x itself
+  std::size_t kept = 0;
+  std::size_t k_lo = nb, k_hi = 0;
+  for (std::size_t k = 0; k < nb; ++k) {
+    const double f = static_cast<double>(k) * df;
+    if (f < band.lo || f > band.hi) continue;
+    k_lo = std::min(k_lo, k);
+    k_hi = std::max(k_hi, k);
+    ++kept;
+  }
+  if (kept == 0)
+    throw Error("band [" + format_number(band.lo) + ", " + format_number(band.hi) +
+                "] Hz holds no frequency bin (resolution " + format_number(df) + " Hz)");
+  const bool whole = k_lo == 0 && k_hi == nb - 1;
+  std::vector<double> re, env(n);
+  const double inv = 1.0 / static_cast<double>(n);
+  if (!whole) {
+    Y.assign(nb, Complex(0, 0));
+    for (std::size_t k = k_lo; k <= k_hi; ++k) Y[k] = X[k];
+    re.resize(n);
+    irfft(Y, n, re.data());
+    for (double &v : re) v *= inv;
+  }
+  // Hilbert transform: -i sign(f) X, zero at DC and Nyquist (the analytic signal keeps those
+  // once, in its real part, as scipy.signal.hilbert)
+  Y.assign(nb, Complex(0, 0));
+  for (std::size_t k = std::max<std::size_t>(k_lo, 1); k <= k_hi; ++k)
+    if (!(has_nyquist && k == nb - 1)) Y[k] = Complex(X[k].imag(), -X[k].real());
+  irfft(Y, n, env.data());
+  const std::vector<double> &r = whole ? x : re;
+  for (std::size_t j = 0; j < n; ++j) env[j] = std::hypot(r[j], env[j] * inv);
+  return env;
+}
+
+Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
+                    double fmin)
+{
+  const std::size_t n = x.size();
+  if (n < 64) throw Error("a kurtogram needs at least 64 samples, got " + std::to_string(n));
+  std::vector<double> y = x;
+  double mean = 0;
+  for (double v : y) mean += v;
+  mean /= static_cast<double>(n);
+  for (double &v : y) v -= mean;
+  std::vector<Complex> X;
+  rfft(y.data(), n, X);
+  const double df = rate / static_cast<double>(n), nyq = rate / 2;
+
+  std::vector<int> counts;
+  for (int l = 0; l <= max_level; ++l) {
+    counts.push_back(1 << l);
+    if (l >= 1 && l < max_level) counts.push_back(3 << (l - 1));  // 3, 6, 12, ...
+  }
+  counts.erase(std::remove_if(counts.begin(), counts.end(),
+                              [&](int c) { return c > 1 && nyq / c < min_bandwidth; }),
+               counts.end());
+  std::sort(counts.begin(), counts.end());
+  counts.erase(std::unique(counts.begin(), counts.end()), counts.end());
+
+  Kurtogram kg;
+  kg.best.kurtosis = -std::numeric_limits<double>::infinity();
+  std::vector<Complex> c;
+  for (int nbands : counts) {
+    const double bw = nyq / nbands;
+    for (int i = 0; i < nbands; ++i) {
+      const double lo = i * bw, hi = (i + 1) * bw;
+      if (hi <= fmin) continue;
+      const auto k1 = static_cast<std::size_t>(std::max(1.0, std::ceil(lo / df)));
+      const auto k2 = std::min(X.size() - 1, static_cast<std::size_t>(std::floor(hi / df)));
+      if (k2 < k1 + 7) continue;
+      c.assign(X.begin() + static_cast<long>(k1), X.begin() + static_cast<long>(k2) + 1);
+      cfft(c, +1);
+      double s2 = 0, s4 = 0;
+      for (const Complex &v : c) {
+        const double p = std::norm(v);
+        s2 += p;
+        s4 += p * p;
+      }
+      const double m = static_cast<double>(c.size());
+      KurtogramCell cell{nbands, lo, hi, s2 > 0 ? (s4 / m) / ((s2 / m) * (s2 / m)) - 2 : 0};
+      kg.cells.push_back(cell);
+      if (cell.kurtosis > kg.best.kurtosis) kg.best = cell;
+    }
+  }
+  if (kg.cells.empty()) throw Error("kurtogram: no band wide enough (signal too short?)");
+  return kg;
+}
+
+}  // namespace ohmdem::post

@@ -1,0 +1,46 @@
+// PNG figures rendered by gnuplot (Debian gnuplot-nox, pngcairo terminal): the data go to
+// temporary files, gnuplot runs as a child process (no shell), its messages are reported on
+// failure. The gnuplot executable is $OHMDEM_GNUPLOT if set, else `gnuplot` from PATH.
+#ifndef OHMDEM_POST_GNUPLOT_H
+#define OHMDEM_POST_GNUPLOT_H
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace ohmdem::post {
+
+struct PlotSeries {
+  std::string title;
+  std::vector<double> x, y;
+  std::string style = "lines";  // gnuplot "with" style: lines, linespoints, points, impulses
+};
+
+struct PlotMarker {
+  double x = 0;
+  std::string label;
+  std::string color = "#c0392b";
+};
+
+struct Figure {
+  std::string title, xlabel, ylabel;
+  std::vector<PlotSeries> series;
+  std::vector<PlotMarker> markers;  // vertical dashed lines with rotated labels
+  bool logy = false;
+  double xmin = NAN, xmax = NAN;
+  int width = 1100, height = 600;
+};
+
+// Throws Error if gnuplot is missing or fails (its message is included).
+void render_png(const Figure &fig, const std::string &png_path);
+
+// Finds the gnuplot executable; "" if none.
+std::string find_gnuplot();
+
+// Reduces a long series for plotting: per bucket, the min and max (keeps spikes visible).
+void decimate_minmax(const std::vector<double> &x, const std::vector<double> &y,
+                     std::size_t max_points, std::vector<double> &xo, std::vector<double> &yo);
+
+}  // namespace ohmdem::post
+
+#endif

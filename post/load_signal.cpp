@@ -1,0 +1,290 @@
+#include "load_signal.h"
+
+#include <algorithm>
+
+#include "error.h"
+#include "line_reader.h"
+#include "read_log.h"
+#include "read_table.h"
+#include "text_scan.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+std::string first_line(const std::string &path)
+{
+  LineReader in(path);
+  std::string line;
+  while (in.next(line))
+    if (!trim(line).empty()) return line;
+  throw Error(path + ": empty file");
+}
+
+std::string detect(const InputOptions &opt)
+{
+  if (opt.format != "auto") {
+    if (opt.format != "table" && opt.format != "log" && opt.format != "dump")
+      throw Error("option --input expects auto|table|log|dump, got '" + opt.format + "'");
+    return opt.format;
+  }
+  const std::string l = first_line(opt.files.front());
+  if (looks_like_dump(l)) return "dump";
+  if (looks_like_log(l)) return "log";
+  return "table";
+}
+
+bool is_step_name(const std::string &n)
+{
+  return n == "TimeStep" || n == "Step" || n == "step" || n == "timestep";
+}
+
+double step_length(const InputOptions &opt, const RunMetadata &meta, double from_file,
+                   const std::string &what)
+{
+  if (opt.dt > 0) return opt.dt;
+  if (from_file > 0) return from_file;
+  if (meta.dt && *meta.dt > 0) return *meta.dt;
+  throw Error(what + " counts time steps and no step length is known: pass --dt SECONDS" +
+              std::string(meta.present() ? "" : " (or a run.json with \"dt\" via --metadata)"));
+}
+
+// Time-stamped samples before the window and the uniformity check.
+struct Samples {
+  std::vector<double> t, x;
+  double t_resolution = 0;
+  double rate = 0;  // > 0: uniform by declaration (--rate), t is ignored
+  std::vector<std::size_t> lines;
+  std::string where, name;
+  MetaList meta;
+};
+
+void describe(Samples &s, const std::string &format, const std::string &time_base)
+{
+  s.meta.insert(s.meta.begin(), {"format", format});
+  s.meta.emplace_back("time base", time_base);
+}
+
+Samples from_table(const InputOptions &opt, const RunMetadata &meta)
+{
+  if (opt.files.size() != 1)
+    throw Error("column files are read one at a time, got " + std::to_string(opt.files.size()) +
+                " files");
+  ColumnTable t = read_table(opt.files.front());
+  // time column
+  std::size_t tc = ColumnTable::npos;
+  if (opt.rate <= 0 && opt.time_column != "none") {
+    if (!opt.time_column.empty()) {
+      tc = t.find(opt.time_column);
+    } else {
+      for (const char *n : {"time", "t", "TimeStep", "Step", "step"})
+        if ((tc = t.find_name(n)) != ColumnTable::npos) break;
+    }
+  }
+  // value column
+  std::size_t vc = ColumnTable::npos;
+  if (!opt.column.empty()) {
+    vc = t.find(opt.column);
+  } else {
+    std::vector<std::size_t> candidates;
+    for (std::size_t c = 0; c < t.cols(); ++c)
+      if (c != tc) candidates.push_back(c);
+    if (candidates.size() == 1) {
+      vc = candidates.front();
+    } else if ((vc = t.find_name("R")) == ColumnTable::npos || vc == tc) {
+      throw Error(t.source + ": " + std::to_string(t.cols()) +
+                  " columns; choose the signal with --column NAME|N (columns: " + t.column_list() +
+                  ")");
+    }
+  }
+  t.require_finite(vc);
+  Samples s;
+  s.where = t.source;
+  s.lines = t.line_of_row;
+  s.x = t.columns[vc];
+  std::string base;
+  if (opt.rate > 0) {
+    s.rate = opt.rate;
+    base = "uniform, --rate";
+  } else if (tc == ColumnTable::npos) {
+    throw Error(t.source + ": no time column (columns: " + t.column_list() +
+                "); pass --rate HZ for a uniformly sampled signal or --time-column NAME|N");
+  } else {
+    t.require_finite(tc);
+    s.t = t.columns[tc];
+    s.t_resolution = t.resolution(tc);
+    if (is_step_name(t.names[tc])) {
+      const double dt = step_length(opt, meta, 0, "column " + t.names[tc]);
+      for (double &v : s.t) v *= dt;
+      s.t_resolution *= dt;
+      base = "column " + t.names[tc] + " x dt " + format_number(dt) + " s";
+    } else {
+      base = "column " + t.names[tc] + " (s)";
+    }
+  }
+  s.name = t.has_header ? t.names[vc] : t.cols() == 1 ? "x" : "column " + t.names[vc];
+  s.meta.insert(s.meta.begin(), {"column", t.names[vc]});
+  describe(s, t.has_header ? "columns with header" : "plain columns", base);
+  return s;
+}
+
+Samples from_log(const InputOptions &opt, const RunMetadata &meta)
+{
+  if (opt.files.size() != 1) throw Error("log files are read one at a time");
+  const std::string &path = opt.files.front();
+  auto blocks = read_log(path);
+  const ColumnTable &first = blocks.front().table;
+  if (opt.column.empty())
+    throw Error(path + ": choose a thermo column with --column NAME|N (columns: " +
+                first.column_list() + ")");
+  const std::string name = first.names[first.find(opt.column)];
+  std::vector<double> time, x;
+  std::vector<std::size_t> lines;
+  double last_step = -1, dt_seen = 0, res = 0;
+  bool has_time = false;
+  std::size_t used = 0, skipped = 0;
+  for (const auto &b : blocks) {
+    const ColumnTable &t = b.table;
+    const std::size_t vc = t.find_name(name), sc = t.find_name("Step");
+    if (vc == ColumnTable::npos || sc == ColumnTable::npos) continue;
+    const std::size_t tc = t.find_name("Time");
+    if (tc == ColumnTable::npos && opt.dt <= 0 && b.timestep > 0) {
+      if (dt_seen > 0 && dt_seen != b.timestep)
+        throw Error(path + ": the timestep changes between runs (" + format_number(dt_seen) +
+                    " then " + format_number(b.timestep) + " s); pass --dt to override");
+      dt_seen = b.timestep;
+    }
+    t.require_finite(vc);
+    ++used;
+    skipped += b.skipped;
+    for (std::size_t r = 0; r < t.rows(); ++r) {
+      const double step = t.columns[sc][r];
+      if (step <= last_step) continue;  // a run repeats the last step of the previous one
+      last_step = step;
+      if (tc != ColumnTable::npos) {
+        time.push_back(t.columns[tc][r]);
+        res = std::max(res, t.resolution(tc));
+        has_time = true;
+      } else {
+        time.push_back(step);
+      }
+      x.push_back(t.columns[vc][r]);
+      lines.push_back(t.line_of_row[r]);
+    }
+  }
+  std::string base = "thermo column Time (s)";
+  if (!has_time) {
+    const double dt = step_length(opt, meta, dt_seen, path + ": thermo column Step");
+    for (double &v : time) v *= dt;
+    base = "Step x dt " + format_number(dt) + " s" +
+           (opt.dt > 0    ? " (--dt)"
+            : dt_seen > 0 ? " (timestep in the log)"
+                          : " (metadata)");
+  }
+  Samples s;
+  s.t = std::move(time);
+  s.x = std::move(x);
+  s.t_resolution = res;
+  s.lines = std::move(lines);
+  s.where = path;
+  s.name = name;
+  s.meta.insert(s.meta.begin(), {"column", name});
+  s.meta.emplace_back("thermo blocks used",
+                      std::to_string(used) + " of " + std::to_string(blocks.size()));
+  if (skipped) s.meta.emplace_back("message lines skipped", std::to_string(skipped));
+  describe(s, "LIGGGHTS log", base);
+  return s;
+}
+
+Samples from_dump(const InputOptions &opt, const RunMetadata &meta)
+{
+  DumpSeries d = read_dump(opt.files, opt.column, opt.aggregate);
+  const double dt = step_length(opt, meta, 0, "a dump (dumps carry no time step length)");
+  for (double &v : d.steps) v *= dt;
+  Samples s;
+  s.t = std::move(d.steps);
+  s.x = std::move(d.values);
+  s.where = opt.files.size() == 1 ? opt.files.front() : "dump files";
+  s.name = d.column;
+  s.meta.insert(s.meta.begin(), {"column", std::string(aggregate_name(opt.aggregate)) + " of " +
+                                               d.column + " per frame"});
+  s.meta.emplace_back("frames", std::to_string(d.frames) + " read, " +
+                                    std::to_string(d.duplicates) + " duplicate steps dropped");
+  describe(s, "LIGGGHTS dump", "time step x dt " + format_number(dt) + " s");
+  return s;
+}
+
+}  // namespace
+
+Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
+{
+  if (opt.files.empty()) throw Error("no input file given");
+  if (opt.rate < 0 || opt.dt < 0) throw Error("--rate and --dt must be > 0");
+  const std::string format = detect(opt);
+  Samples in = format == "dump"  ? from_dump(opt, meta)
+               : format == "log" ? from_log(opt, meta)
+                                 : from_table(opt, meta);
+  if (in.rate > 0) {
+    in.t.resize(in.x.size());
+    for (std::size_t i = 0; i < in.t.size(); ++i) in.t[i] = static_cast<double>(i) / in.rate;
+  }
+  // the window is applied to the time stamps, before the uniformity check
+  const bool windowed = std::isfinite(opt.from) || std::isfinite(opt.to);
+  if (std::isfinite(opt.from) && std::isfinite(opt.to) && !(opt.to > opt.from))
+    throw Error("--to (" + format_number(opt.to) + " s) must be after --from (" +
+                format_number(opt.from) + " s)");
+  std::size_t i0 = 0, i1 = in.t.size();
+  if (std::isfinite(opt.from))
+    i0 = static_cast<std::size_t>(std::lower_bound(in.t.begin(), in.t.end(), opt.from) -
+                                  in.t.begin());
+  if (std::isfinite(opt.to))
+    i1 =
+        static_cast<std::size_t>(std::upper_bound(in.t.begin(), in.t.end(), opt.to) - in.t.begin());
+  if (i1 < i0) i1 = i0;
+  const std::size_t need = std::max<std::size_t>(opt.min_samples, 2);
+  if (i1 - i0 < need) {
+    if (windowed)
+      throw Error("the time window [" +
+                  format_number(std::isfinite(opt.from) ? opt.from : in.t.front()) + ", " +
+                  format_number(std::isfinite(opt.to) ? opt.to : in.t.back()) + "] s holds " +
+                  std::to_string(i1 - i0) + " sample(s), at least " + std::to_string(need) +
+                  " needed (the data span " + format_number(in.t.front()) + " to " +
+                  format_number(in.t.back()) + " s)");
+    throw Error(in.where + ": only " + std::to_string(in.x.size()) + " sample(s), at least " +
+                std::to_string(need) + " needed");
+  }
+  auto slice = [&](auto &v) {
+    if (v.size() < i1) return;
+    v = std::vector<typename std::decay_t<decltype(v)>::value_type>(
+        v.begin() + static_cast<long>(i0), v.begin() + static_cast<long>(i1));
+  };
+  slice(in.t);
+  slice(in.x);
+  slice(in.lines);
+  Signal s;
+  if (in.rate > 0) {
+    s.rate = in.rate;
+    s.t0 = in.t.front();
+    s.x = std::move(in.x);
+  } else {
+    s = make_uniform(in.t, std::move(in.x), in.t_resolution, opt.resample, in.where, in.lines);
+  }
+  s.name = in.name;
+  std::string src;
+  for (const auto &f : opt.files) src += (src.empty() ? "" : " ") + f;
+  MetaList meta_out{{"source", src}};
+  meta_out.insert(meta_out.end(), in.meta.begin(), in.meta.end());
+  meta_out.insert(meta_out.end(), s.meta.begin(), s.meta.end());
+  meta_out.emplace_back("sampling rate (Hz)", format_number(s.rate, 10));
+  if (windowed)
+    meta_out.emplace_back(
+        "window", format_number(s.t0) + " to " + format_number(s.time(s.size() - 1)) + " s");
+  meta_out.emplace_back("samples", std::to_string(s.size()));
+  meta_out.emplace_back("duration (s)", format_number(s.duration()));
+  meta_out.emplace_back("frequency resolution (Hz)",
+                        format_number(s.rate / static_cast<double>(s.size())));
+  s.meta = std::move(meta_out);
+  return s;
+}
+
+}  // namespace ohmdem::post

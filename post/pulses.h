@@ -1,0 +1,43 @@
+// Rectangular pulses in a level signal (our R(t): a constant level with steps while a ball's
+// path is broken): direct detection at half height, and a time-synchronous average at a known
+// repetition frequency for noisy records. Used to estimate the defect size from pulse widths.
+#ifndef OHMDEM_POST_PULSES_H
+#define OHMDEM_POST_PULSES_H
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace ohmdem::post {
+
+struct PulseTrain {
+  double baseline = 0;  // median of the signal
+  double noise = 0;     // robust standard deviation (1.4826 MAD) around the baseline
+  double height = 0;    // signed median plateau deviation of the pulses
+  std::vector<double> start_s, width_s;  // every run beyond half height (s)
+  double median_width_s = 0;             // over runs of at least 3 samples
+  double median_spacing_s = 0;           // between starts of consecutive counted runs
+  double width_spread = 0;               // interquartile range / median of the counted widths
+  std::size_t counted = 0;               // runs of at least 3 samples
+  bool clean = false;                    // >= 3 counted pulses, consistent widths, height > 6 noise
+};
+
+// Runs where polarity x (x - baseline) exceeds half the plateau height, merged across gaps of up
+// to 2 samples; edges interpolated linearly at half height.
+PulseTrain detect_pulses(const std::vector<double> &x, double rate);
+
+struct AveragedPulse {
+  double width_s = 0;      // full width at half maximum of the averaged pulse
+  double height = 0;       // signed
+  double contrast = 0;     // |height| / noise of the averaged waveform
+  std::size_t cycles = 0;  // periods averaged
+  bool valid = false;      // contrast >= 6 and width >= 2 samples
+};
+
+// Time-synchronous average of x folded at frequency f (Hz), then the width at half height of the
+// deviation from the averaged waveform's median.
+AveragedPulse synchronous_pulse(const std::vector<double> &x, double rate, double f);
+
+}  // namespace ohmdem::post
+
+#endif

@@ -1,0 +1,151 @@
+#include "read_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "error.h"
+#include "line_reader.h"
+#include "text_scan.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+std::string quoted(std::string_view s)
+{
+  std::string q(s.substr(0, 40));
+  for (char &c : q)
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+  if (s.size() > 40) q += "...";
+  return "'" + q + "'";
+}
+
+}  // namespace
+
+namespace {
+
+std::vector<std::string_view> split_commas(std::string_view line)
+{
+  std::vector<std::string_view> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t c = line.find(',', start);
+    out.push_back(trim(line.substr(start, c == std::string_view::npos ? c : c - start)));
+    if (c == std::string_view::npos) break;
+    start = c + 1;
+  }
+  return out;
+}
+
+std::string unquote(std::string_view s)
+{
+  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
+  return std::string(s);
+}
+
+ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
+{
+  std::string line = std::move(first);
+  std::size_t ncol = 0;
+  do {
+    std::string_view s = trim(line);
+    if (s.empty() || s.front() == '#') continue;
+    const auto cells = split_commas(s);
+    if (ncol == 0) {
+      ncol = cells.size();
+      t.init_columns(ncol);
+      double v = 0;
+      bool header = false;
+      for (auto c : cells) header = header || !parse_double(c, v);
+      if (header) {
+        for (auto c : cells) t.names.push_back(unquote(c));
+        t.has_header = true;
+        continue;
+      }
+      for (std::size_t c = 0; c < ncol; ++c) t.names.push_back(std::to_string(c + 1));
+    }
+    if (cells.size() != ncol)
+      throw Error(in.where() + ": " + std::to_string(cells.size()) + " cells, expected " +
+                  std::to_string(ncol) + " as on the header (garbage or truncated line?)");
+    for (std::size_t c = 0; c < ncol; ++c) {
+      double v = 0;
+      if (!parse_double(cells[c], v)) {
+        v = std::nan("");
+        if (t.first_text[c].empty()) {
+          t.first_text[c] = cells[c].empty() ? "(empty)" : unquote(cells[c]);
+          t.first_text_line[c] = in.line_number();
+        }
+      }
+      t.columns[c].push_back(v);
+      t.note_token(c, cells[c], v);
+    }
+    t.line_of_row.push_back(in.line_number());
+  } while (in.next(line));
+  if (t.rows() == 0) throw Error(t.source + ": no data rows (empty file or only a header)");
+  return t;
+}
+
+}  // namespace
+
+ColumnTable read_table(const std::string &path)
+{
+  LineReader in(path);
+  ColumnTable t;
+  t.source = path;
+  std::string line;
+  std::string last_comment;
+  bool comment_just_before = false;
+  std::vector<std::string_view> tok;
+  std::size_t ncol = 0;
+  while (in.next(line)) {
+    std::string_view s = trim(line);
+    if (s.empty()) continue;
+    if (s.front() == '#') {
+      if (ncol == 0) {
+        last_comment = std::string(s.substr(1));
+        comment_just_before = true;
+        t.notes.emplace_back(s);
+        if (last_comment.find("Number-of-rows") != std::string::npos)
+          throw Error(in.where() +
+                      ": fix ave/time files in 'mode vector' are not supported; write the "
+                      "quantity with 'mode scalar' or a dump");
+      }
+      continue;
+    }
+    if (ncol == 0 && s.find(',') != std::string_view::npos) return read_csv(in, std::move(t), line);
+    split_blanks(s, tok);
+    if (ncol == 0) {
+      ncol = tok.size();
+      auto words = split_blanks(last_comment);
+      if (comment_just_before && words.size() == ncol) {
+        for (auto w : words) t.names.emplace_back(w);
+        t.has_header = true;
+      } else {
+        for (std::size_t c = 0; c < ncol; ++c) t.names.push_back(std::to_string(c + 1));
+        if (comment_just_before && !words.empty())
+          t.notes.push_back("header line has " + std::to_string(words.size()) +
+                            " words but rows have " + std::to_string(ncol) +
+                            " values: columns are numbered");
+      }
+      t.init_columns(ncol);
+    }
+    if (tok.size() != ncol)
+      throw Error(in.where() + ": " + std::to_string(tok.size()) + " values, expected " +
+                  std::to_string(ncol) + " as on the first data row (garbage or truncated line?)");
+    for (std::size_t c = 0; c < ncol; ++c) {
+      double v = 0;
+      if (!parse_double(tok[c], v))
+        throw Error(in.where() + ": " + quoted(tok[c]) + " is not a number (column " + t.names[c] +
+                    ")");
+      t.columns[c].push_back(v);
+      t.note_token(c, tok[c], v);
+    }
+    t.line_of_row.push_back(in.line_number());
+  }
+  if (t.rows() == 0) throw Error(path + ": no data rows (empty file or only comments)");
+  return t;
+}
+
+}  // namespace ohmdem::post

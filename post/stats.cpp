@@ -1,0 +1,74 @@
+#include "stats.h"
+
+#include <cmath>
+#include <limits>
+
+namespace ohmdem::post {
+
+namespace {
+
+// Neumaier's compensated sum: the error does not grow with n.
+class Sum {
+ public:
+  void add(double v)
+  {
+    const double t = s_ + v;
+    c_ += std::fabs(s_) >= std::fabs(v) ? (s_ - t) + v : (v - t) + s_;
+    s_ = t;
+  }
+  double value() const { return s_ + c_; }
+
+ private:
+  double s_ = 0, c_ = 0;
+};
+
+double ratio(double a, double b)
+{
+  return b != 0 ? a / b : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+Indicators indicators(const double *x, std::size_t n)
+{
+  Indicators r;
+  r.n = n;
+  if (n == 0) return r;
+  const double dn = static_cast<double>(n);
+  Sum s1, sabs, ssqrt, s2raw;
+  double peak = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::fabs(x[i]);
+    s1.add(x[i]);
+    sabs.add(a);
+    ssqrt.add(std::sqrt(a));
+    s2raw.add(x[i] * x[i]);
+    if (a > peak) peak = a;
+  }
+  const double mean = s1.value() / dn;
+  Sum m2, m3, m4;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = x[i] - mean;
+    const double d2 = d * d;
+    m2.add(d2);
+    m3.add(d2 * d);
+    m4.add(d2 * d2);
+  }
+  const double c2 = m2.value() / dn, c3 = m3.value() / dn, c4 = m4.value() / dn;
+  const double mabs = sabs.value() / dn, msqrt = ssqrt.value() / dn;
+  r.peak = peak;
+  r.mean = mean;
+  r.rms = std::sqrt(s2raw.value() / dn);
+  r.std = std::sqrt(c2);
+  // scipy.stats treats m2 <= (1e-15 mean)^2 as a constant input (moment ratios NaN)
+  const bool constant = c2 <= std::pow(1e-15 * mean, 2);
+  r.skewness = constant ? std::numeric_limits<double>::quiet_NaN() : c3 / std::pow(c2, 1.5);
+  r.kurtosis = constant ? std::numeric_limits<double>::quiet_NaN() : c4 / (c2 * c2);
+  r.crest = ratio(peak, r.rms);
+  r.shape = ratio(r.rms, mabs);
+  r.impulse = ratio(peak, mabs);
+  r.clearance = ratio(peak, msqrt * msqrt);
+  return r;
+}
+
+}  // namespace ohmdem::post

@@ -1,0 +1,35 @@
+// Statistical indicators of a signal (paper section 4, plus skewness, impulse and clearance).
+#ifndef OHMDEM_POST_STATS_H
+#define OHMDEM_POST_STATS_H
+
+#include <cstddef>
+#include <vector>
+
+namespace ohmdem::post {
+
+struct Indicators {
+  std::size_t n = 0;
+  double peak = 0;  // max |x|
+  double mean = 0;
+  double rms = 0;        // sqrt(mean x^2)
+  double std = 0;        // population standard deviation (ddof = 0, as numpy.std)
+  double skewness = 0;   // m3 / m2^1.5 (biased, as scipy.stats.skew)
+  double kurtosis = 0;   // m4 / m2^2, Pearson: 3 for a normal law (scipy fisher=False)
+  double crest = 0;      // peak / rms
+  double shape = 0;      // rms / mean|x|
+  double impulse = 0;    // peak / mean|x|
+  double clearance = 0;  // peak / (mean sqrt|x|)^2
+};
+
+// Two passes with compensated (Neumaier) sums, so values agree with numpy/scipy to ~1e-14.
+// Moment ratios of a constant signal (m2 = 0) and factors dividing by zero are NaN: callers
+// print them as null / n/a.
+Indicators indicators(const double *x, std::size_t n);
+inline Indicators indicators(const std::vector<double> &x)
+{
+  return indicators(x.data(), x.size());
+}
+
+}  // namespace ohmdem::post
+
+#endif

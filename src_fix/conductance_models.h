@@ -1,0 +1,69 @@
+// Conductances of the network edges, plain C++ (no LIGGGHTS types).
+//
+// Paper eq. 1: inside a conducting particle k, two of its contact spots i, j (areas S_i, S_j,
+// angle theta_ij between them seen from the particle centre) are joined by
+//   C_ij = gamma * S_i * S_j / (2 * V_k * (1 - cos theta_ij)).
+// It diverges as theta -> 0. Two spots of radii c = sqrt(S/pi) on a sphere of radius r
+// cannot be closer than touching, so their centres are at least c_i + c_j apart along the
+// surface: theta >= theta_min = (c_i + c_j) / r (capped at pi). This bound is applied, which
+// keeps C_ij finite. Derivation, limits and tests: doc/conduction_network.md.
+#ifndef OHMDEM_CONDUCTANCE_MODELS_H
+#define OHMDEM_CONDUCTANCE_MODELS_H
+
+#include <cstddef>
+
+#include "conduction_network.h"
+
+namespace ohmdem {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double sphere_volume(double radius);
+// Radius of the circle of area S (the equivalent radius of an elliptic spot).
+double spot_radius(double area);
+// Angle (rad, in [0, pi]) between vectors u and v, accurate also near 0 and pi
+// (atan2(|u x v|, u.v), not acos). 0 if either vector is zero.
+double angle_between(const double u[3], const double v[3]);
+// Smallest admissible angle between two spots on a sphere of radius r: (c_i + c_j) / r,
+// capped at pi.
+double min_spot_angle(double area_i, double area_j, double radius);
+
+struct Eq1Result {
+  double conductance;  // S
+  double theta;        // rad, angle actually used (>= the geometric one)
+  bool clamped;        // theta was raised to min_spot_angle
+};
+
+// Paper eq. 1 with the theta clamp. gamma (S/m), areas (m^2), volume (m^3), theta (rad),
+// radius (m). 1 - cos(theta) is evaluated as 2 sin^2(theta/2) (no cancellation at small
+// angles). Zero (never NaN) if an area is zero, or gamma, volume or radius are not > 0.
+Eq1Result eq1_conductance(double gamma, double area_i, double area_j, double volume, double theta,
+                          double radius);
+
+// Two conductances in series (a split contact: Holm constriction + particle path).
+double series_conductance(double g1, double g2);
+
+// One conducting contact spot of a particle.
+struct ContactSpot {
+  NodeKey node;     // network node of this contact (the electrode's key on an electrode)
+  double point[3];  // contact point (m)
+  double area;      // contact area S (m^2)
+};
+
+struct ConductingParticle {
+  double centre[3];  // m
+  double radius;     // m
+  double volume;     // m^3 (sphere_volume(radius) for a sphere)
+  double gamma;      // electrical conductivity (S/m); 0 for an insulator
+};
+
+// Adds the eq. 1 conductance between every pair of the particle's spots (n(n-1)/2 edges; a
+// particle with two spots is one conductance). Pairs whose nodes coincide (both on one
+// electrode: no current inside) and zero conductances (zero area, gamma = 0) are skipped.
+// Returns the number of pairs whose angle was clamped.
+int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
+                              const ContactSpot *spots, std::size_t n);
+
+}  // namespace ohmdem
+
+#endif
