@@ -4,3 +4,4 @@
 // (the LAMMPS style-header convention). Adding a style = adding its header here.
 #include "fix_bearing_race.h"
 #include "fix_bearing_cage.h"
+#include "compute_network_resistance.h"

@@ -51,7 +51,10 @@ template struct PrivateAccess<ComputeMapTag, &Modify::compute_map>;
 template <typename T>
 Fix *make_fix(LAMMPS *lmp, int narg, char **arg) { return new T(lmp, narg, arg); }
 template <typename T>
-Compute *make_compute(LAMMPS *lmp, int narg, char **arg) { return new T(lmp, narg, arg); }
+Compute *make_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
+{
+  return new T(lmp, iarg, narg, arg);
+}
 
 void register_styles(LAMMPS *lmp)
 {

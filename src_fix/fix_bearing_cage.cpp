@@ -17,7 +17,7 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_property_atom.h"
-#include "fix_property_global.h"
+#include "material_table.h"
 #include "modify.h"
 #include "ordered_reduce.h"
 #include "style_args.h"
@@ -141,20 +141,10 @@ void FixBearingCage::build_model()
   MPI_Allreduce(&rmax, &rg, 1, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&type, &tg, 1, MPI_INT, MPI_MAX, world);
   if (tg < 1) error->fix_error(FLERR, this, "the fix group contains no atoms");
-  const int nt = atom->ntypes;
-  auto *E = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", nt, 0, style));
-  auto *nu = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", nt, 0, style));
-  auto *e = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
-      "coefficientRestitution", "property/global", "peratomtypepair", nt, nt, style));
-  const int b = tg - 1, c = cage_type_ - 1;
+  const ohmdem::MaterialTable mat(lmp, style, true, false);
   try {
     model_ = std::make_unique<ohmdem::CageContactModel>(
-        rg, clearance_,
-        ohmdem::effective_modulus(E->compute_vector(b), nu->compute_vector(b),
-                                  E->compute_vector(c), nu->compute_vector(c)),
-        e->compute_array(b, c));
+        rg, clearance_, mat.E_eff(tg, cage_type_), mat.restitution(tg, cage_type_));
   } catch (const std::exception &ex) {
     error->fix_error(FLERR, this, ex.what());
   }

@@ -18,8 +18,8 @@
 #include "comm.h"
 #include "error.h"
 #include "fix_property_atom.h"
-#include "fix_property_global.h"
 #include "force.h"
+#include "material_table.h"
 #include "modify.h"
 #include "ordered_reduce.h"
 #include "race_contact.h"
@@ -203,24 +203,12 @@ void FixBearingRace::build_model()
   ball_radius_ = rmax;
   ball_type_ = tg[0];
 
-  const int nt = atom->ntypes;
-  auto *E = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("youngsModulus", "property/global", "peratomtype", nt, 0, style));
-  auto *nu = static_cast<FixPropertyGlobal *>(
-      modify->find_fix_property("poissonsRatio", "property/global", "peratomtype", nt, 0, style));
-  auto *e = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
-      "coefficientRestitution", "property/global", "peratomtypepair", nt, nt, style));
-  auto *mu = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
-      "coefficientFriction", "property/global", "peratomtypepair", nt, nt, style));
-  const int b = ball_type_ - 1, r = race_type_ - 1;
-  const double Eb = E->compute_vector(b), Er = E->compute_vector(r);
-  const double nub = nu->compute_vector(b), nur = nu->compute_vector(r);
+  const ohmdem::MaterialTable mat(lmp, style, true, true);
   try {
     model_ = std::make_unique<RaceContactModel>(
         inner_ ? ohmdem::RaceSide::Inner : ohmdem::RaceSide::Outer, ball_radius_, radius_,
-        groove_, ohmdem::effective_modulus(Eb, nub, Er, nur),
-        ohmdem::effective_shear_modulus(Eb, nub, Er, nur), e->compute_array(b, r),
-        mu->compute_array(b, r));
+        groove_, mat.E_eff(ball_type_, race_type_), mat.G_eff(ball_type_, race_type_),
+        mat.restitution(ball_type_, race_type_), mat.friction(ball_type_, race_type_));
   } catch (const std::exception &ex) {
     const std::string msg = std::string("invalid race: ") + ex.what() +
                             " (ball radius " + std::to_string(ball_radius_) + " m, groove " +

@@ -19,7 +19,7 @@ struct TaggedValues {
   std::array<double, N> v;
 };
 
-// Gathers every rank's records on all ranks, sorted by tag (tags are unique).
+// Gathers every rank's records on all ranks, sorted by tag, then by value.
 template <int N>
 std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local, MPI_Comm comm);
 

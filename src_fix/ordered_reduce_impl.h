@@ -13,7 +13,11 @@ std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &l
                 "TaggedValues must be packed to be sent as bytes");
   int nprocs = 1;
   MPI_Comm_size(comm, &nprocs);
-  auto by_tag = [](const TaggedValues<N> &a, const TaggedValues<N> &b) { return a.tag < b.tag; };
+  // Ties (several records of one particle) are ordered by their values, so that the order
+  // never depends on which process sent what.
+  auto by_tag = [](const TaggedValues<N> &a, const TaggedValues<N> &b) {
+    return a.tag != b.tag ? a.tag < b.tag : a.v < b.v;
+  };
   if (nprocs == 1) {  // one rank: no collective needed, same order as with several
     std::vector<TaggedValues<N>> all(local);
     std::sort(all.begin(), all.end(), by_tag);

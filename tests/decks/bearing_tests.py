@@ -141,6 +141,43 @@ def test_kinematics(r, omega, tend, F=320.0):
           "2D: ball centres stay in z = 0 and balls spin about z only")
 
 
+def greenwood_area(fn, A, B, E_eff):
+    """Paper eqs. 2-5 (Greenwood 1985): rigid Hertz contact area from the normal force."""
+    r_eff = (A * B * (A + B) / 2) ** (-1 / 3)
+    c = (3 * fn * r_eff / (4 * E_eff)) ** (1 / 3)
+    return math.pi * c * c
+
+
+def test_resistance(r):
+    # Independent closed form: each ball is one eq. 1 resistor between its outer and inner
+    # contact points, which face each other (theta = pi, 1 - cos = 2):
+    # C = gamma*S_out*S_in/(4*V); the 13 balls carry equal loads, so R = 1/(13*C).
+    out, log = r.run("resistance", tend=0.025, nout=10)
+    sig = read_signal(out)
+    t_slide = sliding_end(sig, 500.0)
+    steady = sig["time"] > t_slide + 0.002
+    R = sig["R"][steady]
+    fluct = (R.max() - R.min()) / R.mean()
+    print(f"     healthy R = {R.mean():.6f} ohm, relative fluctuation (max-min)/mean = {fluct:.2e}")
+    check(np.all(np.isfinite(sig["R"])), "R is finite at every output step")
+    E_eff = 2e11 / (2 * (1 - 0.3**2))
+    gamma = 5.88e7
+    V = 4 / 3 * math.pi * RB**3
+    s_in = greenwood_area(sig["fn_inner_mean"][steady], 1 / RB + 1 / (DINN / 2), 1 / RB - 1 / 0.00655, E_eff)
+    s_out = greenwood_area(sig["fn_outer_mean"][steady], 1 / RB - 1 / (DEXT / 2), 1 / RB - 1 / 0.00665, E_eff)
+    r_ref = 1 / (NB * gamma * s_in * s_out / (4 * V))
+    err = np.max(np.abs(R / r_ref - 1))
+    check(err < 1e-9, f"R equals the parallel sum of 13 eq. 1 ball resistors (max rel. error {err:.1e})")
+    # The paper's healthy value (Machado et al. 2014, Fig. 9b): 1.39 ohm; F = 320 N is the load
+    # that the design note derives for it.
+    check(abs(R.mean() / 1.39 - 1) < 0.03, f"R = {R.mean():.4f} ohm vs the paper's 1.39 ohm "
+          f"({R.mean() / 1.39 - 1:+.2%})")
+    check(fluct < 1e-6, "R is steady after the sliding phase")
+    out2, _ = r.run("resistance_exact", tend=0.025, nout=10, area="exact")
+    Rx = read_signal(out2)["R"][steady].mean()
+    print(f"     area exact: R = {Rx:.6f} ohm ({Rx / R.mean() - 1:+.2%} vs greenwood)")
+
+
 def test_radial(r):
     # Static radial load on the outer ring, a ball on the load line: Stribeck's load-zone
     # sum for zero clearance, Q_max = Fr / sum_j cos^(3/2+1)(psi_j) over loaded balls (point
@@ -215,6 +252,7 @@ def main():
             "kinematics_500": lambda: test_kinematics(r, 500.0, 0.025),
             "kinematics_250": lambda: test_kinematics(r, 250.0, 0.02),
             "radial": lambda: test_radial(r),
+            "resistance": lambda: test_resistance(r),
             "restart": lambda: test_restart(r),
             "mpi": lambda: test_mpi(r),
             "stability": lambda: test_stability(r, a.dt),

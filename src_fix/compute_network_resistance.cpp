@@ -1,0 +1,362 @@
+/* ----------------------------------------------------------------------
+   ohmdem - compute network/resistance. The contacts come from contact_set.*,
+   conductances from conductance_models.*, the solve from conduction_network.*;
+   this file parses, gathers the network from all processes and reports.
+------------------------------------------------------------------------- */
+
+#include "compute_network_resistance.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "comm.h"
+#include "conductance_models.h"
+#include "conduction_network.h"
+#include "style_contact_set.h"
+#include "error.h"
+#include "fix_bearing_race.h"
+#include "fix_property_global.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "network_export.h"
+#include "ordered_reduce.h"
+#include "style_args.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using ohmdem::NodeKey;
+
+namespace {
+constexpr int kVectorSize = 7;
+// Node keys below 2^32 are free for electrodes (conduction_network.h); tags stay below these.
+constexpr std::uint32_t kRaceId0 = 0xFFFFFF00u;  // race k: kRaceId0 + k
+constexpr std::uint32_t kGroupHighId = 0xFFFFFFF0u;
+constexpr std::uint32_t kGroupLowId = 0xFFFFFFF1u;
+enum Member { NONE = 0, HIGH = 1, LOW = 2 };
+
+// Particle records gathered from all processes: x, y, z, radius, type, electrode membership.
+using ParticleRec = ohmdem::TaggedValues<6>;
+// Contact records: other tag (0 for a race), race index, fn, point x y z, semi-axes a b.
+using ContactRec = ohmdem::TaggedValues<8>;
+}  // namespace
+
+ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int narg, char **arg)
+    : Compute(lmp, iarg, narg, arg), network_(std::make_unique<ohmdem::ConductionNetwork>())
+{
+  parse(narg, arg);
+  scalar_flag = 1;
+  extscalar = 0;
+  vector_flag = 1;
+  size_vector = kVectorSize;
+  extvector = 0;
+  peratom_flag = 1;
+  size_peratom_cols = 0;
+  vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
+  vector_atom = nullptr;
+  contacts_ = std::make_unique<ContactSet>(
+      lmp, id, area_exact_ ? ohmdem::AreaModel::Exact : ohmdem::AreaModel::Greenwood,
+      pair_mode_ != 0);
+}
+
+ComputeNetworkResistance::~ComputeNetworkResistance()
+{
+  memory->destroy(vector_atom);
+}
+
+void ComputeNetworkResistance::parse(int narg, char **arg)
+{
+  ohmdem::StyleArgs a(error, "compute network/resistance", narg, arg, 3);
+  bool have_current = false, have_high = false, have_low = false;
+  auto electrode = [&](const std::string &kw, Electrode &e) {
+    const std::string kind = a.word(kw, "race FIX-ID or group GROUP-ID");
+    if (kind == "race") e.kind = ElectrodeKind::Race;
+    else if (kind == "group") e.kind = ElectrodeKind::Group;
+    else a.fail(kw, "race FIX-ID or group GROUP-ID", kind.c_str());
+    e.name = a.word(kw, "race FIX-ID or group GROUP-ID");
+  };
+  while (!a.done()) {
+    const std::string kw = a.word("keyword", "a keyword");
+    if (kw == "current") {
+      current_ = a.positive(kw, "the injected current I > 0 (A)");
+      have_current = true;
+    } else if (kw == "high") {
+      electrode(kw, high_);
+      have_high = true;
+    } else if (kw == "low") {
+      electrode(kw, low_);
+      have_low = true;
+    } else if (kw == "area") {
+      const std::string m = a.word(kw, "greenwood or exact");
+      if (m == "greenwood") area_exact_ = false;
+      else if (m == "exact") area_exact_ = true;
+      else a.fail(kw, "greenwood or exact", m.c_str());
+    } else if (kw == "model") {
+      const std::string m = a.word(kw, "eq1, holm or eq1+holm");
+      if (m == "eq1") model_ = Model::Eq1;
+      else if (m == "holm") model_ = Model::Holm;
+      else if (m == "eq1+holm") model_ = Model::Eq1Holm;
+      else a.fail(kw, "eq1, holm or eq1+holm", m.c_str());
+    } else if (kw == "solver") {
+      const std::string m = a.word(kw, "auto, direct or cg");
+      if (m == "auto") solver_ = static_cast<int>(ohmdem::SolverKind::Auto);
+      else if (m == "direct") solver_ = static_cast<int>(ohmdem::SolverKind::Direct);
+      else if (m == "cg") solver_ = static_cast<int>(ohmdem::SolverKind::ConjugateGradient);
+      else a.fail(kw, "auto, direct or cg", m.c_str());
+    } else if (kw == "pair") {
+      pair_mode_ = a.yes_no(kw) ? 1 : 0;
+    } else if (kw == "netlist") {
+      netlist_ = a.word(kw, "a file name");
+    } else {
+      a.unknown(kw.c_str(), "current high low area model solver pair netlist");
+    }
+  }
+  if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
+  if (!have_high) a.fail("high", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
+  if (!have_low) a.fail("low", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
+  if (high_.kind == low_.kind && high_.name == low_.name)
+    a.fail("low", "an electrode other than the high one", low_.name.c_str());
+}
+
+void ComputeNetworkResistance::init()
+{
+  // auto: particle–particle contacts when a granular pair style computes them.
+  if (pair_mode_ < 0) pair_mode_ = 1;
+  contacts_->init(groupbit);
+  auto resolve = [&](const char *kw, Electrode &e) {
+    if (e.kind == ElectrodeKind::Race) {
+      const auto &races = contacts_->races();
+      e.index = -1;
+      for (std::size_t k = 0; k < races.size(); ++k)
+        if (e.name == races[k]->id) e.index = static_cast<int>(k);
+      if (e.index < 0) {
+        const std::string msg = std::string("compute network/resistance: keyword '") + kw +
+                                "': no fix bearing/race with ID '" + e.name + "'";
+        error->all(FLERR, msg.c_str());
+      }
+    } else {
+      const int g = group->find(e.name.c_str());
+      if (g < 0) {
+        const std::string msg = std::string("compute network/resistance: keyword '") + kw +
+                                "': no group '" + e.name + "'";
+        error->all(FLERR, msg.c_str());
+      }
+      e.index = group->bitmask[g];
+    }
+  };
+  resolve("high", high_);
+  resolve("low", low_);
+  conductivity_ = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+      "electricalConductivity", "property/global", "peratomtype", atom->ntypes, 0, style));
+  for (int t = 1; t <= atom->ntypes; ++t) {
+    const double g = conductivity_->compute_vector(t - 1);
+    if (!(g >= 0.0) || !std::isfinite(g)) {
+      const std::string msg = "compute network/resistance: electricalConductivity of type " +
+                              std::to_string(t) + " must be >= 0 (S/m; 0 = insulator), got " +
+                              std::to_string(g);
+      error->all(FLERR, msg.c_str());
+    }
+  }
+  ohmdem::SolverOptions opt = network_->options();
+  opt.kind = static_cast<ohmdem::SolverKind>(solver_);
+  network_->set_options(opt);
+  evaluated_step_ = -1;
+}
+
+void ComputeNetworkResistance::evaluate()
+{
+  if (evaluated_step_ == update->ntimestep) return;
+  evaluated_step_ = update->ntimestep;
+
+  // 1. This process's particles and contacts.
+  std::vector<ContactSet::Contact> local;
+  contacts_->collect(local);
+  const int high_bit = high_.kind == ElectrodeKind::Group ? high_.index : 0;
+  const int low_bit = low_.kind == ElectrodeKind::Group ? low_.index : 0;
+  std::vector<ParticleRec> my_particles;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const int m = (atom->mask[i] & high_bit) ? HIGH : (atom->mask[i] & low_bit) ? LOW : NONE;
+    my_particles.push_back({static_cast<std::int64_t>(atom->tag[i]),
+                            {atom->x[i][0], atom->x[i][1], atom->x[i][2], atom->radius[i],
+                             static_cast<double>(atom->type[i]), static_cast<double>(m)}});
+  }
+  std::vector<ContactRec> my_contacts;
+  for (const auto &c : local)
+    my_contacts.push_back({static_cast<std::int64_t>(c.tag1),
+                           {static_cast<double>(c.tag2), static_cast<double>(c.race), c.fn,
+                            c.point[0], c.point[1], c.point[2], c.ellipse.a, c.ellipse.b}});
+
+  // 2. The whole network on every process, in tag order: same numbers for any process count.
+  const auto particles = ohmdem::gather_by_tag<6>(my_particles, world);
+  const auto contacts = ohmdem::gather_by_tag<8>(my_contacts, world);
+  auto find = [&](std::int64_t tag) -> const ParticleRec * {
+    auto it = std::lower_bound(particles.begin(), particles.end(), tag,
+                               [](const ParticleRec &p, std::int64_t t) { return p.tag < t; });
+    return it != particles.end() && it->tag == tag ? &*it : nullptr;
+  };
+  const auto &races = contacts_->races();
+  auto race_key = [](int k) { return ohmdem::electrode_key(kRaceId0 + static_cast<std::uint32_t>(k)); };
+  auto member_key = [](int m) {
+    return ohmdem::electrode_key(m == HIGH ? kGroupHighId : kGroupLowId);
+  };
+  auto gamma_of = [&](int type) { return conductivity_->compute_vector(type - 1); };
+  auto particle_node = [](std::int64_t tag) { return NodeKey(static_cast<std::uint32_t>(tag)) << 32; };
+
+  // Node of particle p's side of a contact with `other` (a tag, or kRaceId0 + race).
+  auto side_node = [&](const ParticleRec &p, std::uint32_t other, NodeKey shared) -> NodeKey {
+    const int m = static_cast<int>(p.v[5]);
+    if (m != NONE) return member_key(m);
+    if (model_ == Model::Holm) return particle_node(p.tag);
+    if (model_ == Model::Eq1Holm) return ohmdem::contact_side_key(static_cast<std::uint32_t>(p.tag), other);
+    return shared;
+  };
+
+  struct Spot {
+    std::int64_t tag;
+    ohmdem::ContactSpot spot;
+  };
+  std::vector<Spot> spots;
+  ohmdem::ConductionNetwork &net = *network_;
+  net.clear();
+  int conducting_contacts = 0;
+  for (const auto &c : contacts) {
+    const ParticleRec *p = find(c.tag);
+    if (!p) continue;
+    const double a = c.v[6], b = c.v[7];
+    const double area = M_PI * a * b;
+    const int race = static_cast<int>(c.v[1]);
+    const double gp = gamma_of(static_cast<int>(p->v[4]));
+    double go = 0.0;
+    NodeKey shared, other_side;
+    std::uint32_t other_id;
+    const ParticleRec *q = nullptr;
+    if (race >= 0) {
+      other_id = kRaceId0 + static_cast<std::uint32_t>(race);
+      shared = other_side = race_key(race);
+      go = gamma_of(races[race]->race_type());
+    } else {
+      q = find(static_cast<std::int64_t>(c.v[0]));
+      if (!q) continue;  // the other particle is outside the group
+      other_id = static_cast<std::uint32_t>(q->tag);
+      const int mp = static_cast<int>(p->v[5]), mq = static_cast<int>(q->v[5]);
+      shared = mp != NONE ? member_key(mp)
+               : mq != NONE ? member_key(mq)
+                            : ohmdem::contact_key(static_cast<std::uint32_t>(p->tag), other_id);
+      go = gamma_of(static_cast<int>(q->v[4]));
+      other_side = side_node(*q, static_cast<std::uint32_t>(p->tag), shared);
+    }
+    if (!(gp > 0.0) || !(go > 0.0)) continue;  // an insulator on either side: no current
+    ++conducting_contacts;
+    const NodeKey mine = side_node(*p, other_id, shared);
+    const double pt[3] = {c.v[3], c.v[4], c.v[5]};
+    spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}});
+    if (q) spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}});
+    if (model_ != Model::Eq1) {
+      // Holm constriction of the spot, in series between the two bodies (design.md).
+      const double rho = 0.5 * (1.0 / gp + 1.0 / go);
+      const double rc = ohmdem::holm_resistance(rho, a, b);
+      if (std::isfinite(rc) && rc > 0.0) net.add_conductance(mine, other_side, 1.0 / rc);
+    }
+  }
+
+  // 3. Paper eq. 1 inside every conducting particle that is not part of an electrode.
+  std::stable_sort(spots.begin(), spots.end(),
+                   [](const Spot &x, const Spot &y) { return x.tag < y.tag; });
+  if (model_ != Model::Holm) {
+    std::vector<ohmdem::ContactSpot> mine;
+    for (std::size_t s = 0; s < spots.size();) {
+      std::size_t e = s;
+      while (e < spots.size() && spots[e].tag == spots[s].tag) ++e;
+      const ParticleRec *p = find(spots[s].tag);
+      if (p && static_cast<int>(p->v[5]) == NONE) {
+        mine.clear();
+        for (std::size_t k = s; k < e; ++k) mine.push_back(spots[k].spot);
+        ohmdem::ConductingParticle cp{{p->v[0], p->v[1], p->v[2]}, p->v[3],
+                                      ohmdem::sphere_volume(p->v[3]), gamma_of(static_cast<int>(p->v[4]))};
+        ohmdem::add_particle_conductances(net, cp, mine.data(), mine.size());
+      }
+      s = e;
+    }
+  }
+
+  // 4. Solve: current into `high`, `low` at 0 V.
+  auto electrode_node = [&](const Electrode &e, int member) {
+    return e.kind == ElectrodeKind::Race ? race_key(e.index) : member_key(member);
+  };
+  net.set_electrodes(electrode_node(high_, HIGH), electrode_node(low_, LOW));
+  const ohmdem::NetworkSolution sol = net.solve(current_);
+  result_[0] = sol.resistance;
+  result_[1] = current_;
+  result_[2] = sol.voltage_drop;
+  result_[3] = conducting_contacts;
+  result_[4] = sol.floating_nodes_dropped;
+  result_[5] = sol.iterations;
+  result_[6] = sol.relative_residual;
+  if (!sol.connected && !warned_no_path_ && comm->me == 0) {
+    error->warning(FLERR, "compute network/resistance: no conducting path between the "
+                          "electrodes: R = inf (said once)");
+    warned_no_path_ = true;
+  }
+
+  // 5. Per-atom potential: mean over the particle's contact nodes (0 without a contact).
+  if (atom->nmax > nmax_) {
+    nmax_ = atom->nmax;
+    memory->destroy(vector_atom);
+    memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
+  }
+  for (int i = 0; i < atom->nlocal; ++i) {
+    vector_atom[i] = 0.0;
+    if (!(atom->mask[i] & groupbit)) continue;
+    const std::int64_t tag = atom->tag[i];
+    auto lo = std::lower_bound(spots.begin(), spots.end(), tag,
+                               [](const Spot &x, std::int64_t t) { return x.tag < t; });
+    double sum = 0.0;
+    int n = 0;
+    for (; lo != spots.end() && lo->tag == tag; ++lo, ++n) sum += net.potential(lo->spot.node);
+    vector_atom[i] = n ? sum / n : 0.0;
+  }
+
+  if (!netlist_.empty() && comm->me == 0) {
+    std::ofstream os(netlist_);
+    if (!os) {
+      const std::string msg = "compute network/resistance: keyword 'netlist': cannot open '" +
+                              netlist_ + "' for writing";
+      error->one(FLERR, msg.c_str());
+    }
+    ohmdem::write_spice_netlist(os, net, current_);
+  }
+}
+
+double ComputeNetworkResistance::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  evaluate();
+  scalar = result_[0];
+  return scalar;
+}
+
+void ComputeNetworkResistance::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+  evaluate();
+  std::copy(result_, result_ + kVectorSize, vector);
+}
+
+void ComputeNetworkResistance::compute_peratom()
+{
+  invoked_peratom = update->ntimestep;
+  evaluate();
+}
+
+double ComputeNetworkResistance::memory_usage()
+{
+  return static_cast<double>(nmax_) * sizeof(double);
+}

@@ -1,0 +1,70 @@
+/* ----------------------------------------------------------------------
+   ohmdem - compute network/resistance: the electrical resistance of a
+   contact network between two electrodes (paper eq. 1, Kirchhoff + Ohm).
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+
+ComputeStyle(network/resistance,ComputeNetworkResistance)
+
+#else
+
+#ifndef LMP_COMPUTE_NETWORK_RESISTANCE_H
+#define LMP_COMPUTE_NETWORK_RESISTANCE_H
+
+#include <memory>
+#include <string>
+
+#include "compute.h"
+
+namespace ohmdem {
+class ConductionNetwork;
+}
+
+namespace LAMMPS_NS {
+
+class ContactSet;
+
+class ComputeNetworkResistance : public Compute {
+ public:
+  ComputeNetworkResistance(class LAMMPS *, int &iarg, int, char **);
+  ~ComputeNetworkResistance() override;
+  void init() override;
+  double compute_scalar() override;
+  void compute_vector() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  enum class Model { Eq1, Holm, Eq1Holm };
+  enum class ElectrodeKind { Race, Group };
+  struct Electrode {
+    ElectrodeKind kind = ElectrodeKind::Race;
+    std::string name;
+    int index = -1;  // race: index in the contact set's races; group: group bit
+  };
+
+  void parse(int narg, char **arg);
+  void evaluate();  // builds and solves the network once per time step
+
+  double current_ = 0;
+  Electrode high_, low_;
+  Model model_ = Model::Eq1;
+  int solver_ = 0;  // ohmdem::SolverKind
+  bool area_exact_ = false;
+  int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
+  std::string netlist_;
+
+  std::unique_ptr<ContactSet> contacts_;
+  std::unique_ptr<ohmdem::ConductionNetwork> network_;
+  class FixPropertyGlobal *conductivity_ = nullptr;
+  bigint evaluated_step_ = -1;
+  double result_[7] = {0, 0, 0, 0, 0, 0, 0};
+  bool warned_no_path_ = false;
+  int nmax_ = 0;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
