@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""Validation of compute network/resistance on the decks of inputs/validation/.
+
+chain: R against the closed-form series sum of eq. 1 resistors, computed here from the sphere
+positions with Hertz theory (independent of our C++). packing: R against ngspice run on the
+netlist the compute exports. Usage: validation_tests.py TEST --exe OHMDEM --src SOURCE_DIR
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+failed = False
+
+
+def check(cond, msg):
+    global failed
+    print(("ok   " if cond else "FAIL ") + msg)
+    failed |= not cond
+
+
+def run(exe, deck, out, nprocs=1, **var):
+    os.makedirs(out, exist_ok=True)
+    cmd = [exe, "-in", deck, "-log", os.path.join(out, "log.txt"), "-screen", "none",
+           "-var", "out", out]
+    for k, v in var.items():
+        cmd += ["-var", k, str(v)]
+    if nprocs > 1:
+        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+    res = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
+    log = open(os.path.join(out, "log.txt")).read()
+    if res.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)}\n{res.stdout[-2000:]}{res.stderr[-2000:]}{log[-2000:]}")
+    return log
+
+
+def chain_reference(dump, gamma, E=2e11, nu=0.3):
+    """Series sum of eq. 1 resistors of the inner spheres, from the positions (Hertz)."""
+    rows = []
+    with open(dump) as f:
+        lines = f.read().splitlines()
+    start = max(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS"))
+    for l in lines[start + 1:]:
+        rows.append([float(w) for w in l.split()])
+    rows = np.array(sorted(rows))
+    z, r = rows[:, 1], rows[:, 2]
+    e_star = 1 / (2 * (1 - nu**2) / E)
+    areas = []
+    for k in range(len(z) - 1):
+        delta = r[k] + r[k + 1] - (z[k + 1] - z[k])
+        if delta <= 0:
+            return math.inf
+        rstar = r[k] * r[k + 1] / (r[k] + r[k + 1])
+        fn = 4 / 3 * e_star * math.sqrt(rstar) * delta**1.5  # LIGGGHTS hertz, at rest
+        c = (3 * fn * rstar / (4 * e_star)) ** (1 / 3)         # paper eq. 2 (sphere: r_eff = R*)
+        areas.append(math.pi * c * c)
+    total = 0.0
+    for k in range(1, len(z) - 1):  # inner spheres: contacts k-1 and k face each other
+        V = 4 / 3 * math.pi * r[k] ** 3
+        total += 1 / (gamma * areas[k - 1] * areas[k] / (2 * V * (1 - math.cos(math.pi))))
+    return total
+
+
+def read_R(log, key):
+    return float(re.search(rf"^{key} (\S+)", log, re.M).group(1))
+
+
+def ngspice_R(cir, current):
+    raw = cir + ".raw"
+    env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
+    res = subprocess.run(["ngspice", "-b", "-r", raw, cir], capture_output=True, text=True,
+                         env=env)
+    names, vals, mode = [], [], None
+    for l in open(raw).read().splitlines():
+        if l.startswith("Variables:"):
+            mode = "v"
+        elif l.startswith("Values:"):
+            mode = "x"
+        elif mode == "v" and l.startswith("\t"):
+            names.append(l.split()[1])
+        elif mode == "x":
+            vals += [float(t) for t in l.split()]
+    if res.returncode != 0 or "v(ehigh)" not in names:
+        sys.exit(f"FAIL: ngspice on {cir}: rc {res.returncode}\n{res.stdout[-2000:]}")
+    return vals[names.index("v(ehigh)") + 1] / current
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("test")
+    p.add_argument("--exe", required=True)
+    p.add_argument("--src", required=True)
+    a = p.parse_args()
+    exe = os.path.abspath(a.exe)
+    val = os.path.join(os.path.abspath(a.src), "inputs", "validation")
+    with tempfile.TemporaryDirectory(prefix=f"ohmdem_val_{a.test}_") as wd:
+        if a.test == "chain":
+            for n in (1, 10, 40):
+                out = os.path.join(wd, f"chain{n}")
+                log = run(exe, os.path.join(val, "in.chain"), out, N=n)
+                R = read_R(log, "CHAIN_R")
+                ref = chain_reference(os.path.join(out, "atoms.dump"), 5.88e7)
+                check(abs(R / ref - 1) < 1e-10,
+                      f"chain of {n}: R = {R:.12g} ohm, closed-form series sum {ref:.12g} "
+                      f"(rel. diff {R / ref - 1:+.1e})")
+        elif a.test == "chain_no_path":
+            out = os.path.join(wd, "gap")
+            log = run(exe, os.path.join(val, "in.chain"), out, N=10, gapat=5)
+            check(read_R(log, "CHAIN_R") == math.inf, "an open contact in the chain: R = inf")
+            check("no conducting path between the electrodes" in log, "said in the log")
+            sig = open(os.path.join(out, "signal.txt")).read()
+            check("nan" not in sig.lower(), "no NaN in signal.txt")
+        elif a.test in ("packing", "packing_contrast"):
+            extra = {"gamma2": 5.88e-5} if a.test == "packing_contrast" else {}
+            out = os.path.join(wd, a.test)
+            log = run(exe, os.path.join(val, "in.packing"), out, **extra)
+            R = read_R(log, "PACKING_R")
+            n = int(re.search(r"^PACKING_R \S+ contacts (\S+)", log, re.M).group(1))
+            ref = ngspice_R(os.path.join(out, "network.cir"), 0.1)
+            what = "conductivities 1e12 apart, " if extra else ""
+            check(abs(R / ref - 1) < 1e-9,
+                  f"packing ({what}{n} contacts): R = {R:.15g} ohm, ngspice {ref:.15g} "
+                  f"(rel. diff {R / ref - 1:+.1e})")
+        elif a.test == "packing_mpi":
+            R = []
+            for nprocs in (1, 2):
+                out = os.path.join(wd, f"np{nprocs}")
+                R.append(read_R(run(exe, os.path.join(val, "in.packing"), out, nprocs=nprocs),
+                                "PACKING_R"))
+            check(abs(R[1] / R[0] - 1) < 1e-12,
+                  f"packing: R with 1 and 2 processes {R[0]:.17g} / {R[1]:.17g}")
+        else:
+            sys.exit(f"unknown test {a.test}")
+    if failed:
+        sys.exit(1)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
