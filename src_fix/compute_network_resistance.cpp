@@ -114,8 +114,10 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       pair_mode_ = a.yes_no(kw) ? 1 : 0;
     } else if (kw == "netlist") {
       netlist_ = a.word(kw, "a file name");
+    } else if (kw == "vtk") {
+      vtk_ = a.word(kw, "a file name");
     } else {
-      a.unknown(kw.c_str(), "current high low area model solver pair netlist");
+      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk");
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
@@ -224,6 +226,7 @@ void ComputeNetworkResistance::evaluate()
     ohmdem::ContactSpot spot;
   };
   std::vector<Spot> spots;
+  std::vector<ohmdem::VtkEdge> drawn;  // only with `vtk FILE`
   ohmdem::ConductionNetwork &net = *network_;
   net.clear();
   int conducting_contacts = 0;
@@ -263,7 +266,12 @@ void ComputeNetworkResistance::evaluate()
       // Holm constriction of the spot, in series between the two bodies (design.md).
       const double rho = 0.5 * (1.0 / gp + 1.0 / go);
       const double rc = ohmdem::holm_resistance(rho, a, b);
-      if (std::isfinite(rc) && rc > 0.0) net.add_conductance(mine, other_side, 1.0 / rc);
+      if (std::isfinite(rc) && rc > 0.0) {
+        net.add_conductance(mine, other_side, 1.0 / rc);
+        if (!vtk_.empty())
+          drawn.push_back({mine, other_side, 1.0 / rc, {pt[0], pt[1], pt[2]},
+                           {pt[0], pt[1], pt[2]}, {area, area, 1.0}});
+      }
     }
   }
 
@@ -281,7 +289,13 @@ void ComputeNetworkResistance::evaluate()
         for (std::size_t k = s; k < e; ++k) mine.push_back(spots[k].spot);
         ohmdem::ConductingParticle cp{{p->v[0], p->v[1], p->v[2]}, p->v[3],
                                       ohmdem::sphere_volume(p->v[3]), gamma_of(static_cast<int>(p->v[4]))};
-        ohmdem::add_particle_conductances(net, cp, mine.data(), mine.size());
+        ohmdem::EdgeVisitor draw;
+        if (!vtk_.empty())
+          draw = [&](const ohmdem::ContactSpot &x, const ohmdem::ContactSpot &y, double g) {
+            drawn.push_back({x.node, y.node, g, {x.point[0], x.point[1], x.point[2]},
+                             {y.point[0], y.point[1], y.point[2]}, {x.area, y.area, 0.0}});
+          };
+        ohmdem::add_particle_conductances(net, cp, mine.data(), mine.size(), draw);
       }
       s = e;
     }
@@ -332,6 +346,19 @@ void ComputeNetworkResistance::evaluate()
       error->one(FLERR, msg.c_str());
     }
     ohmdem::write_spice_netlist(os, net, current_);
+  }
+  if (!vtk_.empty() && comm->me == 0) {
+    std::ofstream os(vtk_);
+    if (!os) {
+      const std::string msg = "compute network/resistance: keyword 'vtk': cannot open '" + vtk_ +
+                              "' for writing";
+      error->one(FLERR, msg.c_str());
+    }
+    // Cells: eq. 1 conductances inside particles (drawn between the two contact points) and
+    // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
+    ohmdem::VtkOptions opt;
+    opt.edge_scalar_names = {"area_a", "area_b", "holm"};
+    ohmdem::write_vtk_network(os, net, std::move(drawn), opt);
   }
 }
 

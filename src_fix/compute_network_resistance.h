@@ -53,7 +53,7 @@ class ComputeNetworkResistance : public Compute {
   int solver_ = 0;  // ohmdem::SolverKind
   bool area_exact_ = false;
   int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
-  std::string netlist_;
+  std::string netlist_, vtk_;
 
   std::unique_ptr<ContactSet> contacts_;
   std::unique_ptr<ohmdem::ConductionNetwork> network_;

@@ -60,7 +60,7 @@ double series_conductance(double g1, double g2)
 }
 
 int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
-                              const ContactSpot *spots, std::size_t n)
+                              const ContactSpot *spots, std::size_t n, const EdgeVisitor &on_edge)
 {
   int clamped = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -73,7 +73,9 @@ int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &
       const Eq1Result r = eq1_conductance(p.gamma, spots[i].area, spots[j].area, p.volume,
                                           angle_between(ui, uj), p.radius);
       clamped += r.clamped;
-      if (r.conductance > 0.0) net.add_conductance(spots[i].node, spots[j].node, r.conductance);
+      if (!(r.conductance > 0.0)) continue;
+      net.add_conductance(spots[i].node, spots[j].node, r.conductance);
+      if (on_edge) on_edge(spots[i], spots[j], r.conductance);
     }
   }
   return clamped;

@@ -11,6 +11,7 @@
 #define OHMDEM_CONDUCTANCE_MODELS_H
 
 #include <cstddef>
+#include <functional>
 
 #include "conduction_network.h"
 
@@ -61,8 +62,11 @@ struct ConductingParticle {
 // particle with two spots is one conductance). Pairs whose nodes coincide (both on one
 // electrode: no current inside) and zero conductances (zero area, gamma = 0) are skipped.
 // Returns the number of pairs whose angle was clamped.
+// `on_edge`, if given, is told every conductance added (e.g. to draw it in a VTK file).
+using EdgeVisitor = std::function<void(const ContactSpot &, const ContactSpot &, double g)>;
 int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
-                              const ContactSpot *spots, std::size_t n);
+                              const ContactSpot *spots, std::size_t n,
+                              const EdgeVisitor &on_edge = nullptr);
 
 }  // namespace ohmdem
 

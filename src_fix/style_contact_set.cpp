@@ -18,7 +18,6 @@ ContactSet::ContactSet(LAMMPS *lmp, const std::string &owner_id, ohmdem::AreaMod
                        bool use_pair)
     : Pointers(lmp),
       owner_id_(owner_id),
-      pgl_id_(owner_id + "_ohmdem_pairs"),
       model_(model),
       want_pair_(use_pair)
 {
@@ -45,10 +44,23 @@ void ContactSet::init(int groupbit)
       error->all(FLERR, ("compute " + owner_id_ +
                          ": keyword 'pair yes' needs a granular pair style (pair_style gran ...)")
                             .c_str());
-    const char *arg[] = {pgl_id_.c_str(), "all", "pair/gran/local", "pos", "id", "force_normal"};
-    modify->add_compute(6, const_cast<char **>(arg));
-    pgl_ = static_cast<ComputePairGranLocal *>(
-        modify->compute[modify->find_compute(pgl_id_.c_str())]);
+    // LIGGGHTS' granular pair style serves a single pair/gran/local compute: share it.
+    for (int k = 0; k < modify->ncompute && !pgl_; ++k)
+      if (std::string(modify->compute[k]->style) == "pair/gran/local")
+        pgl_ = static_cast<ComputePairGranLocal *>(modify->compute[k]);
+    if (!pgl_) {
+      const char *arg[] = {"ohmdem_pair_contacts", "all", "pair/gran/local", "pos", "id",
+                           "force_normal"};
+      modify->add_compute(6, const_cast<char **>(arg));
+      pgl_ = static_cast<ComputePairGranLocal *>(
+          modify->compute[modify->find_compute("ohmdem_pair_contacts")]);
+    }
+    if (pgl_->offset_id1() < 0 || pgl_->offset_fn() < 0)
+      error->all(FLERR, ("compute " + owner_id_ + ": the compute pair/gran/local of this run ('" +
+                         std::string(pgl_->id) +
+                         "') must include the keywords id and force_normal: LIGGGHTS allows "
+                         "only one, and ohmdem reads particle contacts from it")
+                            .c_str());
   }
 }
 

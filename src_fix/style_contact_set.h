@@ -47,7 +47,6 @@ class ContactSet : protected Pointers {
   void collect_pairs(std::vector<Contact> &out);
 
   std::string owner_id_;
-  std::string pgl_id_;
   ohmdem::AreaModel model_;
   bool want_pair_;
   int groupbit_ = 0;

@@ -177,6 +177,31 @@ def test_resistance(r):
     Rx = read_signal(out2)["R"][steady].mean()
     print(f"     area exact: R = {Rx:.6f} ohm ({Rx / R.mean() - 1:+.2%} vs greenwood)")
 
+    # Holm: a ball between two races is the series sum of its two constrictions
+    # R_c = rho*K(e^2)/(pi*a) (elliptic spot, Holm 1967; K from scipy), 13 balls in parallel.
+    from scipy.special import ellipk
+
+    def holm(fn, A, B):
+        c = np.sqrt(greenwood_area(fn, A, B, E_eff) / math.pi)
+        kappa = (max(A, B) / min(A, B)) ** (2 / 3)
+        a, b = c * math.sqrt(kappa), c / math.sqrt(kappa)
+        return ellipk(1 - (b / a) ** 2) / (gamma * math.pi * a)
+
+    geo_in = (1 / RB + 1 / (DINN / 2), 1 / RB - 1 / 0.00655)
+    geo_out = (1 / RB - 1 / (DEXT / 2), 1 / RB - 1 / 0.00665)
+    for model in ("holm", "eq1+holm"):
+        out3, _ = r.run(f"resistance_{model}", tend=0.025, nout=10, emodel=model)
+        s3 = read_signal(out3)
+        rc = (holm(s3["fn_inner_mean"][steady], *geo_in) + holm(s3["fn_outer_mean"][steady], *geo_out))
+        if model == "eq1+holm":
+            s_in3 = greenwood_area(s3["fn_inner_mean"][steady], *geo_in, E_eff)
+            s_out3 = greenwood_area(s3["fn_outer_mean"][steady], *geo_out, E_eff)
+            rc = rc + 4 * V / (gamma * s_in3 * s_out3)
+        ref3 = rc / NB
+        err3 = np.max(np.abs(s3["R"][steady] / ref3 - 1))
+        check(err3 < 1e-9, f"model {model}: R = {s3['R'][steady].mean():.6g} ohm = series sum per "
+              f"ball, 13 in parallel (max rel. error {err3:.1e})")
+
 
 def test_radial(r):
     # Static radial load on the outer ring, a ball on the load line: Stribeck's load-zone

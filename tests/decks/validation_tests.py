@@ -40,8 +40,9 @@ def run(exe, deck, out, nprocs=1, **var):
     return log
 
 
-def chain_reference(dump, gamma, E=2e11, nu=0.3):
-    """Series sum of eq. 1 resistors of the inner spheres, from the positions (Hertz)."""
+def chain_reference(dump, gamma, E=2e11, nu=0.3, model="eq1", areas_out=None):
+    """Closed form of the chain from the sphere positions (Hertz): the series sum of the eq. 1
+    resistors of the inner spheres and/or of the Holm constrictions rho/(2a) of the contacts."""
     rows = []
     with open(dump) as f:
         lines = f.read().splitlines()
@@ -60,11 +61,34 @@ def chain_reference(dump, gamma, E=2e11, nu=0.3):
         fn = 4 / 3 * e_star * math.sqrt(rstar) * delta**1.5  # LIGGGHTS hertz, at rest
         c = (3 * fn * rstar / (4 * e_star)) ** (1 / 3)         # paper eq. 2 (sphere: r_eff = R*)
         areas.append(math.pi * c * c)
+    if areas_out is not None:
+        areas_out.extend(areas)
     total = 0.0
-    for k in range(1, len(z) - 1):  # inner spheres: contacts k-1 and k face each other
-        V = 4 / 3 * math.pi * r[k] ** 3
-        total += 1 / (gamma * areas[k - 1] * areas[k] / (2 * V * (1 - math.cos(math.pi))))
+    if model in ("eq1", "eq1+holm"):
+        for k in range(1, len(z) - 1):  # inner spheres: contacts k-1 and k face each other
+            V = 4 / 3 * math.pi * r[k] ** 3
+            total += 1 / (gamma * areas[k - 1] * areas[k] / (2 * V * (1 - math.cos(math.pi))))
+    if model in ("holm", "eq1+holm"):  # Holm (1967): rho/(2a) for a circular spot
+        total += sum(1 / gamma / (2 * math.sqrt(S / math.pi)) for S in areas)
     return total
+
+
+def read_local(path):
+    rows, take = [], False
+    for l in open(path).read().splitlines():
+        if l.startswith("ITEM: ENTRIES"):
+            rows, take = [], True
+        elif l.startswith("ITEM:"):
+            take = False
+        elif take and l.strip():
+            rows.append([float(w) for w in l.split()])
+    return np.array(rows)
+
+
+def areas_ref_10(wd):
+    areas = []
+    chain_reference(os.path.join(wd, "chain10_eq1", "atoms.dump"), 5.88e7, areas_out=areas)
+    return areas
 
 
 def read_R(log, key):
@@ -101,14 +125,24 @@ def main():
     val = os.path.join(os.path.abspath(a.src), "inputs", "validation")
     with tempfile.TemporaryDirectory(prefix=f"ohmdem_val_{a.test}_") as wd:
         if a.test == "chain":
-            for n in (1, 10, 40):
-                out = os.path.join(wd, f"chain{n}")
-                log = run(exe, os.path.join(val, "in.chain"), out, N=n)
-                R = read_R(log, "CHAIN_R")
-                ref = chain_reference(os.path.join(out, "atoms.dump"), 5.88e7)
-                check(abs(R / ref - 1) < 1e-10,
-                      f"chain of {n}: R = {R:.12g} ohm, closed-form series sum {ref:.12g} "
-                      f"(rel. diff {R / ref - 1:+.1e})")
+            for model, sizes in (("eq1", (1, 10, 40)), ("holm", (0, 1, 10)), ("eq1+holm", (1, 10))):
+                for n in sizes:
+                    out = os.path.join(wd, f"chain{n}_{model}")
+                    log = run(exe, os.path.join(val, "in.chain"), out, N=n, emodel=model)
+                    R = read_R(log, "CHAIN_R")
+                    areas = []
+                    ref = chain_reference(os.path.join(out, "atoms.dump"), 5.88e7, model=model,
+                                          areas_out=areas)
+                    what = "a single contact" if n == 0 else f"chain of {n}"
+                    check(abs(R / ref - 1) < 1e-10,
+                          f"{model}, {what}: R = {R:.12g} ohm, closed form {ref:.12g} "
+                          f"(rel. diff {R / ref - 1:+.1e})")
+            # compute contact/area: one row per contact, S = pi*R*delta (Hertz)
+            loc = read_local(os.path.join(wd, "chain10_eq1", "contacts.local"))
+            loc = loc[np.argsort(loc[:, 0])]
+            err = np.max(np.abs(loc[:, 6] / np.array(areas_ref_10(wd)) - 1))
+            check(len(loc) == 11 and err < 1e-10,
+                  f"compute contact/area: {len(loc)} rows, areas match Hertz (max rel. error {err:.1e})")
         elif a.test == "chain_no_path":
             out = os.path.join(wd, "gap")
             log = run(exe, os.path.join(val, "in.chain"), out, N=10, gapat=5)
@@ -127,6 +161,11 @@ def main():
             check(abs(R / ref - 1) < 1e-9,
                   f"packing ({what}{n} contacts): R = {R:.15g} ohm, ngspice {ref:.15g} "
                   f"(rel. diff {R / ref - 1:+.1e})")
+            vtk = open(os.path.join(out, "network.vtk")).read()
+            m = re.search(r"^LINES (\d+)", vtk, re.M)
+            check(vtk.startswith("# vtk DataFile") and m and int(m.group(1)) > n
+                  and "SCALARS current" in vtk and "SCALARS potential" in vtk,
+                  f"VTK network written ({m.group(1) if m else 0} line cells)")
         elif a.test == "packing_mpi":
             R = []
             for nprocs in (1, 2):
