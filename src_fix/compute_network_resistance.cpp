@@ -116,8 +116,10 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       netlist_ = a.word(kw, "a file name");
     } else if (kw == "vtk") {
       vtk_ = a.word(kw, "a file name");
+    } else if (kw == "closedform") {
+      closed_form_ = a.yes_no(kw);
     } else {
-      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk");
+      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk closedform");
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
@@ -176,7 +178,114 @@ void ComputeNetworkResistance::evaluate()
 {
   if (evaluated_step_ == update->ntimestep) return;
   evaluated_step_ = update->ntimestep;
+  if (atom->nmax > nmax_) {
+    nmax_ = atom->nmax;
+    memory->destroy(vector_atom);
+    memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
+  }
+  if (!evaluate_between_races()) build_and_solve();
+}
 
+void ComputeNetworkResistance::report(double resistance, int contacts, int dropped,
+                                      int iterations, double residual)
+{
+  result_[0] = resistance;
+  result_[1] = current_;
+  result_[2] = resistance * current_;
+  result_[3] = contacts;
+  result_[4] = dropped;
+  result_[5] = iterations;
+  result_[6] = residual;
+  if (!std::isfinite(resistance) && !warned_no_path_ && comm->me == 0) {
+    error->warning(FLERR, "compute network/resistance: no conducting path between the "
+                          "electrodes: R = inf (said once)");
+    warned_no_path_ = true;
+  }
+}
+
+// A bearing: every conducting ball touches the high race, the low race, or both, and nothing
+// else conducts. A ball with both contacts is one resistor between the electrodes (eq. 1 with
+// its two spots, plus the two Holm constrictions if asked), and R is their parallel sum: no
+// network, no gathering of contacts (design.md: "a network of two-contact particles needs no
+// big solve"). Returns false, on every process alike, when the scene is anything else.
+bool ComputeNetworkResistance::evaluate_between_races()
+{
+  if (!closed_form_ || !netlist_.empty() || !vtk_.empty() || high_.kind != ElectrodeKind::Race ||
+      low_.kind != ElectrodeKind::Race || contacts_->uses_pair())
+    return false;
+  const auto &races = contacts_->races();
+  const int nraces = static_cast<int>(races.size());
+  const ohmdem::HertzContact &geo_hi = contacts_->race_geometry(high_.index);
+  const ohmdem::HertzContact &geo_lo = contacts_->race_geometry(low_.index);
+  const double g_hi = conductivity_->compute_vector(races[high_.index]->race_type() - 1);
+  const double g_lo = conductivity_->compute_vector(races[low_.index]->race_type() - 1);
+  balls_.clear();
+  int other = 0;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    vector_atom[i] = 0.0;
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double *ch = nullptr, *cl = nullptr;
+    for (int k = 0; k < nraces; ++k) {
+      const double *c = races[k]->contact_of(i);
+      if (!(c[0] > 0.0)) continue;
+      if (k == high_.index) ch = c;
+      else if (k == low_.index) cl = c;
+      else ++other;
+    }
+    const double gamma = conductivity_->compute_vector(atom->type[i] - 1);
+    if (!(gamma > 0.0) || !(ch || cl)) continue;
+    if (!(ch && cl)) {
+      // A dead end: no current; its contact node sits at that electrode's potential.
+      balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {0.0, ch ? 1.0 : 0.0}});
+      continue;
+    }
+    const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
+    double resistance = 0.0;
+    if (model_ != Model::Holm) {
+      const double u[3] = {ch[3] - atom->x[i][0], ch[4] - atom->x[i][1], 0.0};
+      const double w[3] = {cl[3] - atom->x[i][0], cl[4] - atom->x[i][1], 0.0};
+      const double r = atom->radius[i];
+      const double g = ohmdem::eq1_conductance_between(gamma, eh.area, el.area,
+                                                       ohmdem::sphere_volume(r), u, w, r);
+      resistance += g > 0.0 ? 1.0 / g : std::numeric_limits<double>::infinity();
+    }
+    if (model_ != Model::Eq1 && g_hi > 0.0 && g_lo > 0.0) {
+      resistance += ohmdem::holm_resistance(0.5 * (1.0 / gamma + 1.0 / g_hi), eh.a, eh.b);
+      resistance += ohmdem::holm_resistance(0.5 * (1.0 / gamma + 1.0 / g_lo), el.a, el.b);
+    }
+    if (!(g_hi > 0.0) || !(g_lo > 0.0)) resistance = std::numeric_limits<double>::infinity();
+    balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {1.0 / resistance, 0.5}});
+  }
+  int local_other = other, any_other = 0;
+  MPI_Allreduce(&local_other, &any_other, 1, MPI_INT, MPI_SUM, world);
+  if (any_other) return false;  // a third conducting race: the general network handles it
+
+  // Conductances added in tag order: the same R with any number of processes.
+  const auto all = ohmdem::gather_by_tag<2>(balls_, world);
+  double conductance = 0.0;
+  int paths = 0, dead = 0;
+  for (const auto &b : all) {
+    if (b.v[1] == 0.5) {
+      conductance += b.v[0];
+      ++paths;
+    } else {
+      ++dead;
+    }
+  }
+  const double resistance =
+      conductance > 0.0 ? 1.0 / conductance : std::numeric_limits<double>::infinity();
+  report(resistance, 2 * paths + dead, 0, 0, 0.0);
+  // Per-atom potential: mean of the contact-node potentials (the electrodes' own).
+  const double v_high = std::isfinite(resistance) ? resistance * current_ : 0.0;
+  for (const auto &b : balls_) {
+    const int i = atom->map(static_cast<tagint>(b.tag));
+    if (i >= 0 && i < atom->nlocal) vector_atom[i] = b.v[1] * v_high;
+  }
+  return true;
+}
+
+void ComputeNetworkResistance::build_and_solve()
+{
   // 1. This process's particles and contacts.
   std::vector<ContactSet::Contact> local;
   contacts_->collect(local);
@@ -307,25 +416,10 @@ void ComputeNetworkResistance::evaluate()
   };
   net.set_electrodes(electrode_node(high_, HIGH), electrode_node(low_, LOW));
   const ohmdem::NetworkSolution sol = net.solve(current_);
-  result_[0] = sol.resistance;
-  result_[1] = current_;
-  result_[2] = sol.voltage_drop;
-  result_[3] = conducting_contacts;
-  result_[4] = sol.floating_nodes_dropped;
-  result_[5] = sol.iterations;
-  result_[6] = sol.relative_residual;
-  if (!sol.connected && !warned_no_path_ && comm->me == 0) {
-    error->warning(FLERR, "compute network/resistance: no conducting path between the "
-                          "electrodes: R = inf (said once)");
-    warned_no_path_ = true;
-  }
+  report(sol.resistance, conducting_contacts, sol.floating_nodes_dropped, sol.iterations,
+         sol.relative_residual);
 
   // 5. Per-atom potential: mean over the particle's contact nodes (0 without a contact).
-  if (atom->nmax > nmax_) {
-    nmax_ = atom->nmax;
-    memory->destroy(vector_atom);
-    memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
-  }
   for (int i = 0; i < atom->nlocal; ++i) {
     vector_atom[i] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;

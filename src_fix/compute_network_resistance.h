@@ -15,7 +15,10 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include <memory>
 #include <string>
 
+#include <vector>
+
 #include "compute.h"
+#include "ordered_reduce.h"
 
 namespace ohmdem {
 class ConductionNetwork;
@@ -46,6 +49,9 @@ class ComputeNetworkResistance : public Compute {
 
   void parse(int narg, char **arg);
   void evaluate();  // builds and solves the network once per time step
+  bool evaluate_between_races();  // closed form when every ball joins the two races
+  void build_and_solve();         // the general network
+  void report(double resistance, int contacts, int dropped, int iterations, double residual);
 
   double current_ = 0;
   Electrode high_, low_;
@@ -54,6 +60,7 @@ class ComputeNetworkResistance : public Compute {
   bool area_exact_ = false;
   int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
   std::string netlist_, vtk_;
+  bool closed_form_ = true;  // keyword closedform: use the two-race closed form when it applies
 
   std::unique_ptr<ContactSet> contacts_;
   std::unique_ptr<ohmdem::ConductionNetwork> network_;
@@ -61,6 +68,7 @@ class ComputeNetworkResistance : public Compute {
   bigint evaluated_step_ = -1;
   double result_[7] = {0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
+  std::vector<ohmdem::TaggedValues<2>> balls_;  // closed form: conductance, potential factor
   int nmax_ = 0;
 };
 

@@ -52,6 +52,20 @@ Eq1Result eq1_conductance(double gamma, double area_i, double area_j, double vol
   return r;
 }
 
+double eq1_conductance_between(double gamma, double area_i, double area_j, double volume,
+                               const double u[3], const double v[3], double radius)
+{
+  const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) *
+                                 (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  // (c_i + c_j)^2 <= 2 (c_i^2 + c_j^2) = 2 (S_i + S_j) / pi < (pi r / 2)^2: clamp angle < 90 deg.
+  const bool small_spots = 2.0 * (area_i + area_j) / kPi < 0.25 * kPi * kPi * radius * radius;
+  if (dot <= 0.0 && norms > 0.0 && small_spots && gamma > 0.0 && area_i > 0.0 && area_j > 0.0 &&
+      volume > 0.0)
+    return gamma * area_i * area_j / (2.0 * volume * (1.0 - dot / norms));
+  return eq1_conductance(gamma, area_i, area_j, volume, angle_between(u, v), radius).conductance;
+}
+
 double series_conductance(double g1, double g2)
 {
   if (!(g1 > 0.0) || !(g2 > 0.0)) return 0.0;

@@ -62,6 +62,13 @@ struct ConductingParticle {
 // particle with two spots is one conductance). Pairs whose nodes coincide (both on one
 // electrode: no current inside) and zero conductances (zero area, gamma = 0) are skipped.
 // Returns the number of pairs whose angle was clamped.
+// Eq. 1 from the two contact vectors u, v (particle centre to contact point). For an obtuse
+// angle 1 - cos(theta) = 1 - u.v/(|u||v|) >= 1 has no cancellation and the theta clamp cannot
+// apply (unless the spots are larger than the sphere), so no trigonometric call is needed;
+// otherwise this is eq1_conductance(gamma, .., angle_between(u, v), radius).conductance.
+double eq1_conductance_between(double gamma, double area_i, double area_j, double volume,
+                               const double u[3], const double v[3], double radius);
+
 // `on_edge`, if given, is told every conductance added (e.g. to draw it in a VTK file).
 using EdgeVisitor = std::function<void(const ContactSpot &, const ContactSpot &, double g)>;
 int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,

@@ -71,7 +71,7 @@ void ContactSet::collect(std::vector<Contact> &out)
   if (pgl_) collect_pairs(out);
 }
 
-void ContactSet::collect_races(std::vector<Contact> &out)
+const ohmdem::HertzContact &ContactSet::race_geometry(int k)
 {
   if (race_hertz_.size() != races_.size()) {
     race_hertz_.clear();
@@ -80,6 +80,11 @@ void ContactSet::collect_races(std::vector<Contact> &out)
       race_hertz_.emplace_back(h.sums(), h.E_eff(), model_);
     }
   }
+  return race_hertz_[k];
+}
+
+void ContactSet::collect_races(std::vector<Contact> &out)
+{
   const int nlocal = atom->nlocal;
   for (std::size_t k = 0; k < races_.size(); ++k) {
     for (int i = 0; i < nlocal; ++i) {
@@ -93,7 +98,7 @@ void ContactSet::collect_races(std::vector<Contact> &out)
       ct.point[0] = c[3];
       ct.point[1] = c[4];
       ct.point[2] = atom->x[i][2];
-      ct.ellipse = race_hertz_[k].ellipse(ct.fn);
+      ct.ellipse = race_geometry(static_cast<int>(k)).ellipse(ct.fn);
       out.push_back(ct);
     }
   }

@@ -40,6 +40,8 @@ class ContactSet : protected Pointers {
   // particles of a pair contact are in the group.
   void collect(std::vector<Contact> &out);
   const std::vector<FixBearingRace *> &races() const { return races_; }
+  // Contact geometry of race k in the chosen area mode (valid once the races are set up).
+  const ohmdem::HertzContact &race_geometry(int k);
   bool uses_pair() const { return pgl_ != nullptr; }
 
  private:

@@ -173,6 +173,11 @@ def test_resistance(r):
     check(abs(R.mean() / 1.39 - 1) < 0.03, f"R = {R.mean():.4f} ohm vs the paper's 1.39 ohm "
           f"({R.mean() / 1.39 - 1:+.2%})")
     check(fluct < 1e-6, "R is steady after the sliding phase")
+    gen, _ = r.run("resistance_general", tend=0.025, nout=10, closedform="no")
+    Rg = read_signal(gen)["R"]
+    dg = np.max(np.abs(Rg / sig["R"] - 1))
+    check(dg < 1e-12, f"closed form (a resistor per ball) = general network solve "
+          f"(max rel. diff {dg:.1e})")
     out2, _ = r.run("resistance_exact", tend=0.025, nout=10, area="exact")
     Rx = read_signal(out2)["R"][steady].mean()
     print(f"     area exact: R = {Rx:.6f} ohm ({Rx / R.mean() - 1:+.2%} vs greenwood)")
