@@ -219,6 +219,10 @@ bool ComputeNetworkResistance::evaluate_between_races()
   const ohmdem::HertzContact &geo_lo = contacts_->race_geometry(low_.index);
   const double g_hi = conductivity_->compute_vector(races[high_.index]->race_type() - 1);
   const double g_lo = conductivity_->compute_vector(races[low_.index]->race_type() - 1);
+  // Holm: b/a is fixed by the geometry, so R_c = rho * holm(1, 1, b/a) / a (one elliptic
+  // integral per race and evaluation, not per contact).
+  const double holm_hi = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi.ellipticity());
+  const double holm_lo = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo.ellipticity());
   balls_.clear();
   int other = 0;
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -236,7 +240,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
     if (!(gamma > 0.0) || !(ch || cl)) continue;
     if (!(ch && cl)) {
       // A dead end: no current; its contact node sits at that electrode's potential.
-      balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {0.0, ch ? 1.0 : 0.0}});
+      balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {0.0, ch ? 1.0 : 0.0, double(i)}});
       continue;
     }
     const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
@@ -250,18 +254,18 @@ bool ComputeNetworkResistance::evaluate_between_races()
       resistance += g > 0.0 ? 1.0 / g : std::numeric_limits<double>::infinity();
     }
     if (model_ != Model::Eq1 && g_hi > 0.0 && g_lo > 0.0) {
-      resistance += ohmdem::holm_resistance(0.5 * (1.0 / gamma + 1.0 / g_hi), eh.a, eh.b);
-      resistance += ohmdem::holm_resistance(0.5 * (1.0 / gamma + 1.0 / g_lo), el.a, el.b);
+      resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi / eh.a;
+      resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo / el.a;
     }
     if (!(g_hi > 0.0) || !(g_lo > 0.0)) resistance = std::numeric_limits<double>::infinity();
-    balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {1.0 / resistance, 0.5}});
+    balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {1.0 / resistance, 0.5, double(i)}});
   }
-  int local_other = other, any_other = 0;
-  MPI_Allreduce(&local_other, &any_other, 1, MPI_INT, MPI_SUM, world);
+  int any_other = other;
+  if (comm->nprocs > 1) MPI_Allreduce(&other, &any_other, 1, MPI_INT, MPI_SUM, world);
   if (any_other) return false;  // a third conducting race: the general network handles it
 
   // Conductances added in tag order: the same R with any number of processes.
-  const auto all = ohmdem::gather_by_tag<2>(balls_, world);
+  const auto all = ohmdem::gather_by_tag<3>(balls_, world);
   double conductance = 0.0;
   int paths = 0, dead = 0;
   for (const auto &b : all) {
@@ -277,10 +281,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
   report(resistance, 2 * paths + dead, 0, 0, 0.0);
   // Per-atom potential: mean of the contact-node potentials (the electrodes' own).
   const double v_high = std::isfinite(resistance) ? resistance * current_ : 0.0;
-  for (const auto &b : balls_) {
-    const int i = atom->map(static_cast<tagint>(b.tag));
-    if (i >= 0 && i < atom->nlocal) vector_atom[i] = b.v[1] * v_high;
-  }
+  for (const auto &b : balls_) vector_atom[static_cast<int>(b.v[2])] = b.v[1] * v_high;
   return true;
 }
 

@@ -68,7 +68,8 @@ class ComputeNetworkResistance : public Compute {
   bigint evaluated_step_ = -1;
   double result_[7] = {0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
-  std::vector<ohmdem::TaggedValues<2>> balls_;  // closed form: conductance, potential factor
+  // closed form, per local ball: conductance, potential factor, local index
+  std::vector<ohmdem::TaggedValues<3>> balls_;
   int nmax_ = 0;
 };
 
