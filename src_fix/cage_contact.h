@@ -8,6 +8,9 @@
 #ifndef OHMDEM_CAGE_CONTACT_H
 #define OHMDEM_CAGE_CONTACT_H
 
+#include <algorithm>
+#include <cmath>
+
 #include "hertz_contact.h"
 #include "race_contact.h"
 
@@ -24,21 +27,50 @@ struct CageContactModel {
 struct CageContactState {
   Vec2 ball_x, ball_v;
   double ball_mass = 0;
-  Vec2 centre;               // cage (bearing) axis
-  double pocket_angle = 0;   // angular position of the pocket centre line (rad)
-  double cage_omega = 0;     // cage angular speed (rad/s)
+  Vec2 centre;                // cage (bearing) axis
+  Vec2 pocket_dir{1.0, 0.0};  // unit vector along the pocket centre line, outwards
+  double cage_omega = 0;      // cage angular speed (rad/s)
 };
 
 struct CageContactResult {
   bool touching = false;
   double delta = 0;
-  double fn = 0;             // normal force magnitude (N)
-  double offset = 0;         // signed tangential offset of the ball from the pocket centre (m)
+  double fn = 0;      // normal force magnitude (N)
+  double offset = 0;  // signed tangential offset of the ball from the pocket centre (m)
   Vec2 force_on_ball;
   double torque_on_cage = 0;  // about z, about the cage axis (N m)
 };
 
-CageContactResult cage_contact(const CageContactModel &model, const CageContactState &s);
+// Inline: it runs for every ball at every step (see race_contact.h).
+inline CageContactResult cage_contact(const CageContactModel &m, const CageContactState &s)
+{
+  CageContactResult r;
+  const Vec2 t{-s.pocket_dir.y, s.pocket_dir.x};  // pocket tangent
+  const double dx = s.ball_x.x - s.centre.x;
+  const double dy = s.ball_x.y - s.centre.y;
+  r.offset = dx * t.x + dy * t.y;
+  const double delta = std::fabs(r.offset) - m.clearance;
+  r.delta = delta;
+  if (delta <= 0.0) return r;
+  r.touching = true;
+  const double side = r.offset > 0.0 ? 1.0 : -1.0;  // which wall: +t or -t side
+
+  // Contact point on the ball, facing the wall, and the wall's velocity there.
+  const double arm = m.ball_radius - 0.5 * delta;
+  const Vec2 p{s.ball_x.x + side * arm * t.x, s.ball_x.y + side * arm * t.y};
+  const double px = p.x - s.centre.x, py = p.y - s.centre.y;
+  const Vec2 vw{-s.cage_omega * py, s.cage_omega * px};
+  // Ball spin does not move the contact point along the wall normal: only v matters.
+  const double delta_rate = side * ((s.ball_v.x - vw.x) * t.x + (s.ball_v.y - vw.y) * t.y);
+
+  const double q = m.hertz.force(delta);
+  const double sn = m.hertz.normal_stiffness(delta);
+  const double gamma_n = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(sn * s.ball_mass);
+  r.fn = std::max(0.0, q + gamma_n * delta_rate);
+  r.force_on_ball = {-side * r.fn * t.x, -side * r.fn * t.y};
+  r.torque_on_cage = -(px * r.force_on_ball.y - py * r.force_on_ball.x);
+  return r;
+}
 
 }  // namespace ohmdem
 

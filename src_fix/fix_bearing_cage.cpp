@@ -19,7 +19,6 @@
 #include "fix_property_atom.h"
 #include "material_table.h"
 #include "modify.h"
-#include "ordered_reduce.h"
 #include "style_args.h"
 #include "update.h"
 
@@ -93,6 +92,10 @@ void FixBearingCage::parse(int narg, char **arg)
            std::to_string(cage_type_).c_str());
   // A thin ring at the pitch radius unless given.
   if (inertia_ <= 0.0) inertia_ = mass_ * pitch_radius_ * pitch_radius_;
+  for (int k = 0; k < npockets_; ++k) {
+    pocket_cos_.push_back(std::cos(2.0 * M_PI * k / npockets_));
+    pocket_sin_.push_back(std::sin(2.0 * M_PI * k / npockets_));
+  }
 }
 
 int FixBearingCage::setmask()
@@ -120,11 +123,6 @@ void FixBearingCage::init()
   const std::string name = std::string("bearingCage_") + id;
   state_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
-}
-
-double FixBearingCage::pocket_angle(int k) const
-{
-  return angle_ + angle0_ + 2.0 * M_PI * k / npockets_;
 }
 
 void FixBearingCage::build_model()
@@ -224,8 +222,8 @@ void FixBearingCage::post_force(int)
   ohmdem::CageContactState s;
   s.centre = {cx_, cy_};
   s.cage_omega = omega_;
-  // per ball: pocket force, torque on the cage, orbital angular speed about the axis
-  std::vector<ohmdem::TaggedValues<3>> mine;
+  const double cos_cage = std::cos(angle_ + angle0_), sin_cage = std::sin(angle_ + angle0_);
+  mine_.clear();
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -234,24 +232,26 @@ void FixBearingCage::post_force(int)
     s.ball_x = {x[i][0], x[i][1]};
     s.ball_v = {v[i][0], v[i][1]};
     s.ball_mass = atom->rmass[i];
-    s.pocket_angle = pocket_angle(k);
+    s.pocket_dir = {cos_cage * pocket_cos_[k] - sin_cage * pocket_sin_[k],
+                    sin_cage * pocket_cos_[k] + cos_cage * pocket_sin_[k]};
     const auto c = ohmdem::cage_contact(*model_, s);
     const double rx = x[i][0] - cx_, ry = x[i][1] - cy_;
     const double r2 = rx * rx + ry * ry;
     const double orbit = r2 > 0.0 ? (rx * v[i][1] - ry * v[i][0]) / r2 : 0.0;
-    const auto tag = static_cast<std::int64_t>(atom->tag[i]);
-    if (!c.touching) {
-      mine.push_back({tag, {0.0, 0.0, orbit}});
-      continue;
-    }
+    // Built in place: a braced temporary costs a store-forwarding stall per ball.
+    auto &rec = mine_.emplace_back();
+    rec.tag = atom->tag[i];
+    rec.v = {0.0, 0.0, orbit};
+    if (!c.touching) continue;
     f[i][0] += c.force_on_ball.x;
     f[i][1] += c.force_on_ball.y;
     out[FORCE] = c.offset > 0.0 ? -c.fn : c.fn;
     out[FX] = c.force_on_ball.x;
     out[FY] = c.force_on_ball.y;
-    mine.push_back({tag, {c.fn, c.torque_on_cage, orbit}});
+    rec.v[0] = c.fn;
+    rec.v[1] = c.torque_on_cage;
   }
-  const auto all = ohmdem::gather_by_tag<3>(mine, world);
+  const auto &all = gather_.gather(mine_, world);
   const auto sum = ohmdem::ordered_sum<3>(all);
   sum_fn_ = sum[0];
   torque_ = sum[1];
@@ -307,5 +307,7 @@ void FixBearingCage::restart(char *buf)
 
 double FixBearingCage::memory_usage()
 {
-  return 0.0;  // per-atom state lives in the fix property/atom, which reports its own
+  // Per-atom state lives in the fix property/atom, which reports its own.
+  return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage() +
+                             (pocket_cos_.capacity() + pocket_sin_.capacity()) * sizeof(double));
 }

@@ -13,8 +13,10 @@ FixStyle(bearing/cage,FixBearingCage)
 #define LMP_FIX_BEARING_CAGE_H
 
 #include <memory>
+#include <vector>
 
 #include "fix.h"
+#include "ordered_reduce.h"
 
 namespace ohmdem {
 struct CageContactModel;
@@ -46,7 +48,6 @@ class FixBearingCage : public Fix {
   void parse(int narg, char **arg);
   void build_model();
   void assign_pockets();
-  double pocket_angle(int k) const;
 
   int npockets_ = 0;
   double pitch_radius_ = 0, clearance_ = 0;
@@ -54,6 +55,9 @@ class FixBearingCage : public Fix {
   double mass_ = 0, inertia_ = 0, drag_ = 0;
   double cx_ = 0, cy_ = 0;
   double angle0_ = 0;  // pocket 0 at this angle when the cage angle is 0
+  // cos, sin of 2 pi k / npockets: pocket k's direction is the cage rotation applied to it,
+  // so a step needs one sincos, not one per ball.
+  std::vector<double> pocket_cos_, pocket_sin_;
 
   // cage state, identical on all ranks, written to restart
   double angle_ = 0, omega_ = 0;
@@ -62,6 +66,10 @@ class FixBearingCage : public Fix {
   double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
   double ball_orbit_ = 0;  // mean orbital angular speed of the balls about the axis
   int ncontacts_ = 0;
+  // Per ball: pocket force, torque on the cage, orbital angular speed about the axis.
+  // Members so that their memory is reused from step to step.
+  std::vector<ohmdem::TaggedValues<3>> mine_;
+  ohmdem::OrderedGather<3> gather_;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;
   class FixPropertyAtom *state_ = nullptr;  // pocket index and last force of each ball

@@ -13,8 +13,10 @@ FixStyle(bearing/race,FixBearingRace)
 #define LMP_FIX_BEARING_RACE_H
 
 #include <memory>
+#include <vector>
 
 #include "fix.h"
+#include "ordered_reduce.h"
 
 namespace ohmdem {
 struct RaceContactModel;
@@ -79,6 +81,10 @@ class FixBearingRace : public Fix {
   // --- reactions of the last force evaluation (deterministic sums, see ordered_reduce.h)
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
   int ncontacts_ = 0;
+  // Per touching ball: force on the ball x, y, normal force, torque on the race. Members so
+  // that their memory is reused from step to step.
+  std::vector<ohmdem::TaggedValues<4>> mine_;
+  ohmdem::OrderedGather<4> gather_;
 
   std::unique_ptr<ohmdem::RaceContactModel> model_;
   double ball_radius_ = 0;

@@ -152,22 +152,11 @@ HertzContact::HertzContact(CurvatureSums sums, double E_eff, AreaModel model)
   }
 }
 
-// !(x > 0) also maps NaN to "no contact", so nothing downstream sees a NaN.
-double HertzContact::force(double delta) const
-{
-  return delta > 0 ? K_hertz_ * delta * std::sqrt(delta) : 0;
-}
-
 double HertzContact::approach(double force) const
 {
   if (!(force > 0)) return 0;
   const double r = std::cbrt(force / K_hertz_);  // cbrt first: no overflow of force^2
   return r * r;
-}
-
-double HertzContact::normal_stiffness(double delta) const
-{
-  return delta > 0 ? 1.5 * K_hertz_ * std::sqrt(delta) : 0;
 }
 
 ContactEllipse HertzContact::ellipse(double fn) const

@@ -6,6 +6,8 @@
 #ifndef OHMDEM_HERTZ_CONTACT_H
 #define OHMDEM_HERTZ_CONTACT_H
 
+#include <cmath>
+
 namespace ohmdem {
 
 enum class AreaModel { Greenwood, Exact };
@@ -62,10 +64,19 @@ class HertzContact {
 
   double ellipticity() const { return kappa_; }           // a/b of the chosen model
   double stiffness_constant() const { return K_hertz_; }  // exact K in Q = K delta^1.5
-  double force(double delta) const;                       // 0 for delta <= 0 (or NaN)
-  double approach(double force) const;                    // 0 for Q <= 0 (or NaN)
-  double normal_stiffness(double delta) const;            // dQ/ddelta, 0 for delta <= 0
-  ContactEllipse ellipse(double fn) const;                // all zero for fn <= 0 (or NaN)
+  // force() and normal_stiffness() are inline: they run for every contact at every step, and
+  // inlined together they share one sqrt(delta). !(delta > 0) also maps NaN to "no contact",
+  // so nothing downstream sees a NaN.
+  double force(double delta) const  // 0 for delta <= 0 (or NaN)
+  {
+    return delta > 0 ? K_hertz_ * delta * std::sqrt(delta) : 0;
+  }
+  double normal_stiffness(double delta) const  // dQ/ddelta, 0 for delta <= 0
+  {
+    return delta > 0 ? 1.5 * K_hertz_ * std::sqrt(delta) : 0;
+  }
+  double approach(double force) const;      // 0 for Q <= 0 (or NaN)
+  ContactEllipse ellipse(double fn) const;  // all zero for fn <= 0 (or NaN)
   AreaModel model() const { return model_; }
 
   // Additions.

@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,7 +22,26 @@ struct TaggedValues {
 
 // Gathers every rank's records on all ranks, sorted by tag, then by value.
 template <int N>
-std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local, MPI_Comm comm);
+std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local,
+                                           MPI_Comm comm);
+
+// The same with buffers kept from call to call, for styles that reduce at every step: no
+// allocation once the buffers have grown, and the order found at the previous call is tried
+// first (atoms change their local order only when they are sorted or exchanged).
+template <int N>
+class OrderedGather {
+ public:
+  // The records of all ranks in tag order; valid until the next call.
+  const std::vector<TaggedValues<N>> &gather(const std::vector<TaggedValues<N>> &local,
+                                             MPI_Comm comm);
+  std::size_t memory_usage() const;
+
+ private:
+  std::vector<TaggedValues<N>> received_;  // several ranks: all records, in rank order
+  std::vector<TaggedValues<N>> sorted_;
+  std::vector<int> order_;  // sorted_[k] = records[order_[k]]
+  std::vector<int> bytes_, displ_;
+};
 
 // Sum of each component over all ranks' records, added in tag order.
 template <int N>

@@ -3,39 +3,63 @@
 #define OHMDEM_ORDERED_REDUCE_IMPL_H
 
 #include <algorithm>
+#include <numeric>
 
 namespace ohmdem {
 
 template <int N>
-std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
+const std::vector<TaggedValues<N>> &OrderedGather<N>::gather(
+    const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
 {
   static_assert(sizeof(TaggedValues<N>) == sizeof(std::int64_t) + N * sizeof(double),
                 "TaggedValues must be packed to be sent as bytes");
   int nprocs = 1;
   MPI_Comm_size(comm, &nprocs);
+  const std::vector<TaggedValues<N>> *records = &local;  // one rank: no collective needed
+  if (nprocs > 1) {
+    const int mybytes = static_cast<int>(local.size() * sizeof(TaggedValues<N>));
+    bytes_.resize(nprocs);
+    displ_.resize(nprocs);
+    MPI_Allgather(&mybytes, 1, MPI_INT, bytes_.data(), 1, MPI_INT, comm);
+    int total = 0;
+    for (int p = 0; p < nprocs; ++p) {
+      displ_[p] = total;
+      total += bytes_[p];
+    }
+    received_.resize(total / sizeof(TaggedValues<N>));
+    MPI_Allgatherv(local.data(), mybytes, MPI_BYTE, received_.data(), bytes_.data(), displ_.data(),
+                   MPI_BYTE, comm);
+    records = &received_;
+  }
+  const auto &in = *records;
   // Ties (several records of one particle) are ordered by their values, so that the order
-  // never depends on which process sent what.
-  auto by_tag = [](const TaggedValues<N> &a, const TaggedValues<N> &b) {
-    return a.tag != b.tag ? a.tag < b.tag : a.v < b.v;
+  // never depends on which process sent what; records that tie completely are identical.
+  auto before = [&in](int a, int b) {
+    return in[a].tag != in[b].tag ? in[a].tag < in[b].tag : in[a].v < in[b].v;
   };
-  if (nprocs == 1) {  // one rank: no collective needed, same order as with several
-    std::vector<TaggedValues<N>> all(local);
-    std::sort(all.begin(), all.end(), by_tag);
-    return all;
+  // Sorting indices moves 4 bytes instead of a whole record.
+  if (order_.size() != in.size() || !std::is_sorted(order_.begin(), order_.end(), before)) {
+    order_.resize(in.size());
+    std::iota(order_.begin(), order_.end(), 0);
+    std::sort(order_.begin(), order_.end(), before);
   }
-  const int mybytes = static_cast<int>(local.size() * sizeof(TaggedValues<N>));
-  std::vector<int> bytes(nprocs), displ(nprocs, 0);
-  MPI_Allgather(&mybytes, 1, MPI_INT, bytes.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < nprocs; ++p) {
-    displ[p] = total;
-    total += bytes[p];
-  }
-  std::vector<TaggedValues<N>> all(total / sizeof(TaggedValues<N>));
-  MPI_Allgatherv(local.data(), mybytes, MPI_BYTE, all.data(), bytes.data(), displ.data(),
-                 MPI_BYTE, comm);
-  std::sort(all.begin(), all.end(), by_tag);
-  return all;
+  sorted_.resize(in.size());
+  for (std::size_t k = 0; k < in.size(); ++k) sorted_[k] = in[order_[k]];
+  return sorted_;
+}
+
+template <int N>
+std::size_t OrderedGather<N>::memory_usage() const
+{
+  return (received_.capacity() + sorted_.capacity()) * sizeof(TaggedValues<N>) +
+         (order_.capacity() + bytes_.capacity() + displ_.capacity()) * sizeof(int);
+}
+
+template <int N>
+std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
+{
+  OrderedGather<N> gather;
+  return gather.gather(local, comm);
 }
 
 }  // namespace ohmdem

@@ -12,6 +12,9 @@
 #ifndef OHMDEM_RACE_CONTACT_H
 #define OHMDEM_RACE_CONTACT_H
 
+#include <algorithm>
+#include <cmath>
+
 #include "hertz_contact.h"
 
 namespace ohmdem {
@@ -35,6 +38,9 @@ struct RaceContactModel {
   double G_eff;
   double beta;
   double friction;
+  // Mindlin k_t = 8 G* c with c = sqrt(ab) ∝ Q^(1/3) and Q = K delta^(3/2), so
+  // k_t = kt_coef * sqrt(delta): no cube root per contact and step.
+  double kt_coef;
 };
 
 // Kinematic state of one ball and the race at the current step.
@@ -63,8 +69,80 @@ struct RaceContactResult {
 // Computes the contact force. `shear` is the tangential spring elongation (m) carried
 // from step to step; it is advanced by v_t*dt when update_history is true, and reset to 0
 // when the ball is not touching.
-RaceContactResult race_contact(const RaceContactModel &model, const RaceContactState &s,
-                               double dt, bool update_history, double &shear);
+// Inline: it runs for every ball at every step, and inlined into the caller its state and
+// result stay in registers instead of going through memory.
+inline RaceContactResult race_contact(const RaceContactModel &m, const RaceContactState &s,
+                                      double dt, bool update_history, double &shear)
+{
+  RaceContactResult r;
+  const double dx = s.ball_x.x - s.race_centre.x;
+  const double dy = s.ball_x.y - s.race_centre.y;
+  // Not std::hypot: no overflow is possible at bearing scales, and hypot costs several
+  // times a sqrt on every contact and step.
+  const double dist = std::sqrt(dx * dx + dy * dy);
+  // A ball exactly on the race axis has no defined normal: it cannot touch a race anyway.
+  if (dist <= 0.0) {
+    shear = 0.0;
+    return r;
+  }
+  r.normal = {dx / dist, dy / dist};
+  const bool inner = m.side == RaceSide::Inner;
+  // side: -1 when the contact is on the centre side of the ball (inner race).
+  const double side = inner ? -1.0 : 1.0;
+  const double delta =
+      inner ? s.race_radius + m.ball_radius - dist : dist + m.ball_radius - s.race_radius;
+  r.delta = delta;
+  if (delta <= 0.0) {
+    shear = 0.0;
+    return r;
+  }
+  r.touching = true;
+
+  // Lever arm from the ball centre to the contact point (middle of the overlap).
+  const double arm = m.ball_radius - 0.5 * delta;
+  const Vec2 lever{side * arm * r.normal.x, side * arm * r.normal.y};
+  r.point = {s.ball_x.x + lever.x, s.ball_x.y + lever.y};
+
+  // Velocities of the two material points at the contact (omega x r with omega along z).
+  const Vec2 vb{s.ball_v.x - s.ball_omega * lever.y, s.ball_v.y + s.ball_omega * lever.x};
+  const double px = r.point.x - s.race_centre.x;
+  const double py = r.point.y - s.race_centre.y;
+  // The race surface also moves radially when the ring radius changes (force control).
+  const double radial = inner ? s.race_radius_rate : -s.race_radius_rate;
+  const Vec2 vr{s.race_v.x - s.race_omega * py + radial * r.normal.x,
+                s.race_v.y + s.race_omega * px + radial * r.normal.y};
+  const Vec2 vrel{vb.x - vr.x, vb.y - vr.y};
+  const Vec2 t{-r.normal.y, r.normal.x};
+  const double vn = vrel.x * r.normal.x + vrel.y * r.normal.y;
+  const double vt = vrel.x * t.x + vrel.y * t.y;
+  const double delta_rate = side * vn;
+
+  // Normal: exact elliptic Hertz + restitution damping (LIGGGHTS' form with S_n = dQ/ddelta).
+  const double q = m.hertz.force(delta);
+  const double sn = m.hertz.normal_stiffness(delta);
+  const double gamma_n = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(sn * s.ball_mass);
+  r.fn = std::max(0.0, q + gamma_n * delta_rate);
+
+  // Tangential: Mindlin spring on the equivalent contact radius, capped by Coulomb.
+  const double kt = m.kt_coef * std::sqrt(delta);  // = 8 G* c(q), see RaceContactModel
+  const double gamma_t = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(kt * s.ball_mass);
+  if (update_history) shear += vt * dt;
+  double ft = -kt * shear - gamma_t * vt;
+  const double cap = m.friction * r.fn;
+  if (std::fabs(ft) > cap) {
+    // Sliding: the force sits on the Coulomb cone and the spring holds what it can carry.
+    ft = std::copysign(cap, ft);
+    shear = kt > 0.0 ? -ft / kt : 0.0;
+  }
+  r.ft = ft;
+
+  const double fnx = -side * r.fn * r.normal.x;
+  const double fny = -side * r.fn * r.normal.y;
+  r.force_on_ball = {fnx + ft * t.x, fny + ft * t.y};
+  r.torque_on_ball = lever.x * (ft * t.y) - lever.y * (ft * t.x);
+  r.torque_on_race = -(px * r.force_on_ball.y - py * r.force_on_ball.x);
+  return r;
+}
 
 }  // namespace ohmdem
 
