@@ -6,3 +6,4 @@
 #include "fix_bearing_cage.h"
 #include "compute_network_resistance.h"
 #include "compute_contact_area.h"
+#include "fix_bearing_defect.h"

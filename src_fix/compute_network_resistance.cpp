@@ -231,7 +231,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
     const double *ch = nullptr, *cl = nullptr;
     for (int k = 0; k < nraces; ++k) {
       const double *c = races[k]->contact_of(i);
-      if (!(c[0] > 0.0)) continue;
+      if (!(c[0] > 0.0) || c[5] > 0.0) continue;  // no force, or in a defect zone: no current
       if (k == high_.index) ch = c;
       else if (k == low_.index) cl = c;
       else ++other;

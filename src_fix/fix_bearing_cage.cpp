@@ -16,6 +16,7 @@
 #include "cage_contact.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_bearing_defect.h"
 #include "fix_property_atom.h"
 #include "material_table.h"
 #include "modify.h"
@@ -26,7 +27,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-constexpr int kVectorSize = 7;
+constexpr int kVectorSize = 8;
 // Per-atom state in a fix property/atom (migrates, restarts); the first kPeratomCols columns
 // are this fix's per-atom output.
 enum Col { POCKET, FORCE, FX, FY, NCOL };
@@ -123,6 +124,9 @@ void FixBearingCage::init()
   const std::string name = std::string("bearingCage_") + id;
   state_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+  defects_.clear();
+  for (int k = 0; k < modify->nfix; ++k)
+    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k])) defects_.push_back(d);
 }
 
 void FixBearingCage::build_model()
@@ -224,6 +228,7 @@ void FixBearingCage::post_force(int)
   s.cage_omega = omega_;
   const double cos_cage = std::cos(angle_ + angle0_), sin_cage = std::sin(angle_ + angle0_);
   mine_.clear();
+  int masked = 0;
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -243,6 +248,10 @@ void FixBearingCage::post_force(int)
     rec.tag = atom->tag[i];
     rec.v = {0.0, 0.0, orbit};
     if (!c.touching) continue;
+    if (!defects_.empty() && wall_broken(k, c.offset > 0.0 ? 1 : -1)) {
+      ++masked;  // a broken bar: nothing to push on
+      continue;
+    }
     f[i][0] += c.force_on_ball.x;
     f[i][1] += c.force_on_ball.y;
     out[FORCE] = c.offset > 0.0 ? -c.fn : c.fn;
@@ -251,6 +260,9 @@ void FixBearingCage::post_force(int)
     rec.v[0] = c.fn;
     rec.v[1] = c.torque_on_cage;
   }
+  nmasked_ = masked;
+  if (!defects_.empty() && comm->nprocs > 1)
+    MPI_Allreduce(&masked, &nmasked_, 1, MPI_INT, MPI_SUM, world);
   const auto &all = gather_.gather(mine_, world);
   const auto sum = ohmdem::ordered_sum<3>(all);
   sum_fn_ = sum[0];
@@ -264,6 +276,13 @@ void FixBearingCage::post_force(int)
   }
 }
 
+bool FixBearingCage::wall_broken(int pocket, int side) const
+{
+  for (const auto *d : defects_)
+    if (d->breaks_wall(this, pocket, side)) return true;
+  return false;
+}
+
 double FixBearingCage::compute_vector(int n)
 {
   switch (n) {
@@ -274,6 +293,7 @@ double FixBearingCage::compute_vector(int n)
     case 4: return max_fn_;
     case 5: return torque_;
     case 6: return ball_orbit_;
+    case 7: return nmasked_;
     default: return 0.0;
   }
 }

@@ -64,7 +64,10 @@ class FixBearingCage : public Fix {
 
   // last force evaluation
   double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
-  double ball_orbit_ = 0;  // mean orbital angular speed of the balls about the axis
+  double ball_orbit_ = 0;
+  int nmasked_ = 0;  // ball contacts with a broken cage bar (fix bearing/defect cage)
+  std::vector<class FixBearingDefect *> defects_;
+  bool wall_broken(int pocket, int side) const;  // mean orbital angular speed of the balls about the axis
   int ncontacts_ = 0;
   // Per ball: pocket force, torque on the cage, orbital angular speed about the axis.
   // Members so that their memory is reused from step to step.

@@ -17,6 +17,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_bearing_defect.h"
 #include "fix_property_atom.h"
 #include "force.h"
 #include "material_table.h"
@@ -30,12 +31,12 @@ using namespace FixConst;
 using ohmdem::RaceContactModel;
 
 namespace {
-constexpr int kVectorSize = 10;
+constexpr int kVectorSize = 11;
 // Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
 // restart files. The first kPeratomCols columns are this fix's per-atom output.
-enum Col { FN, DELTA, FT, PX, PY, FX, FY, TZ, SHEAR, NCOL };
-constexpr int kPeratomCols = 5;  // fn, delta, ft, contact point x, y
-constexpr int kRestartSize = 16;
+enum Col { FN, DELTA, FT, PX, PY, MASKED, FX, FY, TZ, SHEAR, NCOL };
+constexpr int kPeratomCols = 6;  // fn, delta, ft, contact point x, y, masked
+constexpr int kRestartSize = 17;
 }  // namespace
 
 FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
@@ -174,6 +175,9 @@ void FixBearingRace::init()
   const std::string name = std::string("bearingRace_") + id;
   state_ = static_cast<FixPropertyAtom *>(
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+  defects_.clear();
+  for (int k = 0; k < modify->nfix; ++k)
+    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k])) defects_.push_back(d);
 }
 
 // Ball type and radius of the group, the materials, and the Hertz model built from them.
@@ -316,10 +320,18 @@ void FixBearingRace::post_force(int)
   s.race_omega = target_omega(time_);
 
   mine_.clear();
+  int masked = 0;
   for (int i = 0; i < nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
     for (int k = FN; k <= TZ; ++k) out[k] = 0.0;
+    s.recess = 0.0;
+    if (!defects_.empty()) {
+      bool in_zone = false;
+      s.recess = defect_recess(i, in_zone);
+      out[MASKED] = in_zone ? 1.0 : 0.0;
+      masked += in_zone;
+    }
     s.ball_x = {x[i][0], x[i][1]};
     s.ball_v = {v[i][0], v[i][1]};
     s.ball_omega = omega[i][2];
@@ -342,6 +354,9 @@ void FixBearingRace::post_force(int)
     rec.tag = atom->tag[i];
     rec.v = {c.force_on_ball.x, c.force_on_ball.y, c.fn, c.torque_on_race};
   }
+  nmasked_ = masked;
+  if (!defects_.empty() && comm->nprocs > 1)
+    MPI_Allreduce(&masked, &nmasked_, 1, MPI_INT, MPI_SUM, world);
   const auto &all = gather_.gather(mine_, world);
   const auto sum = ohmdem::ordered_sum<4>(all);
   fx_ = sum[0];
@@ -351,6 +366,19 @@ void FixBearingRace::post_force(int)
   ncontacts_ = static_cast<int>(all.size());
   max_fn_ = 0.0;
   for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
+}
+
+// Sum of the recesses of the defects under ball i's contact with this race; in_zone is set
+// when the contact point lies in a defect zone (the contact then carries no current).
+double FixBearingRace::defect_recess(int i, bool &in_zone) const
+{
+  const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
+  const double contact_angle = std::atan2(dy, dx);  // the contact is on the radial line
+  const double ball_direction = inner_ ? std::atan2(-dy, -dx) : contact_angle;
+  double recess = 0.0;
+  for (const auto *d : defects_)
+    recess += d->recess(this, atom->tag[i], contact_angle, ball_direction, in_zone);
+  return recess;
 }
 
 double FixBearingRace::compute_vector(int n)
@@ -366,6 +394,7 @@ double FixBearingRace::compute_vector(int n)
     case 7: return max_fn_;
     case 8: return angle_;
     case 9: return target_omega(time_);
+    case 10: return nmasked_;
     default: return 0.0;
   }
 }
@@ -375,7 +404,8 @@ void FixBearingRace::write_restart(FILE *fp)
   const double list[kRestartSize] = {time_, angle_, u_, u_dot_, cx_, cy_, vcx_, vcy_,
                                      frozen_ ? 1.0 : 0.0, static_cast<double>(inner_),
                                      sum_fn_, torque_, fx_, fy_, max_fn_,
-                                     static_cast<double>(ncontacts_)};
+                                     static_cast<double>(ncontacts_),
+                                     static_cast<double>(nmasked_)};
   if (comm->me == 0) {
     const int size = kRestartSize * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
@@ -403,6 +433,7 @@ void FixBearingRace::restart(char *buf)
   fy_ = list[13];
   max_fn_ = list[14];
   ncontacts_ = static_cast<int>(list[15]);
+  nmasked_ = static_cast<int>(list[16]);
   restored_ = true;
 }
 

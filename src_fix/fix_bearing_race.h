@@ -42,7 +42,7 @@ class FixBearingRace : public Fix {
   double memory_usage() override;
 
   // For the electrical computes: the contact of local atom i with this race, valid after
-  // this step's forces (per-atom columns fn, delta, ft, point x, point y).
+  // this step's forces (per-atom columns fn, delta, ft, point x, point y, masked).
   const double *contact_of(int i) const { return array_atom[i]; }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return inner_; }
@@ -81,6 +81,9 @@ class FixBearingRace : public Fix {
   // --- reactions of the last force evaluation (deterministic sums, see ordered_reduce.h)
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
   int ncontacts_ = 0;
+  int nmasked_ = 0;  // contacts whose point lies in a defect zone (no current)
+  std::vector<class FixBearingDefect *> defects_;
+  double defect_recess(int i, bool &in_zone) const;
   // Per touching ball: force on the ball x, y, normal force, torque on the race. Members so
   // that their memory is reused from step to step.
   std::vector<ohmdem::TaggedValues<4>> mine_;

@@ -52,6 +52,7 @@ struct RaceContactState {
   double race_radius = 0;    // current radius of the race surface (groove bottom)
   double race_radius_rate = 0;
   double race_omega = 0;  // race angular speed about z (rad/s)
+  double recess = 0;      // how far the surface falls away under the contact (a pit), m
 };
 
 struct RaceContactResult {
@@ -90,7 +91,8 @@ inline RaceContactResult race_contact(const RaceContactModel &m, const RaceConta
   // side: -1 when the contact is on the centre side of the ball (inner race).
   const double side = inner ? -1.0 : 1.0;
   const double delta =
-      inner ? s.race_radius + m.ball_radius - dist : dist + m.ball_radius - s.race_radius;
+      (inner ? s.race_radius + m.ball_radius - dist : dist + m.ball_radius - s.race_radius) -
+      s.recess;
   r.delta = delta;
   if (delta <= 0.0) {
     shear = 0.0;

@@ -90,7 +90,7 @@ void ContactSet::collect_races(std::vector<Contact> &out)
     for (int i = 0; i < nlocal; ++i) {
       if (!(atom->mask[i] & groupbit_)) continue;
       const double *c = races_[k]->contact_of(i);
-      if (!(c[0] > 0.0)) continue;
+      if (!(c[0] > 0.0) || c[5] > 0.0) continue;  // no force, or in a defect zone: no current
       Contact ct;
       ct.tag1 = atom->tag[i];
       ct.race = static_cast<int>(k);
