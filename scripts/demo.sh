@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The README's demo: installs what is missing, builds, runs the SKF 6208 scene and plots it.
+# The README's demo: installs what is missing, builds, runs the SKF 6208 scene healthy and with
+# an inner-race defect, post-processes both (indicators, spectra, diagnosis) and plots them.
 #   scripts/demo.sh [OUTPUT_DIR]      (default: demo-output)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,13 +9,30 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 out=$(realpath -m "${1:-demo-output}")
 mkdir -p "$out"
+post=build/ohmdem-post
 
-mkdir -p "$out/healthy"
-echo "== healthy SKF 6208 at 500 rad/s, F = 320 N (0.05 s simulated)"
-build/ohmdem -in inputs/bearing_6208/in.bearing -var out "$out/healthy" -var tend 0.05 \
-  -var nout 10 -log "$out/healthy/log.liggghts" -screen none
-grep '^BEARING_SUMMARY' "$out/healthy/log.liggghts"
+run() {  # run NAME [-var ...]: 0.12 s of the 6208 at 500 rad/s, F = 320 N
+  local name=$1; shift
+  mkdir -p "$out/$name"
+  echo "== $name: build/ohmdem -in inputs/bearing_6208/in.bearing -var tend 0.12 $*"
+  build/ohmdem -in inputs/bearing_6208/in.bearing -var out "$out/$name" -var tend 0.12 "$@" \
+    -log "$out/$name/log.liggghts" -screen none
+  grep '^BEARING_SUMMARY' "$out/$name/log.liggghts"
+}
+run healthy
+run inner_defect -var defect inner -var size 1.0
 
-echo "== plots"
-gnuplot -e "sig='$out/healthy/signal.txt'; png='$out/healthy_kinematics.png'" scripts/plot_kinematics.gp
-echo "demo done: $out/healthy/signal.txt, $out/healthy_kinematics.png"
+for name in healthy inner_defect; do
+  sig="$out/$name/signal.txt"
+  echo "== $name: indicators of R after the sliding phase"
+  $post stats --from 0.015 "$sig" | grep -v '^#'
+  echo "== $name: diagnosis (bearing and speed read from run.json)"
+  $post diagnose "$sig" | grep -v '^#' | head -12
+  $post plot --kind signal --from 0.03 --to 0.04 --output "$out/${name}_R.png" "$sig"
+  $post plot --kind spectrum --from 0.015 --logy --output "$out/${name}_spectrum.png" "$sig"
+  $post plot --kind envelope --from 0.015 --output "$out/${name}_envelope.png" "$sig"
+done
+gnuplot -e "sig='$out/healthy/signal.txt'; png='$out/healthy_kinematics.png'" \
+  scripts/plot_kinematics.gp
+echo "demo done: figures and signals in $out"
+ls "$out"/*.png
