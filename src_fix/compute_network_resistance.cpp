@@ -223,6 +223,8 @@ bool ComputeNetworkResistance::evaluate_between_races()
   // integral per race and evaluation, not per contact).
   const double holm_hi = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi.ellipticity());
   const double holm_lo = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo.ellipticity());
+  area_hi_ = geo_hi.ellipse(1.0).area;  // S = area(1 N) * fn^(2/3)
+  area_lo_ = geo_lo.ellipse(1.0).area;
   balls_.clear();
   int other = 0;
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -243,19 +245,30 @@ bool ComputeNetworkResistance::evaluate_between_races()
       balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {0.0, ch ? 1.0 : 0.0, double(i)}});
       continue;
     }
-    const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
     double resistance = 0.0;
-    if (model_ != Model::Holm) {
-      const double u[3] = {ch[3] - atom->x[i][0], ch[4] - atom->x[i][1], 0.0};
-      const double w[3] = {cl[3] - atom->x[i][0], cl[4] - atom->x[i][1], 0.0};
-      const double r = atom->radius[i];
-      const double g = ohmdem::eq1_conductance_between(gamma, eh.area, el.area,
-                                                       ohmdem::sphere_volume(r), u, w, r);
-      resistance += g > 0.0 ? 1.0 / g : std::numeric_limits<double>::infinity();
-    }
-    if (model_ != Model::Eq1 && g_hi > 0.0 && g_lo > 0.0) {
-      resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi / eh.a;
-      resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo / el.a;
+    const double u[3] = {ch[3] - atom->x[i][0], ch[4] - atom->x[i][1], 0.0};
+    const double w[3] = {cl[3] - atom->x[i][0], cl[4] - atom->x[i][1], 0.0};
+    const double dot = u[0] * w[0] + u[1] * w[1];
+    const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1]));
+    const double r = atom->radius[i];
+    if (model_ == Model::Eq1 && dot <= 0.0 && norms > 0.0) {
+      // Spots facing each other (the bearing): S ∝ fn^(2/3), so S_hi*S_lo needs one cube root;
+      // for an obtuse angle 1 - cos(theta) >= 1 and the small-angle clamp cannot apply.
+      const double p = std::cbrt(ch[0] * cl[0]);
+      const double g = gamma * area_hi_ * area_lo_ * p * p /
+                       (2.0 * ohmdem::sphere_volume(r) * (1.0 - dot / norms));
+      resistance = 1.0 / g;
+    } else {
+      const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
+      if (model_ != Model::Holm) {
+        const double g = ohmdem::eq1_conductance_between(gamma, eh.area, el.area,
+                                                         ohmdem::sphere_volume(r), u, w, r);
+        resistance += g > 0.0 ? 1.0 / g : std::numeric_limits<double>::infinity();
+      }
+      if (model_ != Model::Eq1 && g_hi > 0.0 && g_lo > 0.0) {
+        resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi / eh.a;
+        resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo / el.a;
+      }
     }
     if (!(g_hi > 0.0) || !(g_lo > 0.0)) resistance = std::numeric_limits<double>::infinity();
     balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {1.0 / resistance, 0.5, double(i)}});
@@ -265,7 +278,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
   if (any_other) return false;  // a third conducting race: the general network handles it
 
   // Conductances added in tag order: the same R with any number of processes.
-  const auto all = ohmdem::gather_by_tag<3>(balls_, world);
+  const auto &all = balls_gather_.gather(balls_, world);
   double conductance = 0.0;
   int paths = 0, dead = 0;
   for (const auto &b : all) {

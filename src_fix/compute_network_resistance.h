@@ -70,6 +70,8 @@ class ComputeNetworkResistance : public Compute {
   bool warned_no_path_ = false;
   // closed form, per local ball: conductance, potential factor, local index
   std::vector<ohmdem::TaggedValues<3>> balls_;
+  ohmdem::OrderedGather<3> balls_gather_;
+  double area_hi_ = 0, area_lo_ = 0;  // contact area at 1 N on each electrode race (m^2)
   int nmax_ = 0;
 };
 

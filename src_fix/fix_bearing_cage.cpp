@@ -126,7 +126,8 @@ void FixBearingCage::init()
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
   defects_.clear();
   for (int k = 0; k < modify->nfix; ++k)
-    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k])) defects_.push_back(d);
+    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))
+      if (d->kind() == FixBearingDefect::Kind::Cage) defects_.push_back(d);
 }
 
 void FixBearingCage::build_model()

@@ -175,8 +175,8 @@ bool FixBearingDefect::active() const
   return update->ntimestep * update->dt >= start_;  // the deck's clock: step*dt
 }
 
-double FixBearingDefect::recess(const FixBearingRace *race, tagint tag, double contact_angle,
-                                double ball_direction, bool &masked) const
+double FixBearingDefect::recess(const FixBearingRace *race, tagint tag, double dx, double dy,
+                                bool &masked) const
 {
   if (!active()) return 0.0;
   double s = 0.0;
@@ -184,11 +184,13 @@ double FixBearingDefect::recess(const FixBearingRace *race, tagint tag, double c
   pit.depth = depth_;
   if ((kind_ == Kind::Inner || kind_ == Kind::Outer) && race == race_) {
     const double R = race->current_radius();
-    s = R * ohmdem::wrap_angle(contact_angle - zone_centre());
+    s = R * ohmdem::wrap_angle(std::atan2(dy, dx) - zone_centre());
     pit.width = arc_ > 0.0 ? arc_ : R * size_;
     pit.ball_radius = race->contact_model().ball_radius;
   } else if (kind_ == Kind::Ball && tag == ball_) {
-    s = ball_radius_ * ohmdem::wrap_angle(ball_direction - zone_centre());
+    // Direction from the ball centre to the contact: toward the axis on an inner race.
+    const double direction = race->is_inner() ? std::atan2(-dy, -dx) : std::atan2(dy, dx);
+    s = ball_radius_ * ohmdem::wrap_angle(direction - zone_centre());
     pit.width = arc_ > 0.0 ? arc_ : ball_radius_ * size_;
     pit.ball_radius = ball_radius_;
   } else {

@@ -38,11 +38,10 @@ class FixBearingDefect : public Fix {
 
   Kind kind() const { return kind_; }
   // For fix bearing/race: how far the surface falls away under the contact of ball `tag`
-  // with `race` (m), given the angle of the contact point about the race centre and the
-  // direction angle from the ball centre to the contact point (lab frame, rad); `masked` is
-  // set when the contact point lies in the zone (no current).
-  double recess(const FixBearingRace *race, tagint tag, double contact_angle,
-                double ball_direction, bool &masked) const;
+  // with `race` (m); (dx, dy) is the vector from the race centre to the ball centre, on which
+  // the contact lies. `masked` is set when the contact point lies in the zone (no current).
+  double recess(const FixBearingRace *race, tagint tag, double dx, double dy,
+                bool &masked) const;
   // For fix bearing/cage: whether the wall on `side` (+1 leading, -1 trailing, in the sense
   // of increasing angle) of pocket k is broken.
   bool breaks_wall(const FixBearingCage *cage, int pocket, int side) const;

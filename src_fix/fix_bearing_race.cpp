@@ -177,7 +177,9 @@ void FixBearingRace::init()
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
   defects_.clear();
   for (int k = 0; k < modify->nfix; ++k)
-    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k])) defects_.push_back(d);
+    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))
+      if (d->kind() != FixBearingDefect::Kind::None && d->kind() != FixBearingDefect::Kind::Cage)
+        defects_.push_back(d);  // only the defects that can touch a race contact
 }
 
 // Ball type and radius of the group, the materials, and the Hertz model built from them.
@@ -372,12 +374,10 @@ void FixBearingRace::post_force(int)
 // when the contact point lies in a defect zone (the contact then carries no current).
 double FixBearingRace::defect_recess(int i, bool &in_zone) const
 {
+  // The contact lies on the line from the race centre to the ball centre.
   const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
-  const double contact_angle = std::atan2(dy, dx);  // the contact is on the radial line
-  const double ball_direction = inner_ ? std::atan2(-dy, -dx) : contact_angle;
   double recess = 0.0;
-  for (const auto *d : defects_)
-    recess += d->recess(this, atom->tag[i], contact_angle, ball_direction, in_zone);
+  for (const auto *d : defects_) recess += d->recess(this, atom->tag[i], dx, dy, in_zone);
   return recess;
 }
 

@@ -23,7 +23,8 @@ run() {
     t=$(/usr/bin/python3 -c "print(min($t, $tk))")
   done
   local r
-  r=$(tail -1 "$WORK/$name/signal.txt" | awk '{print $NF}')
+  r=$(awk 'NR == 1 {for (i = 2; i <= NF; i++) if ($i == "R") c = i - 1} END {print $c}' \
+      "$WORK/$name/signal.txt")
   echo "$name $(/usr/bin/python3 -c "print($t/$STEPS)") $r"
 }
 

@@ -173,15 +173,40 @@ def test_sizes(exe, src, wd):
                   f"{(NB / (NB - 1)) * ((NB - 1) / NB) ** (4 / 3):.4f})")
 
 
+def test_diagnose(exe, src, wd, post):
+    """ohmdem-post diagnose on the engine's own signals: each defect kind identified, the
+    healthy bearing and the (insulating) cage defect seen as no electrical defect."""
+    import json
+    for defect, expected in (("none", "none"), ("inner", "inner"), ("outer", "outer"),
+                             ("ball", "ball"), ("cage", "none")):
+        run(exe, src, wd, f"diag_{defect}", defect=defect, size=1.0)
+        path = os.path.join(wd, f"diag_{defect}", "signal.txt")
+        res = subprocess.run([post, "diagnose", "--format", "json", path], capture_output=True,
+                             text=True)
+        if res.returncode != 0:
+            sys.exit(f"FAIL: ohmdem-post diagnose {path}: {res.stderr}")
+        j = json.loads(res.stdout)
+        size = j.get("size") or {}
+        what = f", size estimate {size['size_deg']:.2f} deg" if size.get("valid") else ""
+        check(j["defect"] == expected,
+              f"{defect} run: diagnosed '{j['defect']}' (score {j['score']:.2f}, "
+              f"{j['frequency_hz']} Hz{what}); expected '{expected}'")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
+    p.add_argument("--post", help="ohmdem-post, for the diagnose test")
     a = p.parse_args()
     with tempfile.TemporaryDirectory(prefix=f"ohmdem_defect_{a.test}_") as wd:
-        {"frequencies": test_frequencies, "sizes": test_sizes}[a.test](
-            os.path.abspath(a.exe), os.path.abspath(a.src), wd)
+        if a.test == "diagnose":
+            test_diagnose(os.path.abspath(a.exe), os.path.abspath(a.src), wd,
+                          os.path.abspath(a.post))
+        else:
+            {"frequencies": test_frequencies, "sizes": test_sizes}[a.test](
+                os.path.abspath(a.exe), os.path.abspath(a.src), wd)
     if failed:
         sys.exit(1)
     print("all checks passed")
