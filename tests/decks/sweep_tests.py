@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""The partition sweep (inputs/bearing_6208/in.sweep): folders, identical signals whatever
+runs the case, resume after a kill, and a bad case failing alone.
+Usage: sweep_tests.py --exe OHMDEM --src SOURCE_DIR"""
+import argparse
+import hashlib
+import os
+import subprocess
+import sys
+import tempfile
+
+failed = False
+
+
+def check(cond, msg):
+    global failed
+    print(("ok   " if cond else "FAIL ") + msg)
+    failed |= not cond
+
+
+def digest(path):
+    return hashlib.sha256(open(path, "rb").read()).hexdigest()
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("--exe", required=True)
+    p.add_argument("--src", required=True)
+    a = p.parse_args()
+    exe = os.path.abspath(a.exe)
+    deck = os.path.join(os.path.abspath(a.src), "inputs", "bearing_6208")
+    mpi = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"]
+
+    def sweep(wd, root, *extra):
+        cmd = mpi + [exe, "-partition", "2x1", "-in", os.path.join(deck, "in.sweep"),
+                     "-var", "here", deck, "-var", "bearing", os.path.join(deck, "in.bearing"),
+                     "-var", "root", root, "-var", "tend", "0.003", *extra]
+        res = subprocess.run(cmd, cwd=wd, capture_output=True, text=True)
+        return res.returncode, res.stdout + res.stderr
+
+    with tempfile.TemporaryDirectory(prefix="ohmdem_sweep_") as wd:
+        root = os.path.join(wd, "sweep")
+        rc, out = sweep(wd, root)
+        cases = ["0.5", "1.0", "2.0", "3.0"]
+        folders = [os.path.join(root, f"size_{c}") for c in cases]
+        check(rc == 0 and all(os.path.exists(os.path.join(f, "signal.txt")) for f in folders),
+              "2-partition sweep: one folder with signal.txt per case")
+        check("sweep: 4/4 cases done" in out, "progress announced on the terminal (k/N done)")
+
+        # The same case alone, and with 2 MPI processes, gives the identical signal.
+        for name, cmd in (("alone", [exe]), ("2 processes", mpi + [exe])):
+            out_dir = os.path.join(wd, name.replace(" ", "_"))
+            subprocess.run(cmd + ["-in", os.path.join(deck, "in.bearing"), "-var", "out", out_dir,
+                                  "-var", "defect", "inner", "-var", "size", "1.0",
+                                  "-var", "tend", "0.003", "-log", "none", "-screen", "none"],
+                           cwd=wd, check=True, capture_output=True)
+            check(digest(os.path.join(out_dir, "signal.txt")) ==
+                  digest(os.path.join(root, "size_1.0", "signal.txt")),
+                  f"case size=1.0: the signal {name} is identical to the sweep's")
+
+        # Resume: a killed case (no 'done' mark) runs again; finished ones are left untouched.
+        before = {f: digest(os.path.join(f, "signal.txt")) for f in folders}
+        stamps = {f: os.stat(os.path.join(f, "signal.txt")).st_mtime_ns for f in folders}
+        killed = folders[2]
+        with open(os.path.join(killed, "status.lmp"), "w") as fh:
+            fh.write("# sweep status of this case (read by in.sweep)\n")
+        with open(os.path.join(killed, "signal.txt"), "w") as fh:
+            fh.write("# time\n0.0\n")  # what a kill leaves: a truncated file
+        rc, out = sweep(wd, root)
+        untouched = all(os.stat(os.path.join(f, "signal.txt")).st_mtime_ns == stamps[f]
+                        for f in folders if f != killed)
+        check(rc == 0 and untouched, "resume: finished cases skipped, their files untouched")
+        check(digest(os.path.join(killed, "signal.txt")) == before[killed],
+              "resume: the killed case ran again and gives the same signal")
+
+        # A bad case fails alone.
+        root2 = os.path.join(wd, "bad")
+        rc, out = sweep(wd, root2, "-var", "sizes", "1.0 40 2.0", "-var", "ncases", "3")
+        check(rc == 0 and "size=40 FAILED" in out, "an impossible size fails with a message")
+        check(all(os.path.exists(os.path.join(root2, f"size_{c}", "signal.txt"))
+                  for c in ("1.0", "2.0")), "the other cases still finish")
+    if failed:
+        sys.exit(1)
+    print("all checks passed")
+
+
+if __name__ == "__main__":
+    main()
