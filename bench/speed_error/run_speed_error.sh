@@ -1,0 +1,78 @@
+#!/bin/bash
+# Speed against error on the SKF 6208 scene with a 1 deg inner-race defect: for each time step
+# and mode, the wall time per simulated second (R computed at every step, signal.txt written at
+# 100 kHz) next to the error in R and in the identified defect frequency against the finest
+# run (dt = 2.5e-7 s).
+# Prints a table, writes OUT/speed_error.csv and OUT/speed_error.png.
+#   bench/speed_error/run_speed_error.sh [OUT] [TEND]        (defaults: speed-error, 0.1 s)
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
+POST=${POST:-$ROOT/build/ohmdem-post}
+OUT=$(realpath -m "${1:-speed-error}")
+TEND=${2:-0.1}
+mkdir -p "$OUT"
+
+# case NAME DT [-var ...]: one run; prints nothing, leaves OUT/NAME/{signal.txt,log,diag.json}
+case_run() {
+  local name=$1 dt=$2; shift 2
+  local nout
+  nout=$(/usr/bin/python3 -c "print(max(1, round(1e-5 / $dt)))")  # output at 100 kHz
+  mkdir -p "$OUT/$name"
+  "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$OUT/$name" -var tend "$TEND" \
+    -var dt "$dt" -var nout "$nout" -var Revery 1 -var defect inner -var size 1.0 \
+    -log "$OUT/$name/log.liggghts" -screen none "$@"
+  "$POST" diagnose --format json "$OUT/$name/signal.txt" > "$OUT/$name/diag.json"
+}
+
+case_run ref_greenwood 2.5e-7
+case_run ref_exact 2.5e-7 -var area exact
+for dt in 5e-7 1e-6 2e-6 5e-6 1e-5; do
+  case_run "greenwood_dt$dt" "$dt"
+  case_run "exact_dt$dt" "$dt" -var area exact
+done
+case_run "general_dt1e-6" 1e-6 -var closedform no
+
+/usr/bin/python3 - "$OUT" "$TEND" <<'PY'
+import json, os, re, sys
+import numpy as np
+out, tend = sys.argv[1], float(sys.argv[2])
+def load(name):
+    path = os.path.join(out, name, "signal.txt")
+    names = open(path).readline().lstrip("#").split()
+    a = np.loadtxt(path)
+    s = {n: a[:, i] for i, n in enumerate(names)}
+    keep = s["time"] > 0.015
+    log = open(os.path.join(out, name, "log.liggghts")).read()
+    loop = sum(float(x) for x in re.findall(r"^Loop time of (\S+)", log, re.M))
+    diag = json.load(open(os.path.join(out, name, "diag.json")))
+    return {"R": s["R"][keep].mean(), "wall": loop / tend, "f": diag["frequency_hz"] or float("nan"),
+            "defect": diag["defect"]}
+ref = {m: load(f"ref_{m}") for m in ("greenwood", "exact")}
+rows = []
+for m in ("greenwood", "exact"):
+    for dt in ("5e-7", "1e-6", "2e-6", "5e-6", "1e-5"):
+        r = load(f"{m}_dt{dt}")
+        rows.append((f"{m}", dt, r["wall"], abs(r["R"] / ref[m]["R"] - 1), abs(r["f"] / ref[m]["f"] - 1), r["defect"]))
+g = load("general_dt1e-6")
+rows.append(("greenwood, general solve", "1e-6", g["wall"], abs(g["R"] / ref["greenwood"]["R"] - 1),
+             abs(g["f"] / ref["greenwood"]["f"] - 1), g["defect"]))
+hdr = f"{'mode':<26} {'dt (s)':>7} {'wall s per sim. s':>18} {'error R':>10} {'error f_defect':>15}  diagnosis"
+print(f"SKF 6208, 1 deg inner defect, {tend} s simulated, R at every step, output 100 kHz; reference dt = 2.5e-7 s")
+print(hdr)
+csv = ["mode,dt_s,wall_s_per_sim_s,error_R,error_f,diagnosis"]
+for m, dt, w, eR, ef, d in rows:
+    print(f"{m:<26} {dt:>7} {w:>18.3f} {eR:>10.2e} {ef:>15.2e}  {d}")
+    csv.append(f"{m},{dt},{w:.6g},{eR:.6g},{ef:.6g},{d}")
+print(f"greenwood vs exact areas at the reference step: R differs by "
+      f"{ref['greenwood']['R'] / ref['exact']['R'] - 1:+.2%} (model difference, not a numerical error)")
+open(os.path.join(out, "speed_error.csv"), "w").write("\n".join(csv) + "\n")
+dat = "\n".join(f"{w} {max(eR, 1e-16)} {max(ef, 1e-16)}" for m, dt, w, eR, ef, d in rows if m == "greenwood")
+open(os.path.join(out, "speed_error_greenwood.dat"), "w").write(dat + "\n")
+PY
+gnuplot -e "set terminal pngcairo size 900,600; set output '$OUT/speed_error.png'; \
+  set logscale xy; set xlabel 'wall time per simulated second (s)'; set ylabel 'relative error'; \
+  set title 'SKF 6208, inner defect: error against cost (greenwood areas, dt from 5e-7 to 1e-5 s)'; \
+  plot '$OUT/speed_error_greenwood.dat' using 1:2 with linespoints lw 2 title 'mean R', \
+       '' using 1:3 with linespoints lw 2 title 'defect frequency'"
+echo "wrote $OUT/speed_error.csv and $OUT/speed_error.png"
