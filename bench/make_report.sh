@@ -28,8 +28,6 @@ out = sys.argv[1]
 def text(name):
     p = os.path.join(out, name)
     return open(p).read() if os.path.exists(p) else "(missing)"
-checks = [l[5:] for l in text("validation.log").splitlines() if re.match(r"^\d+: (ok|FAIL) ", l)
-          for l in [re.sub(r"^\d+: ", "", l)]]
 checks = [re.sub(r"^\d+: ", "", l) for l in text("validation.log").splitlines()
           if re.match(r"^\d+: (ok  |FAIL|     )", l)]
 study = text("study/study.md").replace("](", "](study/")
