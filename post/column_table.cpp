@@ -59,6 +59,7 @@ void ColumnTable::init_columns(std::size_t n)
   columns.assign(n, {});
   first_text.assign(n, "");
   first_text_line.assign(n, 0);
+  text.assign(n, {});
   digits.assign(n, 0);
   max_abs.assign(n, 0.0);
 }

@@ -22,6 +22,9 @@ struct ColumnTable {
   // CSV files may hold text cells (stored as NaN): the first one of each column, and its line
   std::vector<std::string> first_text;
   std::vector<std::size_t> first_text_line;
+  // CSV: per column, empty while the column has only numbers; else one entry per row, the cell
+  // as written (unquoted) for a text cell, "" for a number or an empty cell
+  std::vector<std::vector<std::string>> text;
 
   std::size_t rows() const { return line_of_row.size(); }
   std::size_t cols() const { return names.size(); }

@@ -26,23 +26,35 @@ std::string quoted(std::string_view s)
 
 namespace {
 
+// The cells of a CSV line; a comma between double quotes ("a, b", as write_csv quotes text
+// holding commas) does not split.
 std::vector<std::string_view> split_commas(std::string_view line)
 {
   std::vector<std::string_view> out;
   std::size_t start = 0;
-  for (;;) {
-    const std::size_t c = line.find(',', start);
-    out.push_back(trim(line.substr(start, c == std::string_view::npos ? c : c - start)));
-    if (c == std::string_view::npos) break;
-    start = c + 1;
+  bool quoted = false;
+  for (std::size_t i = 0;; ++i) {
+    if (i == line.size() || (line[i] == ',' && !quoted)) {
+      out.push_back(trim(line.substr(start, i - start)));
+      if (i == line.size()) break;
+      start = i + 1;
+    } else if (line[i] == '"') {
+      quoted = !quoted;
+    }
   }
   return out;
 }
 
+// A quoted cell without its quotes, a doubled quote inside read as one.
 std::string unquote(std::string_view s)
 {
-  if (s.size() >= 2 && s.front() == '"' && s.back() == '"') s = s.substr(1, s.size() - 2);
-  return std::string(s);
+  if (s.size() < 2 || s.front() != '"' || s.back() != '"') return std::string(s);
+  std::string out;
+  for (std::size_t i = 1; i + 1 < s.size(); ++i) {
+    out += s[i];
+    if (s[i] == '"' && i + 2 < s.size() && s[i + 1] == '"') ++i;
+  }
+  return out;
 }
 
 ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
@@ -77,6 +89,10 @@ ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
           t.first_text[c] = cells[c].empty() ? "(empty)" : unquote(cells[c]);
           t.first_text_line[c] = in.line_number();
         }
+        t.text[c].resize(t.rows());  // the rows before: numbers
+        t.text[c].push_back(unquote(cells[c]));
+      } else if (!t.text[c].empty()) {
+        t.text[c].emplace_back();
       }
       t.columns[c].push_back(v);
       t.note_token(c, cells[c], v);

@@ -8,6 +8,7 @@
 #include "../error.h"
 #include "../gnuplot.h"
 #include "../read_table.h"
+#include "../table_select.h"
 #include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
@@ -133,18 +134,30 @@ Figure indicators_figure(const Args &a)
     throw Error("plot --kind indicators needs --x COLUMN and --y COLUMN[,COLUMN...] (columns: " +
                 t.column_list() + ")");
   const std::size_t xc = t.find(a.get("--x"));
-  t.require_finite(xc);
+  // rows chosen by --where, then those with an x value (empty cells, e.g. a parameter a run
+  // lacks or an undefined indicator, are left out and counted)
+  const std::string where = a.get("--where");
+  const std::vector<std::size_t> selected = select_rows(t, where);
+  if (selected.empty())
+    throw Error(t.source + ": no row satisfies --where " + where + " (" + std::to_string(t.rows()) +
+                " rows)");
+  std::size_t undefined = 0;
+  const std::vector<std::size_t> with_x = defined_rows(t, xc, selected, &undefined);
+  if (undefined)
+    std::cout << undefined << " row(s) without a value of " << t.names[xc] << " left out\n";
   Figure fig;
   fig.xlabel = t.names[xc];
   std::string ys;
   for (const std::string &name : split_list(a.get("--y"))) {
     const std::size_t yc = t.find(name);
-    t.require_finite(yc);
+    std::vector<std::size_t> order = defined_rows(t, yc, with_x, &undefined);
+    if (undefined)
+      std::cout << undefined << " row(s) without a value of " << t.names[yc] << " left out\n";
+    if (order.empty())
+      throw Error(t.source + ": column " + t.names[yc] + " has no value in the rows plotted");
     PlotSeries ser;
     ser.title = t.names[yc];
     ser.style = "linespoints pt 7 ps 1";
-    std::vector<std::size_t> order(t.rows());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
       return t.columns[xc][p] < t.columns[xc][q];
     });
@@ -157,7 +170,7 @@ Figure indicators_figure(const Args &a)
   }
   if (fig.series.empty()) throw Error("option --y names no column");
   fig.ylabel = fig.series.size() == 1 ? ys : "indicator";
-  fig.title = ys + " versus " + t.names[xc];
+  fig.title = ys + " versus " + t.names[xc] + (where.empty() ? "" : " (" + where + ")");
   fig.logy = a.has("--logy");
   return fig;
 }
@@ -185,6 +198,9 @@ int run_plot(const std::vector<std::string> &argv)
   a.flag("--no-kurtogram", "envelope of the whole band when no --band is given");
   a.option("--x", "COLUMN", "indicators: the swept parameter column");
   a.option("--y", "COL[,COL]", "indicators: the indicator column(s)");
+  a.option("--where", "COL=VAL[,...]",
+           "indicators: only the rows where every condition holds (COL=VALUE or COL!=VALUE; "
+           "text or numbers), e.g. load=fixed");
   add_input_options(a);
   add_spectrum_options(a, "amplitude");
   add_bearing_options(a);

@@ -28,6 +28,8 @@ const std::vector<Command> &commands()
        run_diagnose},
       {"plot", "PNG figures with gnuplot: signal, spectrum with defect frequencies, indicators",
        run_plot},
+      {"collect", "the indicators (and parameters, diagnosis) of many run folders in one table",
+       run_collect},
   };
   return table;
 }

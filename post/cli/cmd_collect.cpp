@@ -1,0 +1,327 @@
+// ohmdem-post collect: the indicators of many run folders in one table, one row per run, with
+// the swept parameters read from each run's own run.json.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <set>
+
+#include "../collect.h"
+#include "../diagnose.h"
+#include "../error.h"
+#include "../read_table.h"
+#include "../stats.h"
+#include "commands.h"
+#include "common.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const char *const kDutyColumn = "n_masked";
+
+struct RunResult {
+  std::string run;
+  std::vector<std::pair<std::string, Json>> params;
+  std::string quantity;  // the signal's name (column)
+  double t_start = 0, t_end = 0;
+  Indicators ind;
+  double duty = kNaN;
+  bool has_duty = false;
+  Diagnosis diagnosis;
+};
+
+// Case-insensitive order of run.json keys ("area" < "F" < "load"), byte order as a tie-break.
+bool key_less(const std::string &a, const std::string &b)
+{
+  std::string la = a, lb = b;
+  for (char &c : la) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char &c : lb) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return la != lb ? la < lb : a < b;
+}
+
+std::vector<std::string> split_list(const std::string &s)
+{
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size()) {
+    std::size_t end = s.find(',', start);
+    if (end == std::string::npos) end = s.size();
+    if (end > start) out.push_back(s.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
+Cell param_cell(const Json *v)
+{
+  if (!v) return Cell(kNaN);
+  if (v->is_number()) return Cell(v->number());
+  if (v->is_string()) return Cell(v->string());
+  return Cell(v->boolean() ? "true" : "false");
+}
+
+bool same_value(const Json *p, const Json *q)
+{
+  if (!p || !q) return p == q;
+  if (p->type() != q->type()) return false;
+  if (p->is_number()) return p->number() == q->number();
+  if (p->is_string()) return p->string() == q->string();
+  return p->boolean() == q->boolean();
+}
+
+const Json *find_param(const RunResult &r, const std::string &key)
+{
+  for (const auto &kv : r.params)
+    if (kv.first == key) return &kv.second;
+  return nullptr;
+}
+
+// One run: metadata, window, indicators, duty and (optionally) the diagnosis.
+RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
+                  std::set<std::string> &nonscalar)
+{
+  RunResult r;
+  r.run = run;
+  const std::string signal = run + "/signal.txt", json = run + "/run.json";
+  std::vector<std::string> ns;
+  r.params = run_parameters(json, &ns);
+  nonscalar.insert(ns.begin(), ns.end());
+  const RunMetadata meta = read_run_metadata(json);
+
+  InputOptions o;
+  o.files = {signal};
+  o.format = "table";
+  o.column = a.get("--column");
+  o.time_column = a.get("--time-column");
+  o.resample = a.has("--resample");
+  o.from = a.number("--from");
+  o.to = a.number("--to");
+  if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
+    o.from = *meta.t_sliding_end;
+  o.min_samples = want_diagnosis ? 256 : 2;
+  const Signal s = load_signal(o, meta);
+  r.quantity = s.name;
+  r.t_start = s.time(0);
+  r.t_end = s.time(s.size() - 1);
+  r.ind = indicators(s.x);
+
+  // duty: the count column over the same window (same grid), when the run writes it
+  if (read_table(signal).find_name(kDutyColumn) != ColumnTable::npos) {
+    InputOptions od = o;
+    od.column = kDutyColumn;
+    od.min_samples = 2;
+    r.duty = duty_fraction(load_signal(od, meta).x);
+    r.has_duty = true;
+  }
+
+  if (want_diagnosis) {
+    const BearingChoice bc = bearing_choice(a, meta);
+    if (!bc.geometry)
+      throw Error("--diagnose needs the bearing (run.json \"bearing\" or nb/db/dp, or --bearing)");
+    if (!bc.fr)
+      throw Error("--diagnose needs the shaft speed (run.json \"omega_inner\", or --rpm/--omega)");
+    DiagnoseOptions d;
+    d.geometry = *bc.geometry;
+    d.fr = *bc.fr;
+    r.diagnosis = diagnose(s, d);
+  }
+  return r;
+}
+
+std::string join(const std::vector<std::string> &v, const std::string &sep)
+{
+  std::string s;
+  for (const auto &x : v) s += (s.empty() ? "" : sep) + x;
+  return s;
+}
+
+}  // namespace
+
+int run_collect(const std::vector<std::string> &argv)
+{
+  Args a("collect", "[options] DIR...",
+         "Gathers the runs found in the folders given (a run is a folder holding signal.txt and\n"
+         "run.json) into one table: one row per run, sorted by folder (natural order), with the\n"
+         "folder, the swept parameters (every scalar key of the runs' run.json, sorted; empty\n"
+         "where a run lacks one), the analysis window, the indicators of `stats` over it, the\n"
+         "duty (fraction of samples with n_masked >= 1) and, with --diagnose, the diagnosis.\n"
+         "The window starts at t_sliding_end of each run.json unless --from or --keep-sliding.");
+  a.section("Runs");
+  a.flag("--recursive", "search the folders given and their subfolders for runs");
+  a.flag("--skip-bad",
+         "skip a run whose data are bad (empty, NaN, too short, bad run.json...) with a "
+         "warning instead of failing");
+  a.option("--params", "KEY[,KEY]", "only these run.json keys, in this order (default: all)");
+  a.flag("--varying", "only the run.json keys whose value differs between the runs");
+  a.section("Signal and window");
+  a.option("--column", "NAME|N", "signal column of signal.txt", "R");
+  a.option("--time-column", "NAME|N", "time column (default: time, t, TimeStep or Step)");
+  a.flag("--resample", "interpolate non-uniform time stamps linearly (default: refuse them)");
+  a.option("--from", "S", "start of the window for every run (default: t_sliding_end of run.json)");
+  a.option("--to", "S", "end of the window (s) (default: the end of the data)");
+  a.flag("--keep-sliding", "without --from, start at the beginning of the data");
+  a.section("Diagnosis");
+  a.flag("--diagnose",
+         "add the columns diag_defect, diag_score, diag_frequency_Hz, diag_size_deg (as "
+         "`diagnose` with its default options; bearing and speed from each run.json unless "
+         "given below)");
+  add_bearing_options(a);
+  add_output_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  if (a.positional().empty())
+    throw Error("collect: no folder given (see ohmdem-post collect --help)");
+  if (a.has("--params") && a.has("--varying"))
+    throw Error("collect: give --params or --varying, not both");
+  const bool recursive = a.has("--recursive"), skip_bad = a.has("--skip-bad"),
+             want_diagnosis = a.has("--diagnose");
+  // options that apply to every run fail here, not as the first run's error
+  (void)parse_output_format(a.get("--format"));
+  const double from = a.number("--from"), to = a.number("--to");
+  if (std::isfinite(from) && std::isfinite(to) && !(to > from))
+    throw Error("--to (" + a.get("--to") + " s) must be after --from (" + a.get("--from") + " s)");
+  if (want_diagnosis) (void)bearing_choice(a, RunMetadata{});
+
+  std::vector<std::string> given = a.positional();  // sorted for messages: order-independent
+  std::sort(given.begin(), given.end(), natural_less);
+  const RunFolders folders = find_run_folders(given, recursive);
+  if (folders.runs.empty()) {  // one error line, with the reasons, instead of the warnings
+    std::string why;
+    for (std::size_t k = 0; k < folders.skipped.size() && k < 4; ++k)
+      why += "; " + folders.skipped[k].first + ": " + folders.skipped[k].second;
+    if (folders.skipped.size() > 4)
+      why += "; and " + std::to_string(folders.skipped.size() - 4) + " more";
+    throw Error("collect: no run folder (a folder holding signal.txt and run.json) in " +
+                join(given, " ") + (recursive ? "" : " (try --recursive)") + ", " +
+                std::to_string(folders.skipped.size()) + " skipped" + why);
+  }
+  for (const auto &sk : folders.skipped)
+    std::cerr << "WARNING: collect: skipped " << sk.first << ": " << sk.second << "\n";
+
+  std::vector<RunResult> results;
+  std::vector<std::string> bad;
+  std::set<std::string> nonscalar;
+  for (const std::string &run : folders.runs) {
+    try {
+      RunResult r = analyse(a, run, want_diagnosis, nonscalar);
+      if (!results.empty() && r.quantity != results.front().quantity)
+        throw Error("the signal is column '" + r.quantity + "', '" + results.front().quantity +
+                    "' in " + results.front().run + "; choose one with --column");
+      results.push_back(std::move(r));
+    } catch (const Error &e) {
+      if (!skip_bad) throw Error("run " + run + ": " + e.what() + " (--skip-bad skips such runs)");
+      std::cerr << "WARNING: collect: skipped run " << run << ": " << e.what() << "\n";
+      bad.push_back(run);
+    }
+  }
+  if (results.empty())
+    throw Error("collect: none of the " + std::to_string(folders.runs.size()) +
+                " run(s) has usable data (all skipped by --skip-bad)");
+
+  // parameter columns
+  std::vector<std::string> keys;
+  if (a.has("--params")) {
+    keys = split_list(a.get("--params"));
+    for (const auto &k : keys)
+      if (std::none_of(results.begin(), results.end(),
+                       [&](const RunResult &r) { return find_param(r, k) != nullptr; }))
+        throw Error("option --params: no run.json of the runs has the key '" + k + "'");
+  } else {
+    std::set<std::string> all;
+    for (const auto &r : results)
+      for (const auto &kv : r.params) all.insert(kv.first);
+    keys.assign(all.begin(), all.end());
+    std::sort(keys.begin(), keys.end(), key_less);
+    if (a.has("--varying")) {
+      std::vector<std::string> varying;
+      for (const auto &k : keys) {
+        const Json *first = find_param(results.front(), k);
+        for (const auto &r : results)
+          if (!same_value(first, find_param(r, k))) {
+            varying.push_back(k);
+            break;
+          }
+      }
+      keys = varying;
+    }
+  }
+
+  const std::string quantity = results.front().quantity;
+  const std::string unit = unit_of(a, quantity);
+  std::vector<std::string> fixed = {"run", "t_start_s", "t_end_s", "n"};
+  for (const auto &f : indicator_fields())
+    fixed.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
+  const bool any_duty =
+      std::any_of(results.begin(), results.end(), [](const RunResult &r) { return r.has_duty; });
+  if (any_duty) fixed.push_back("duty");
+  if (want_diagnosis)
+    for (const char *c : {"diag_defect", "diag_score", "diag_frequency_Hz", "diag_size_deg"})
+      fixed.emplace_back(c);
+  auto param_column = [&](const std::string &k) {
+    return std::find(fixed.begin(), fixed.end(), k) != fixed.end() ? "param_" + k : k;
+  };
+
+  Report rep;
+  rep.columns.push_back("run");
+  for (const auto &k : keys) rep.columns.push_back(param_column(k));
+  rep.columns.insert(rep.columns.end(), fixed.begin() + 1, fixed.end());
+  for (const auto &r : results) {
+    std::vector<Cell> row{r.run};
+    for (const auto &k : keys) row.push_back(param_cell(find_param(r, k)));
+    row.emplace_back(r.t_start);
+    row.emplace_back(r.t_end);
+    row.emplace_back(r.ind.n);
+    for (const auto &f : indicator_fields()) row.emplace_back(r.ind.*f.value);
+    if (any_duty) row.emplace_back(r.duty);
+    if (want_diagnosis) {
+      const Diagnosis &d = r.diagnosis;
+      row.emplace_back(d.defect);
+      row.emplace_back(d.score);
+      row.emplace_back(d.defect == "none" ? kNaN : d.frequency_hz);
+      row.emplace_back(d.size.valid ? d.size.size_deg : kNaN);
+    }
+    rep.rows.push_back(std::move(row));
+  }
+
+  MetaList &m = rep.meta;
+  m.emplace_back("runs", std::to_string(results.size()) + " collected from " + join(given, " ") +
+                             (recursive ? " (recursive)" : ""));
+  if (!folders.skipped.empty()) {
+    std::vector<std::string> names;
+    for (const auto &sk : folders.skipped) names.push_back(sk.first + " (" + sk.second + ")");
+    m.emplace_back("folders skipped",
+                   std::to_string(folders.skipped.size()) + ": " + join(names, "; "));
+  }
+  if (!bad.empty())
+    m.emplace_back("bad runs skipped", std::to_string(bad.size()) + ": " + join(bad, " "));
+  m.emplace_back("parameters", a.has("--params") ? "--params " + a.get("--params")
+                               : a.has("--varying")
+                                   ? "run.json keys whose value differs between the runs"
+                                   : "every scalar run.json key; empty where a run lacks it");
+  if (!nonscalar.empty())
+    m.emplace_back("non-scalar run.json keys left out",
+                   join(std::vector<std::string>(nonscalar.begin(), nonscalar.end()), " "));
+  m.emplace_back("signal", quantity + (unit.empty() ? "" : " (" + unit + ")"));
+  std::string window =
+      a.has("--from") ? "from " + a.get("--from") + " s (--from)"
+      : a.has("--keep-sliding")
+          ? "from the start of the data"
+          : "from t_sliding_end of each run.json (the start of the data without it)";
+  window += a.has("--to") ? " to " + a.get("--to") + " s" : " to the end of the data";
+  m.emplace_back("window", window);
+  m.emplace_back("kurtosis", "Pearson (normal law = 3)");
+  if (any_duty)
+    m.emplace_back("duty", std::string("fraction of the window's samples with ") + kDutyColumn +
+                               " >= 1 (empty where a run has no " + kDutyColumn + " column)");
+  if (want_diagnosis)
+    m.emplace_back("diagnosis", "as ohmdem-post diagnose with its default options, same window");
+
+  Output out(a);
+  write_report(out.stream(), rep, out.format());
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

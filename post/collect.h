@@ -1,0 +1,56 @@
+// Gathering many runs into one table (ohmdem-post collect): finding the run folders (a folder
+// holding signal.txt and run.json), their swept parameters (the scalar keys of run.json), and
+// the indicators' names and values as `stats` prints them.
+#ifndef OHMDEM_POST_COLLECT_H
+#define OHMDEM_POST_COLLECT_H
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "json.h"
+#include "stats.h"
+
+namespace ohmdem::post {
+
+struct RunFolders {
+  std::vector<std::string> runs;  // display paths, sorted (natural_less), no duplicates
+  std::vector<std::pair<std::string, std::string>> skipped;  // path, reason (in scan order)
+};
+
+// Each path given is a run folder, a run's signal.txt (its folder is the run), or - with
+// `recursive` - a folder searched with its subfolders (hidden ones excepted, symbolic links to
+// folders not followed). Skipped, with the reason: a given path that is not a run (does not
+// exist, lacks signal.txt or run.json; with `recursive`: holds no run at all), and, while
+// searching, a folder holding one of the two files but not the other. The same folder reached
+// twice (given twice, or under two given folders) counts once, under its smallest display
+// path, so the result does not depend on the order of `paths`.
+RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursive);
+
+// Natural order of paths: runs of digits compare by value ("size_2" < "size_10"), then
+// byte-wise as a tie-break. A strict weak ordering.
+bool natural_less(const std::string &a, const std::string &b);
+
+// The scalar members (numbers, strings, booleans) of the JSON object in `path`, in file order;
+// null members are left out, arrays and objects are listed in `nonscalar`. Throws Error on a
+// missing file or invalid JSON.
+std::vector<std::pair<std::string, Json>> run_parameters(
+    const std::string &path, std::vector<std::string> *nonscalar = nullptr);
+
+// The indicators of `stats`, in its order: key, definition, dimensionless (no unit suffix in
+// CSV column names).
+struct IndicatorField {
+  const char *key;
+  const char *definition;
+  bool dimensionless;
+  double Indicators::*value;
+};
+const std::vector<IndicatorField> &indicator_fields();
+
+// Fraction of the samples of a count signal (such as n_masked) that are >= 1 (>= 0.5, so that
+// linearly resampled counts are rounded); NaN for an empty signal.
+double duty_fraction(const std::vector<double> &count);
+
+}  // namespace ohmdem::post
+
+#endif
