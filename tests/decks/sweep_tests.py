@@ -26,6 +26,7 @@ def main():
     p = argparse.ArgumentParser()
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
+    p.add_argument("--post", required=True)
     a = p.parse_args()
     exe = os.path.abspath(a.exe)
     deck = os.path.join(os.path.abspath(a.src), "inputs", "bearing_6208")
@@ -46,6 +47,17 @@ def main():
         check(rc == 0 and all(os.path.exists(os.path.join(f, "signal.txt")) for f in folders),
               "2-partition sweep: one folder with signal.txt per case")
         check("sweep: 4/4 cases done" in out, "progress announced on the terminal (k/N done)")
+        csv = os.path.join(wd, "collected.csv")
+        res = subprocess.run([a.post, "collect", "--format", "csv", "--from", "0.001",
+                              "--output", csv] + folders, capture_output=True, text=True)
+        rows = [l for l in open(csv).read().splitlines() if l and not l.startswith("#")] \
+            if res.returncode == 0 else []
+        header = rows[0].split(",") if rows else []
+        sizes = sorted(float(r.split(",")[header.index("size_deg")]) for r in rows[1:]) \
+            if "size_deg" in header else []
+        check(len(rows) == 5 and sizes == [0.5, 1.0, 2.0, 3.0],
+              f"ohmdem-post collect: one row per case with its size ({len(rows) - 1} rows) "
+              f"{res.stderr.strip()}")
 
         # The same case alone, and with 2 MPI processes, gives the identical signal.
         for name, cmd in (("alone", [exe]), ("2 processes", mpi + [exe])):
