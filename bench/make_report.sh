@@ -8,18 +8,24 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$(realpath -m "${1:-report}")
 mkdir -p "$OUT"
+WORK=$(mktemp -d)      # the runs' signals (hundreds of MB): only figures and tables are kept
+trap 'rm -rf "$WORK"' EXIT
 cd "$ROOT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 echo "== defect study (Fig. 13, Fig. 15)"
-inputs/bearing_6208/study_defects.sh "$OUT/study" 0.12 > "$OUT/study.log"
+inputs/bearing_6208/study_defects.sh "$WORK/study" 0.12 > "$OUT/study.log"
+mkdir -p "$OUT/study"
+cp "$WORK"/study/*.png "$WORK"/study/*.csv "$WORK"/study/study.md "$OUT/study/"
 echo "== validation numbers (test suite)"
 ctest --test-dir build -V -R "deck_hertz_static|deck_kinematics|deck_radial|deck_resistance|validation_|defect_frequencies|defect_sizes|defect_diagnose" \
   > "$OUT/validation.log" 2>&1 || true
 echo "== speed: stock LIGGGHTS scenes, electrical cost, speed against error, sweep"
-bench/stock/run_stock.sh -n 30000 -o "$OUT/stock" > "$OUT/stock.log" 2>&1 || true
+bench/stock/run_stock.sh -n 30000 -o "$WORK/stock" > "$OUT/stock.log" 2>&1 || true
 bench/resistance/run_resistance_bench.sh 30000 > "$OUT/resistance.log"
-bench/speed_error/run_speed_error.sh "$OUT/speed_error" 0.1 > "$OUT/speed_error.log"
+bench/speed_error/run_speed_error.sh "$WORK/speed_error" 0.1 > "$OUT/speed_error.log"
+mkdir -p "$OUT/speed_error"
+cp "$WORK"/speed_error/speed_error.png "$WORK"/speed_error/speed_error.csv "$OUT/speed_error/"
 bench/sweep/run_sweep_bench.sh 0.05 > "$OUT/sweep.log"
 
 /usr/bin/python3 - "$OUT" <<'PY'
