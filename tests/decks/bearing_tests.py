@@ -15,6 +15,9 @@ import tempfile
 
 import numpy as np
 
+import deck_checks
+from deck_checks import check, finish
+
 # SKF 6208, the paper's Table 1 and our deck defaults.
 DB, DEXT, DINN, NB = 0.0126, 0.0732, 0.048, 13
 RB = DB / 2
@@ -53,20 +56,7 @@ class Runner:
 
 
 def read_signal(folder):
-    path = os.path.join(folder, "signal.txt")
-    with open(path) as f:
-        names = f.readline().lstrip("#").split()
-    data = np.loadtxt(path, ndmin=2)
-    return {n: data[:, i] for i, n in enumerate(names)}
-
-
-def check(cond, msg):
-    print(("ok   " if cond else "FAIL ") + msg)
-    if not cond:
-        check.failed = True
-
-
-check.failed = False
+    return deck_checks.read_signal(os.path.join(folder, "signal.txt"))
 
 
 def sliding_end(sig, omega_inner, tol=0.01):
@@ -287,9 +277,7 @@ def main():
             "mpi": lambda: test_mpi(r),
             "stability": lambda: test_stability(r, a.dt),
         }[a.test]()
-    if check.failed:
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":

@@ -15,19 +15,12 @@ import tempfile
 
 import numpy as np
 
+from deck_checks import check, finish, read_signal
+
 DB, DEXT, DINN, NB = 0.0126, 0.0732, 0.048, 13
 D = (DEXT + DINN) / 2
 T0, T1 = 0.015, 0.12  # analysis window: after the sliding phase (11.4 ms), 0.105 s long
 F = 320.0
-failed = False
-
-
-def check(cond, msg):
-    global failed
-    print(("ok   " if cond else "FAIL ") + msg)
-    failed |= not cond
-
-
 def kinematic(omega):
     """Harris, zero contact angle: FTF, BPFO, BPFI, BSF (Hz) for shaft speed omega (rad/s)."""
     fr = omega / (2 * math.pi)
@@ -47,10 +40,7 @@ def run(exe, src, wd, name, **var):
     res = subprocess.run(cmd, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit(f"FAIL: {' '.join(cmd)}\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
-    path = os.path.join(out, "signal.txt")
-    names = open(path).readline().lstrip("#").split()
-    data = np.loadtxt(path)
-    sig = {n: data[:, i] for i, n in enumerate(names)}
+    sig = read_signal(os.path.join(out, "signal.txt"))
     keep = sig["time"] > T0
     return {n: v[keep] for n, v in sig.items()}
 
@@ -207,9 +197,7 @@ def main():
         else:
             {"frequencies": test_frequencies, "sizes": test_sizes}[a.test](
                 os.path.abspath(a.exe), os.path.abspath(a.src), wd)
-    if failed:
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":

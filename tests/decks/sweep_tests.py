@@ -9,14 +9,7 @@ import subprocess
 import sys
 import tempfile
 
-failed = False
-
-
-def check(cond, msg):
-    global failed
-    print(("ok   " if cond else "FAIL ") + msg)
-    failed |= not cond
-
+from deck_checks import check, finish
 
 def digest(path):
     return hashlib.sha256(open(path, "rb").read()).hexdigest()
@@ -91,9 +84,7 @@ def main():
         check(rc == 0 and "size=40 FAILED" in out, "an impossible size fails with a message")
         check(all(os.path.exists(os.path.join(root2, f"size_{c}", "signal.txt"))
                   for c in ("1.0", "2.0")), "the other cases still finish")
-    if failed:
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":

@@ -16,14 +16,7 @@ import tempfile
 
 import numpy as np
 
-failed = False
-
-
-def check(cond, msg):
-    global failed
-    print(("ok   " if cond else "FAIL ") + msg)
-    failed |= not cond
-
+from deck_checks import check, finish
 
 def run(exe, deck, out, nprocs=1, **var):
     os.makedirs(out, exist_ok=True)
@@ -176,9 +169,7 @@ def main():
                   f"packing: R with 1 and 2 processes {R[0]:.17g} / {R[1]:.17g}")
         else:
             sys.exit(f"unknown test {a.test}")
-    if failed:
-        sys.exit(1)
-    print("all checks passed")
+    finish()
 
 
 if __name__ == "__main__":
