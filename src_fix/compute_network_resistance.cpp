@@ -159,8 +159,11 @@ void ComputeNetworkResistance::init()
   resolve("low", low_);
   conductivity_ = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
       "electricalConductivity", "property/global", "peratomtype", atom->ntypes, 0, style));
+  gamma_type_.assign(atom->ntypes + 1, 0.0);  // per atom type, 1-based
+  geometry_ready_ = false;
   for (int t = 1; t <= atom->ntypes; ++t) {
     const double g = conductivity_->compute_vector(t - 1);
+    gamma_type_[t] = g;
     if (!(g >= 0.0) || !std::isfinite(g)) {
       const std::string msg = "compute network/resistance: electricalConductivity of type " +
                               std::to_string(t) + " must be >= 0 (S/m; 0 = insulator), got " +
@@ -217,14 +220,18 @@ bool ComputeNetworkResistance::evaluate_between_races()
   const int nraces = static_cast<int>(races.size());
   const ohmdem::HertzContact &geo_hi = contacts_->race_geometry(high_.index);
   const ohmdem::HertzContact &geo_lo = contacts_->race_geometry(low_.index);
-  const double g_hi = conductivity_->compute_vector(races[high_.index]->race_type() - 1);
-  const double g_lo = conductivity_->compute_vector(races[low_.index]->race_type() - 1);
-  // Holm: b/a is fixed by the geometry, so R_c = rho * holm(1, 1, b/a) / a (one elliptic
-  // integral per race and evaluation, not per contact).
-  const double holm_hi = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi.ellipticity());
-  const double holm_lo = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo.ellipticity());
-  area_hi_ = geo_hi.ellipse(1.0).area;  // S = area(1 N) * fn^(2/3)
-  area_lo_ = geo_lo.ellipse(1.0).area;
+  const double g_hi = gamma_type_[races[high_.index]->race_type()];
+  const double g_lo = gamma_type_[races[low_.index]->race_type()];
+  if (!geometry_ready_) {
+    // Geometry only, once per run: S = S(1 N) * fn^(2/3), and for Holm b/a is fixed, so
+    // R_c = rho * holm(1, 1, b/a) / a (no elliptic integral per contact).
+    area_hi_ = geo_hi.ellipse(1.0).area;
+    area_lo_ = geo_lo.ellipse(1.0).area;
+    holm_hi_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi.ellipticity());
+    holm_lo_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo.ellipticity());
+    geometry_ready_ = true;
+  }
+  const double holm_hi = holm_hi_, holm_lo = holm_lo_;
   balls_.clear();
   int other = 0;
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -238,7 +245,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
       else if (k == low_.index) cl = c;
       else ++other;
     }
-    const double gamma = conductivity_->compute_vector(atom->type[i] - 1);
+    const double gamma = gamma_type_[atom->type[i]];
     if (!(gamma > 0.0) || !(ch || cl)) continue;
     if (!(ch && cl)) {
       // A dead end: no current; its contact node sits at that electrode's potential.

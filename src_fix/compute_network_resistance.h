@@ -71,7 +71,11 @@ class ComputeNetworkResistance : public Compute {
   // closed form, per local ball: conductance, potential factor, local index
   std::vector<ohmdem::TaggedValues<3>> balls_;
   ohmdem::OrderedGather<3> balls_gather_;
-  double area_hi_ = 0, area_lo_ = 0;  // contact area at 1 N on each electrode race (m^2)
+  // Closed form, geometry only (set at the first evaluation of a run): contact area at 1 N
+  // on each electrode race (m^2) and Holm's factor K(e^2)/pi of its ellipse.
+  bool geometry_ready_ = false;
+  double area_hi_ = 0, area_lo_ = 0, holm_hi_ = 0, holm_lo_ = 0;
+  std::vector<double> gamma_type_;  // conductivity of each atom type (S/m), 1-based
   int nmax_ = 0;
 };
 
