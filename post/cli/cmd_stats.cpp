@@ -4,38 +4,13 @@
 #include <iostream>
 
 #include "../error.h"
+#include "../collect.h"
 #include "../stats.h"
 #include "commands.h"
 #include "common.h"
 
 namespace ohmdem::post::cli {
 
-namespace {
-
-struct Definition {
-  const char *key, *definition;
-  bool dimensionless;
-};
-const Definition kIndicators[] = {
-    {"peak", "max |x|", false},
-    {"mean", "mean of x", false},
-    {"rms", "sqrt(mean x^2)", false},
-    {"std", "population standard deviation (ddof 0)", false},
-    {"skewness", "m3 / m2^1.5 (biased)", true},
-    {"kurtosis", "m4 / m2^2, Pearson (normal law = 3)", true},
-    {"crest", "peak / rms", true},
-    {"shape", "rms / mean|x|", true},
-    {"impulse", "peak / mean|x|", true},
-    {"clearance", "peak / (mean sqrt|x|)^2", true},
-};
-
-std::vector<double> values(const Indicators &r)
-{
-  return {r.peak,     r.mean,  r.rms,   r.std,     r.skewness,
-          r.kurtosis, r.crest, r.shape, r.impulse, r.clearance};
-}
-
-}  // namespace
 
 int run_stats(const std::vector<std::string> &argv)
 {
@@ -92,8 +67,7 @@ int run_stats(const std::vector<std::string> &argv)
       o.set("t_start_s", s.time(windows[w].first));
       o.set("t_end_s", s.time(windows[w].second - 1));
       o.set("n", res[w].n);
-      const auto v = values(res[w]);
-      for (std::size_t k = 0; k < v.size(); ++k) o.set(kIndicators[k].key, v[k]);
+      for (const auto &f : indicator_fields()) o.set(f.key, res[w].*f.value);
       return o;
     };
     Json j = windows.size() == 1 && !a.has("--window-length") ? one(0) : Json::object();
@@ -113,22 +87,20 @@ int run_stats(const std::vector<std::string> &argv)
   r.meta = meta_out;
   if (out.format() == OutputFormat::Table && !a.has("--window-length")) {
     r.columns = {"indicator", with_unit("value", ""), "definition"};
-    const auto v = values(res[0]);
-    for (std::size_t k = 0; k < v.size(); ++k)
-      r.rows.push_back({std::string(kIndicators[k].key) +
-                            (kIndicators[k].dimensionless || unit.empty() ? "" : " (" + unit + ")"),
-                        v[k], kIndicators[k].definition});
+    for (const auto &f : indicator_fields())
+      r.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
+                        res[0].*f.value, f.definition});
     r.rows.push_back(
         {"samples", res[0].n,
          "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});
     r.table_digits = 10;
   } else {
     r.columns = {"t_start_s", "t_end_s", "n"};
-    for (const auto &d : kIndicators)
-      r.columns.push_back(d.dimensionless ? d.key : with_unit(d.key, unit));
+    for (const auto &f : indicator_fields())
+      r.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
     for (std::size_t w = 0; w < windows.size(); ++w) {
       std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
-      for (double v : values(res[w])) row.emplace_back(v);
+      for (const auto &f : indicator_fields()) row.emplace_back(res[w].*f.value);
       r.rows.push_back(row);
     }
   }
