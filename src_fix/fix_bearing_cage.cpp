@@ -21,6 +21,7 @@
 #include "material_table.h"
 #include "modify.h"
 #include "style_args.h"
+#include "style_peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -108,12 +109,8 @@ void FixBearingCage::post_create()
 {
   // Which pocket each ball sits in (fixed at the first run; -1 = not yet) and the last
   // pocket force, in a fix property/atom: migrates with the atom, written to restart files.
-  const std::string name = std::string("bearingCage_") + id;
-  if (!modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style, false)) {
-    const char *fixarg[] = {name.c_str(), "all", "property/atom", name.c_str(), "vector",
-                            "yes", "no", "no", "-1.", "0.", "0.", "0."};
-    modify->add_fix_property_atom(12, const_cast<char **>(fixarg), style);
-  }
+  ohmdem::create_peratom_state(modify, std::string("bearingCage_") + id,
+                               {"-1.", "0.", "0.", "0."}, style);  // POCKET, FORCE, FX, FY
   init();
 }
 
@@ -121,9 +118,7 @@ void FixBearingCage::init()
 {
   if (!atom->sphere_flag || !atom->rmass_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere");
-  const std::string name = std::string("bearingCage_") + id;
-  state_ = static_cast<FixPropertyAtom *>(
-      modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+  state_ = ohmdem::find_peratom_state(modify, std::string("bearingCage_") + id, style);
   defects_.clear();
   for (int k = 0; k < modify->nfix; ++k)
     if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))

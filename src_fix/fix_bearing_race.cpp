@@ -24,6 +24,7 @@
 #include "modify.h"
 #include "race_contact.h"
 #include "style_args.h"
+#include "style_peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -157,14 +158,8 @@ void FixBearingRace::post_create()
 {
   // Per-ball contact state (tangential spring history, last forces) in a fix property/atom:
   // it migrates with the atom between processes and is written to restart files.
-  const std::string name = std::string("bearingRace_") + id;
-  if (!modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style, false)) {
-    std::vector<const char *> fixarg = {name.c_str(), "all", "property/atom", name.c_str(),
-                                        "vector", "yes", "no", "no"};
-    for (int k = 0; k < NCOL; ++k) fixarg.push_back("0.");
-    modify->add_fix_property_atom(static_cast<int>(fixarg.size()),
-                                  const_cast<char **>(fixarg.data()), style);
-  }
+  ohmdem::create_peratom_state(modify, std::string("bearingRace_") + id,
+                               std::vector<std::string>(NCOL, "0."), style);
   init();
 }
 
@@ -172,9 +167,7 @@ void FixBearingRace::init()
 {
   if (!atom->sphere_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
-  const std::string name = std::string("bearingRace_") + id;
-  state_ = static_cast<FixPropertyAtom *>(
-      modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, style));
+  state_ = ohmdem::find_peratom_state(modify, std::string("bearingRace_") + id, style);
   defects_.clear();
   for (int k = 0; k < modify->nfix; ++k)
     if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))
