@@ -166,17 +166,9 @@ TEST(Cli, DumpWithStepLengthFromTheLog)
   EXPECT_NE(r.out.find("# sampling rate (Hz): 10"), std::string::npos) << r.out;
 }
 
-bool is_png(const std::string &path)
-{
-  std::ifstream in(path, std::ios::binary);
-  char sig[8] = {};
-  in.read(sig, 8);
-  return in && std::string(sig, 8) == std::string("\x89PNG\r\n\x1a\n", 8);
-}
-
 TEST(Cli, PlotsArePngFiles)
 {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0 && !std::getenv("OHMDEM_GNUPLOT"))
+  if (!test::have_gnuplot())
     GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
   const std::string dir = make_run_dir("run_plot", "ball");
   const std::string sig = dir + "/signal.txt";
@@ -191,7 +183,7 @@ TEST(Cli, PlotsArePngFiles)
   for (const auto &c : cases) {
     const CliRun r = run("plot " + c.args + " --output " + c.png);
     ASSERT_EQ(r.status, 0) << r.out;
-    EXPECT_TRUE(is_png(c.png)) << c.png;
+    EXPECT_TRUE(test::is_png(c.png)) << c.png;
   }
   // indicators versus a parameter, from a CSV written by stats
   const CliRun st =
@@ -202,7 +194,7 @@ TEST(Cli, PlotsArePngFiles)
                        "kurtosis,crest --output " +
                        dir + "/indicators.png");
   ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_TRUE(is_png(dir + "/indicators.png"));
+  EXPECT_TRUE(test::is_png(dir + "/indicators.png"));
   const CliRun bad = run("plot --kind indicators " + dir +
                          "/windows.csv --x nope --y kurtosis "
                          "--output " +

@@ -466,17 +466,9 @@ TEST(Collect, DiagnosisColumnsEqualDiagnose)
       << nb.err;
 }
 
-bool is_png(const std::string &path)
-{
-  std::ifstream in(path, std::ios::binary);
-  char sig[8] = {};
-  in.read(sig, 8);
-  return in && std::string(sig, 8) == std::string("\x89PNG\r\n\x1a\n", 8);
-}
-
 TEST(Collect, PlotIndicatorsOfTheCollectedCsv)
 {
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0 && !std::getenv("OHMDEM_GNUPLOT"))
+  if (!test::have_gnuplot())
     GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
   const std::string root = make_sweep("plot");
   make_run(root + "/fixed_5", R"({"size_deg": 5, "load": "fixed"})", 2000, 40, 8);
@@ -488,13 +480,13 @@ TEST(Collect, PlotIndicatorsOfTheCollectedCsv)
       "--output fixed.png collected.csv",
       root);
   ASSERT_EQ(p.status, 0) << p.err;
-  EXPECT_TRUE(is_png(root + "/fixed.png"));
+  EXPECT_TRUE(test::is_png(root + "/fixed.png"));
   EXPECT_NE(p.out.find("1 row(s) without a value of size_deg left out"), std::string::npos)
       << p.out;
   const Outcome all =
       post("plot --kind indicators --x size_deg --y mean_ohm --output all.png collected.csv", root);
   ASSERT_EQ(all.status, 0) << all.err;
-  EXPECT_TRUE(is_png(root + "/all.png"));
+  EXPECT_TRUE(test::is_png(root + "/all.png"));
   const Outcome none = post(
       "plot --kind indicators --x size_deg --y kurtosis --where load=free --output x.png "
       "collected.csv",

@@ -2,6 +2,7 @@
 #ifndef OHMDEM_TESTS_POST_TEST_UTIL_H
 #define OHMDEM_TESTS_POST_TEST_UTIL_H
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -59,6 +60,21 @@ inline std::string write_temp(const std::string &name, const std::string &text)
   const std::string path = std::string(OHMDEM_POST_TEST_TMP) + "/" + name;
   std::ofstream(path) << text;
   return path;
+}
+
+// Whether the file starts with the PNG signature.
+inline bool is_png(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  char sig[8] = {};
+  in.read(sig, 8);
+  return in && std::string(sig, 8) == std::string("\x89PNG\r\n\x1a\n", 8);
+}
+
+// Whether gnuplot can render the plots (or OHMDEM_GNUPLOT names one).
+inline bool have_gnuplot()
+{
+  return std::system("command -v gnuplot > /dev/null 2>&1") == 0 || std::getenv("OHMDEM_GNUPLOT");
 }
 
 }  // namespace ohmdem::post::test
