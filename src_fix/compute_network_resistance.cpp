@@ -21,6 +21,7 @@
 #include "conduction_network.h"
 #include "style_contact_set.h"
 #include "error.h"
+#include "fast_cbrt.h"
 #include "fix_bearing_race.h"
 #include "fix_property_global.h"
 #include "group.h"
@@ -217,91 +218,126 @@ bool ComputeNetworkResistance::evaluate_between_races()
       low_.kind != ElectrodeKind::Race || contacts_->uses_pair())
     return false;
   const auto &races = contacts_->races();
-  const int nraces = static_cast<int>(races.size());
-  const ohmdem::HertzContact &geo_hi = contacts_->race_geometry(high_.index);
-  const ohmdem::HertzContact &geo_lo = contacts_->race_geometry(low_.index);
-  const double g_hi = gamma_type_[races[high_.index]->race_type()];
-  const double g_lo = gamma_type_[races[low_.index]->race_type()];
   if (!geometry_ready_) {
     // Geometry only, once per run: S = S(1 N) * fn^(2/3), and for Holm b/a is fixed, so
     // R_c = rho * holm(1, 1, b/a) / a (no elliptic integral per contact).
-    area_hi_ = geo_hi.ellipse(1.0).area;
-    area_lo_ = geo_lo.ellipse(1.0).area;
-    holm_hi_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi.ellipticity());
-    holm_lo_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo.ellipticity());
+    geo_hi_ = &contacts_->race_geometry(high_.index);
+    geo_lo_ = &contacts_->race_geometry(low_.index);
+    area_hi_ = geo_hi_->ellipse(1.0).area;
+    area_lo_ = geo_lo_->ellipse(1.0).area;
+    holm_hi_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi_->ellipticity());
+    holm_lo_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo_->ellipticity());
+    // Holm constriction of each spot at 1 N, per ball type: rho = (1/gamma_ball + 1/gamma_race)/2.
+    const double g_hi = gamma_type_[races[high_.index]->race_type()];
+    const double g_lo = gamma_type_[races[low_.index]->race_type()];
+    const double a_hi = geo_hi_->ellipse(1.0).a, a_lo = geo_lo_->ellipse(1.0).a;
+    holm_per_type_.assign(2 * gamma_type_.size(), 0.0);
+    for (std::size_t t = 1; t < gamma_type_.size(); ++t) {
+      holm_per_type_[2 * t] = 0.5 * (1.0 / gamma_type_[t] + 1.0 / g_hi) * holm_hi_ / a_hi;
+      holm_per_type_[2 * t + 1] = 0.5 * (1.0 / gamma_type_[t] + 1.0 / g_lo) * holm_lo_ / a_lo;
+    }
+    other_races_.clear();
+    for (int k = 0; k < static_cast<int>(races.size()); ++k)
+      if (k != high_.index && k != low_.index) other_races_.push_back(races[k]);
     geometry_ready_ = true;
   }
-  const double holm_hi = holm_hi_, holm_lo = holm_lo_;
-  balls_.clear();
-  int other = 0;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    vector_atom[i] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double *ch = nullptr, *cl = nullptr;
-    for (int k = 0; k < nraces; ++k) {
-      const double *c = races[k]->contact_of(i);
-      if (!(c[0] > 0.0) || c[5] > 0.0) continue;  // no force, or in a defect zone: no current
-      if (k == high_.index) ch = c;
-      else if (k == low_.index) cl = c;
-      else ++other;
-    }
-    const double gamma = gamma_type_[atom->type[i]];
+  const ohmdem::HertzContact &geo_hi = *geo_hi_, &geo_lo = *geo_lo_;
+  const double g_hi = gamma_type_[races[high_.index]->race_type()];
+  const double g_lo = gamma_type_[races[low_.index]->race_type()];
+  const bool races_conduct = g_hi > 0.0 && g_lo > 0.0;
+  // eq. 1 with S_k = area_k(1 N) * fn_k^(2/3) and 1/(2V) = 3/(8 pi r^3).
+  const double eq1_coef = area_hi_ * area_lo_ * 3.0 / (8.0 * M_PI);
+  const double inf = std::numeric_limits<double>::infinity();
+
+  // Local copies of LIGGGHTS' arrays: the loop stays in registers (this runs every step).
+  const int nlocal = atom->nlocal;
+  const int *const mask = atom->mask;
+  const int *const type = atom->type;
+  const tagint *const tag = atom->tag;
+  const double *const *const x = atom->x;
+  const double *const radius = atom->radius;
+  const FixBearingRace &race_hi = *races[high_.index];
+  const FixBearingRace &race_lo = *races[low_.index];
+  const double *const gamma_type = gamma_type_.data();
+  const int bit = groupbit;
+  const Model model = model_;
+  double *const phi = vector_atom;  // potential / V_high, scaled once R is known
+
+  balls_.resize(nlocal);
+  ohmdem::TaggedValues<3> *out = balls_.data();
+  int nballs = 0, other = 0;
+  // A contact carries current unless its force is zero or it lies in a defect zone.
+  auto live = [](const double *c) { return c[0] > 0.0 && !(c[5] > 0.0); };
+  for (int i = 0; i < nlocal; ++i) {
+    phi[i] = 0.0;
+    if (!(mask[i] & bit)) continue;
+    for (const FixBearingRace *race : other_races_)
+      if (live(race->contact_of(i))) ++other;
+    const double *ch = race_hi.contact_of(i), *cl = race_lo.contact_of(i);
+    if (!live(ch)) ch = nullptr;
+    if (!live(cl)) cl = nullptr;
+    const double gamma = gamma_type[type[i]];
     if (!(gamma > 0.0) || !(ch || cl)) continue;
     if (!(ch && cl)) {
       // A dead end: no current; its contact node sits at that electrode's potential.
-      balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {0.0, ch ? 1.0 : 0.0, double(i)}});
+      phi[i] = ch ? 1.0 : 0.0;
+      out[nballs++] = {static_cast<std::int64_t>(tag[i]), {0.0, 0.0, 1.0}};
       continue;
     }
-    double resistance = 0.0;
-    const double u[3] = {ch[3] - atom->x[i][0], ch[4] - atom->x[i][1], 0.0};
-    const double w[3] = {cl[3] - atom->x[i][0], cl[4] - atom->x[i][1], 0.0};
+    const double u[3] = {ch[3] - x[i][0], ch[4] - x[i][1], 0.0};
+    const double w[3] = {cl[3] - x[i][0], cl[4] - x[i][1], 0.0};
     const double dot = u[0] * w[0] + u[1] * w[1];
     const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1]));
-    const double r = atom->radius[i];
-    if (model_ == Model::Eq1 && dot <= 0.0 && norms > 0.0) {
-      // Spots facing each other (the bearing): S ∝ fn^(2/3), so S_hi*S_lo needs one cube root;
-      // for an obtuse angle 1 - cos(theta) >= 1 and the small-angle clamp cannot apply.
-      const double p = std::cbrt(ch[0] * cl[0]);
-      const double g = gamma * area_hi_ * area_lo_ * p * p /
-                       (2.0 * ohmdem::sphere_volume(r) * (1.0 - dot / norms));
-      resistance = 1.0 / g;
+    const double r = radius[i];
+    double conductance;
+    const bool facing = dot <= 0.0 && norms > 0.0;
+    if (model == Model::Eq1 && facing) {
+      // Spots facing each other (the bearing): S_hi*S_lo needs one cube root; for an obtuse
+      // angle 1 - cos(theta) >= 1 and the small-angle clamp cannot apply.
+      const double p = ohmdem::cbrt_fast(ch[0] * cl[0]);
+      conductance = gamma * eq1_coef * p * p / (r * r * r * (1.0 - dot / norms));
+    } else if (races_conduct && (facing || model == Model::Holm)) {
+      // Holm's constrictions go as 1/a ∝ fn^(-1/3): one cube root per spot.
+      const double qh = ohmdem::cbrt_fast(ch[0]), ql = ohmdem::cbrt_fast(cl[0]);
+      const int t = type[i];
+      double resistance = holm_per_type_[2 * t] / qh + holm_per_type_[2 * t + 1] / ql;
+      if (model != Model::Holm) {
+        const double p = qh * ql;
+        resistance += r * r * r * (1.0 - dot / norms) / (gamma * eq1_coef * p * p);
+      }
+      conductance = 1.0 / resistance;
     } else {
       const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
-      if (model_ != Model::Holm) {
+      double resistance = 0.0;
+      if (model != Model::Holm) {
         const double g = ohmdem::eq1_conductance_between(gamma, eh.area, el.area,
                                                          ohmdem::sphere_volume(r), u, w, r);
-        resistance += g > 0.0 ? 1.0 / g : std::numeric_limits<double>::infinity();
+        resistance += g > 0.0 ? 1.0 / g : inf;
       }
-      if (model_ != Model::Eq1 && g_hi > 0.0 && g_lo > 0.0) {
-        resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi / eh.a;
-        resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo / el.a;
+      if (model != Model::Eq1 && races_conduct) {
+        resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi_ / eh.a;
+        resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo_ / el.a;
       }
+      conductance = 1.0 / resistance;
     }
-    if (!(g_hi > 0.0) || !(g_lo > 0.0)) resistance = std::numeric_limits<double>::infinity();
-    balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {1.0 / resistance, 0.5, double(i)}});
+    if (!races_conduct) conductance = 0.0;
+    phi[i] = 0.5;
+    out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
   }
+  balls_.resize(nballs);
   int any_other = other;
   if (comm->nprocs > 1) MPI_Allreduce(&other, &any_other, 1, MPI_INT, MPI_SUM, world);
   if (any_other) return false;  // a third conducting race: the general network handles it
 
   // Conductances added in tag order: the same R with any number of processes.
-  const auto &all = balls_gather_.gather(balls_, world);
-  double conductance = 0.0;
-  int paths = 0, dead = 0;
-  for (const auto &b : all) {
-    if (b.v[1] == 0.5) {
-      conductance += b.v[0];
-      ++paths;
-    } else {
-      ++dead;
-    }
-  }
-  const double resistance =
-      conductance > 0.0 ? 1.0 / conductance : std::numeric_limits<double>::infinity();
+  const auto sum = ohmdem::ordered_sum<3>(balls_gather_.gather(balls_, world));
+  const double conductance = sum[0];
+  const int paths = static_cast<int>(sum[1]), dead = static_cast<int>(sum[2]);
+  const double resistance = conductance > 0.0 ? 1.0 / conductance : inf;
   report(resistance, 2 * paths + dead, 0, 0, 0.0);
   // Per-atom potential: mean of the contact-node potentials (the electrodes' own).
   const double v_high = std::isfinite(resistance) ? resistance * current_ : 0.0;
-  for (const auto &b : balls_) vector_atom[static_cast<int>(b.v[2])] = b.v[1] * v_high;
+  for (int i = 0; i < nlocal; ++i) phi[i] *= v_high;
   return true;
 }
 

@@ -22,11 +22,13 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 
 namespace ohmdem {
 class ConductionNetwork;
+class HertzContact;
 }
 
 namespace LAMMPS_NS {
 
 class ContactSet;
+class FixBearingRace;
 
 class ComputeNetworkResistance : public Compute {
  public:
@@ -68,14 +70,17 @@ class ComputeNetworkResistance : public Compute {
   bigint evaluated_step_ = -1;
   double result_[7] = {0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
-  // closed form, per local ball: conductance, potential factor, local index
+  // closed form, per local ball: conductance, 1 if it joins the races, 1 if a dead end
   std::vector<ohmdem::TaggedValues<3>> balls_;
   ohmdem::OrderedGather<3> balls_gather_;
   // Closed form, geometry only (set at the first evaluation of a run): contact area at 1 N
   // on each electrode race (m^2) and Holm's factor K(e^2)/pi of its ellipse.
   bool geometry_ready_ = false;
+  const ohmdem::HertzContact *geo_hi_ = nullptr, *geo_lo_ = nullptr;  // in contacts_
+  std::vector<const FixBearingRace *> other_races_;  // neither electrode: any contact -> network
   double area_hi_ = 0, area_lo_ = 0, holm_hi_ = 0, holm_lo_ = 0;
   std::vector<double> gamma_type_;  // conductivity of each atom type (S/m), 1-based
+  std::vector<double> holm_per_type_;  // [2t], [2t+1]: Holm resistance at 1 N, high / low spot
   int nmax_ = 0;
 };
 

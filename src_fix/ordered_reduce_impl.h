@@ -8,7 +8,7 @@
 namespace ohmdem {
 
 template <int N>
-const std::vector<TaggedValues<N>> &OrderedGather<N>::gather(
+OrderedView<N> OrderedGather<N>::gather(
     const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
 {
   static_assert(sizeof(TaggedValues<N>) == sizeof(std::int64_t) + N * sizeof(double),
@@ -43,15 +43,13 @@ const std::vector<TaggedValues<N>> &OrderedGather<N>::gather(
     std::iota(order_.begin(), order_.end(), 0);
     std::sort(order_.begin(), order_.end(), before);
   }
-  sorted_.resize(in.size());
-  for (std::size_t k = 0; k < in.size(); ++k) sorted_[k] = in[order_[k]];
-  return sorted_;
+  return OrderedView<N>(in.data(), order_.data(), in.size());
 }
 
 template <int N>
 std::size_t OrderedGather<N>::memory_usage() const
 {
-  return (received_.capacity() + sorted_.capacity()) * sizeof(TaggedValues<N>) +
+  return received_.capacity() * sizeof(TaggedValues<N>) +
          (order_.capacity() + bytes_.capacity() + displ_.capacity()) * sizeof(int);
 }
 
@@ -59,7 +57,8 @@ template <int N>
 std::vector<TaggedValues<N>> gather_by_tag(const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
 {
   OrderedGather<N> gather;
-  return gather.gather(local, comm);
+  const OrderedView<N> view = gather.gather(local, comm);
+  return std::vector<TaggedValues<N>>(view.begin(), view.end());
 }
 
 }  // namespace ohmdem
