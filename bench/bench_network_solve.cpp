@@ -23,6 +23,16 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+const char *name(Preconditioner pc)
+{
+  switch (pc) {
+    case Preconditioner::Diagonal: return "CG-Jacobi";
+    case Preconditioner::IncompleteCholesky: return "CG-IC";
+    case Preconditioner::Multigrid: return "CG-AMG";
+  }
+  return "?";
+}
+
 struct Timed {
   NetworkSolution s;
   double ms;
@@ -60,25 +70,43 @@ ConductionNetwork make(const RandomNetwork &rn, SolverOptions o)
   return net;
 }
 
-void run(const std::string &label, const RandomNetwork &rn, int reps)
+// Cold CG time per step (ms) and unknowns of each size, per preconditioner: for the growth.
+struct Growth {
+  std::vector<double> unknowns, jacobi_ms, amg_ms, jacobi_it, amg_it;
+};
+
+void run(const std::string &label, const RandomNetwork &rn, int reps, Growth *growth = nullptr,
+         bool with_direct = true)
 {
   const double I = 0.1;
   const RandomNetwork next = perturbed(rn, 1e-2, 7);   // next step, +-1 % on every g
   const RandomNetwork close = perturbed(rn, 1e-4, 8);  // next step, +-0.01 %
   SolverOptions o;
-  o.kind = SolverKind::Direct;
-  ConductionNetwork direct = make(rn, o);
   double first = 1e300, same = 1e300;
   Timed d{};
-  for (int r = 0; r < reps; ++r) {
-    direct.reset();
-    first = std::min(first, step(direct, rn, I).ms);  // analyse + factorize
-    d = step(direct, next, I);                        // same pattern: factorize only
-    same = std::min(same, d.ms);
+  if (with_direct) {
+    o.kind = SolverKind::Direct;
+    ConductionNetwork direct = make(rn, o);
+    for (int r = 0; r < reps; ++r) {
+      direct.reset();
+      first = std::min(first, step(direct, rn, I).ms);  // analyse + factorize
+      d = step(direct, next, I);                        // same pattern: factorize only
+      same = std::min(same, d.ms);
+    }
+  } else {
+    // Too large to factorize (3D fill-in: minutes, gigabytes): the reference is CG run to
+    // tol 1e-13, and the "direct/CG" ratio below is meaningless (printed as 0).
+    o.kind = SolverKind::ConjugateGradient;
+    o.cg_tolerance = 1e-13;
+    ConductionNetwork tight = make(rn, o);
+    d = step(tight, next, I);
+    first = same = 0.0;
   }
   const double ref = d.s.resistance;
-  std::printf("%-12s nodes %6zu edges %7zu unknowns %6d | direct %8.2f ms, same pattern %8.2f ms\n",
-              label.c_str(), rn.keys.size(), rn.edges.size(), d.s.unknowns, first, same);
+  std::printf("%-12s nodes %6zu edges %7zu unknowns %6d | direct %8.2f ms, same pattern %8.2f ms%s\n",
+              label.c_str(), rn.keys.size(), rn.edges.size(), d.s.unknowns, first, same,
+              with_direct ? "" : " (skipped, reference: CG to 1e-13)");
+  o = SolverOptions{};
   {
     // The default Auto choice, cold, on a new pattern (its symbolic analysis included).
     double ms = 1e300;
@@ -103,7 +131,8 @@ void run(const std::string &label, const RandomNetwork &rn, int reps)
     }
     std::printf("  fixed cost of a step (converged warm start, 0 CG iterations) %8.2f ms\n", ms);
   }
-  for (Preconditioner pc : {Preconditioner::Diagonal, Preconditioner::IncompleteCholesky}) {
+  for (Preconditioner pc : {Preconditioner::Diagonal, Preconditioner::IncompleteCholesky,
+                            Preconditioner::Multigrid}) {
     o.kind = SolverKind::ConjugateGradient;
     o.preconditioner = pc;
     ConductionNetwork cg = make(rn, o);
@@ -123,9 +152,17 @@ void run(const std::string &label, const RandomNetwork &rn, int reps)
     std::printf(
         "  %-9s cold %8.2f ms %4d it | warm(1%%) %8.2f ms %4d it | warm(0.01%%) %8.2f ms "
         "%4d it | err %.0e | direct/CG %.2f\n",
-        pc == Preconditioner::Diagonal ? "CG-Jacobi" : "CG-IC", cold.ms, cold.s.iterations, warm.ms,
+        name(pc), cold.ms, cold.s.iterations, warm.ms,
         warm.s.iterations, warm2.ms, warm2.s.iterations,
         std::max(1e-17, std::fabs(cold.s.resistance - ref) / ref), same / cold.ms);
+    if (growth && pc == Preconditioner::Diagonal) {
+      growth->unknowns.push_back(cold.s.unknowns);
+      growth->jacobi_ms.push_back(cold.ms);
+      growth->jacobi_it.push_back(cold.s.iterations);
+    } else if (growth && pc == Preconditioner::Multigrid) {
+      growth->amg_ms.push_back(cold.ms);
+      growth->amg_it.push_back(cold.s.iterations);
+    }
   }
   std::fflush(stdout);
 }
@@ -141,14 +178,15 @@ void tolerance_sweep(const std::string &label, const RandomNetwork &rn)
               label.c_str());
   for (double tol : {1e-4, 1e-6, 1e-8, 1e-10, 1e-12}) {
     std::printf("  tol %.0e", tol);
-    for (Preconditioner pc : {Preconditioner::Diagonal, Preconditioner::IncompleteCholesky}) {
+    for (Preconditioner pc : {Preconditioner::Diagonal, Preconditioner::IncompleteCholesky,
+                              Preconditioner::Multigrid}) {
       o.kind = SolverKind::ConjugateGradient;
       o.preconditioner = pc;
       o.cg_tolerance = tol;
       ConductionNetwork cg = make(rn, o);
       const Timed t = step(cg, rn, 0.1);
       std::printf(" | %s %4d it %8.2f ms err %.1e",
-                  pc == Preconditioner::Diagonal ? "Jacobi" : "IC", t.s.iterations, t.ms,
+                  name(pc) + 3, t.s.iterations, t.ms,
                   std::fabs(t.s.resistance - ref) / ref);
     }
     std::printf("\n");
@@ -187,9 +225,23 @@ int main(int argc, char **argv)
     if (2.0 * n * n > 1.3 * max_nodes) break;
     run("2D " + std::to_string(n) + "^2", packing_network(n, n, 1, 1), n < 100 ? 5 : 1);
   }
-  for (int n : {7, 15, 22, 32}) {  // 3D: ~3 n^3 contact nodes
+  Growth g3;
+  for (int n : {7, 15, 22, 32, 46}) {  // 3D: ~3 n^3 contact nodes
     if (3.0 * n * n * n > 1.3 * max_nodes) break;
-    run("3D " + std::to_string(n) + "^3", packing_network(n, n, n, 1), n < 20 ? 5 : 1);
+    run("3D " + std::to_string(n) + "^3", packing_network(n, n, n, 1), n < 20 ? 5 : 1, &g3,
+        n < 40);
+  }
+  // Growth with size: t ~ N^p between the smallest and the largest 3D packing (p = 1 is
+  // linear); the iteration counts show where it comes from.
+  if (g3.unknowns.size() >= 2) {
+    const std::size_t a = 0, b = g3.unknowns.size() - 1;
+    auto power = [&](const std::vector<double> &t) {
+      return std::log(t[b] / t[a]) / std::log(g3.unknowns[b] / g3.unknowns[a]);
+    };
+    std::printf("growth, 3D %.0f -> %.0f unknowns (cold): CG-Jacobi t ~ N^%.2f (%.0f -> %.0f it), "
+                "CG-AMG t ~ N^%.2f (%.0f -> %.0f it)\n",
+                g3.unknowns[a], g3.unknowns[b], power(g3.jacobi_ms), g3.jacobi_it[a],
+                g3.jacobi_it[b], power(g3.amg_ms), g3.amg_it[a], g3.amg_it[b]);
   }
   const RandomNetwork p3 = packing_network(15, 15, 15, 1);
   run("3D 15^3 wide", widened(p3, 12, 3), 3);

@@ -106,11 +106,13 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       else if (m == "eq1+holm") model_ = Model::Eq1Holm;
       else a.fail(kw, "eq1, holm or eq1+holm", m.c_str());
     } else if (kw == "solver") {
-      const std::string m = a.word(kw, "auto, direct or cg");
+      const std::string m = a.word(kw, "auto, direct, cg or amg");
+      multigrid_ = m == "amg";
       if (m == "auto") solver_ = static_cast<int>(ohmdem::SolverKind::Auto);
       else if (m == "direct") solver_ = static_cast<int>(ohmdem::SolverKind::Direct);
-      else if (m == "cg") solver_ = static_cast<int>(ohmdem::SolverKind::ConjugateGradient);
-      else a.fail(kw, "auto, direct or cg", m.c_str());
+      else if (m == "cg" || m == "amg")
+        solver_ = static_cast<int>(ohmdem::SolverKind::ConjugateGradient);
+      else a.fail(kw, "auto, direct, cg or amg", m.c_str());
     } else if (kw == "pair") {
       pair_mode_ = a.yes_no(kw) ? 1 : 0;
     } else if (kw == "netlist") {
@@ -174,6 +176,7 @@ void ComputeNetworkResistance::init()
   }
   ohmdem::SolverOptions opt = network_->options();
   opt.kind = static_cast<ohmdem::SolverKind>(solver_);
+  opt.preconditioner = multigrid_ ? ohmdem::Preconditioner::Multigrid : ohmdem::Preconditioner::Diagonal;
   network_->set_options(opt);
   evaluated_step_ = -1;
 }

@@ -59,6 +59,7 @@ class ComputeNetworkResistance : public Compute {
   Electrode high_, low_;
   Model model_ = Model::Eq1;
   int solver_ = 0;  // ohmdem::SolverKind
+  bool multigrid_ = false;  // solver amg: CG preconditioned by algebraic multigrid
   bool area_exact_ = false;
   int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
   std::string netlist_, vtk_;

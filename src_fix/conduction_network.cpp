@@ -2,6 +2,8 @@
 // Numerics (why each step is there): doc/conduction_network.md.
 #include "conduction_network.h"
 
+#include "multigrid_cg.h"
+
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -452,6 +454,11 @@ void ConductionNetwork::Impl::solve_system(const Adjacency &adj, const std::vect
   b[h] = d[h] * current;
   Vec y;
 
+  const bool chose = kind == SolverKind::Auto;
+  kind = choose(A, kind);
+  const bool multigrid = opt.preconditioner == Preconditioner::Multigrid ||
+                         (chose && kind == SolverKind::ConjugateGradient &&
+                          m >= opt.auto_multigrid_unknowns);
   auto run_cg = [&](int maxit) {
     Vec y0 = Vec::Zero(m);
     if (opt.warm_start && !warm_keys.empty())
@@ -465,6 +472,16 @@ void ConductionNetwork::Impl::solve_system(const Adjacency &adj, const std::vect
       s.method = SolveMethod::ConjugateGradient;
       return cg.info() == Eigen::Success;
     };
+    if (multigrid) {
+      A.makeCompressed();  // symmetric: its compressed columns are its compressed rows
+      y = y0;
+      const MultigridResult r = multigrid_cg(m, A.outerIndexPtr(), A.innerIndexPtr(),
+                                             A.valuePtr(), b.data(), y.data(), opt.cg_tolerance,
+                                             maxit);
+      s.iterations = r.iterations;
+      s.method = SolveMethod::MultigridCG;
+      return r.converged;
+    }
     if (opt.preconditioner == Preconditioner::IncompleteCholesky) {
       Eigen::ConjugateGradient<
           SpMat, Eigen::Lower | Eigen::Upper,
@@ -513,7 +530,6 @@ void ConductionNetwork::Impl::solve_system(const Adjacency &adj, const std::vect
       if (unk[i] >= 0) v[i] = potential(y, i);
   };
 
-  kind = choose(A, kind);
   if (kind == SolverKind::ConjugateGradient &&
       run_cg(opt.cg_max_iterations > 0 ? opt.cg_max_iterations : std::max(1000, 2 * m)) &&
       y.allFinite()) {
@@ -589,6 +605,8 @@ const char *to_string(SolveMethod m)
       return "elimination";
     case SolveMethod::ConjugateGradient:
       return "cg";
+    case SolveMethod::MultigridCG:
+      return "cg-amg";
     case SolveMethod::None:
       break;
   }

@@ -44,9 +44,12 @@ constexpr NodeKey contact_side_key(std::uint32_t owner, std::uint32_t other)
 enum class SolverKind { Auto, Direct, ConjugateGradient };
 // Elimination: the exact (subtraction-free) Kron elimination, the fallback when a direct
 // LDL^T cannot reach its accuracy (conductances spread over ~16 decades or more).
-enum class SolveMethod { None, ClosedForm, Direct, ConjugateGradient, Elimination };
-enum class Preconditioner { Diagonal, IncompleteCholesky };
-const char *to_string(SolveMethod m);  // "none", "closed-form", "direct", "cg", "elimination"
+enum class SolveMethod { None, ClosedForm, Direct, ConjugateGradient, MultigridCG, Elimination };
+// Multigrid: hypre's BoomerAMG, one V-cycle per CG iteration (multigrid_cg.h): iterations
+// nearly independent of the network size, for large networks.
+enum class Preconditioner { Diagonal, IncompleteCholesky, Multigrid };
+// "none", "closed-form", "direct", "cg", "cg-amg", "elimination"
+const char *to_string(SolveMethod m);
 
 struct SolverOptions {
   SolverKind kind = SolverKind::Auto;
@@ -55,16 +58,22 @@ struct SolverOptions {
   // symbolic analysis predicts at most auto_flops_per_nonzero multiply-adds per nonzero of
   // the matrix (measured crossover: ~250-500, i.e. the cost of a few hundred CG iterations;
   // 2D packings stay direct up to ~1e5 unknowns, 3D ones switch to CG near 2e3).
+  // When Auto picks CG for at least auto_multigrid_unknowns unknowns, its preconditioner is
+  // algebraic multigrid: its iterations hardly grow with the size (3D packings, 883 -> 286k
+  // unknowns: 11 -> 26, diagonal 55 -> 348), but each costs ~5x more; per step it was still
+  // 15 % slower at 286k, and the measured growths (N^1.12 against N^1.23) cross near 1e6.
   int auto_direct_unknowns = 2000;
   int auto_cg_unknowns = 500000;
   double auto_flops_per_nonzero = 500;
+  int auto_multigrid_unknowns = 1000000;
   // CG stopping test on the diagonally scaled system: ||b - A y|| <= tol * ||b||. R comes
   // from the energy functional, whose error is quadratic in the solution error: 1e-8 gives
   // R to ~1e-14 on the benchmarks (potentials and currents to ~tol).
   double cg_tolerance = 1e-8;
   int cg_max_iterations = 0;  // 0: max(1000, 2 * unknowns); no convergence -> direct solve
   // Diagonal: CG on the symmetrically scaled system (Jacobi). Incomplete Cholesky halves the
-  // iterations but costs more than it saves with Eigen's implementation (bench/).
+  // iterations but costs more than it saves with Eigen's implementation (bench/). Multigrid
+  // (hypre BoomerAMG) needs 10-20x fewer iterations, each ~5x dearer, plus a setup per solve.
   Preconditioner preconditioner = Preconditioner::Diagonal;
   bool warm_start = true;     // CG starts from the last solve's potentials (per unit I)
   bool reduce_series = true;  // exact elimination of dangling and degree-2 nodes

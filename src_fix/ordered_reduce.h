@@ -84,6 +84,8 @@ class OrderedGather {
   std::vector<TaggedValues<N>> received_;  // several ranks: all records, in rank order
   std::vector<int> order_;                 // view[k] = records[order_[k]]
   std::vector<int> bytes_, displ_;
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  int nprocs_ = 1;
 };
 
 // Sum of each component over all ranks' records (a vector or a view in tag order), added in

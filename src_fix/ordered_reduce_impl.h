@@ -13,8 +13,11 @@ OrderedView<N> OrderedGather<N>::gather(
 {
   static_assert(sizeof(TaggedValues<N>) == sizeof(std::int64_t) + N * sizeof(double),
                 "TaggedValues must be packed to be sent as bytes");
-  int nprocs = 1;
-  MPI_Comm_size(comm, &nprocs);
+  if (comm != comm_) {  // asked once per communicator: this runs at every step
+    MPI_Comm_size(comm, &nprocs_);
+    comm_ = comm;
+  }
+  const int nprocs = nprocs_;
   const std::vector<TaggedValues<N>> *records = &local;  // one rank: no collective needed
   if (nprocs > 1) {
     const int mybytes = static_cast<int>(local.size() * sizeof(TaggedValues<N>));
@@ -37,8 +40,17 @@ OrderedView<N> OrderedGather<N>::gather(
   auto before = [&in](int a, int b) {
     return in[a].tag != in[b].tag ? in[a].tag < in[b].tag : in[a].v < in[b].v;
   };
-  // Sorting indices moves 4 bytes instead of a whole record.
-  if (order_.size() != in.size() || !std::is_sorted(order_.begin(), order_.end(), before)) {
+  // The previous order still holds if the tags it visits strictly increase (the usual case:
+  // one record per particle); otherwise sort again. Sorting indices moves 4 bytes instead of
+  // a whole record.
+  auto still_sorted = [&] {
+    if (order_.size() != in.size()) return false;
+    for (std::size_t k = 1; k < order_.size(); ++k)
+      if (!(in[order_[k - 1]].tag < in[order_[k]].tag))
+        return std::is_sorted(order_.begin(), order_.end(), before);
+    return true;
+  };
+  if (!still_sorted()) {
     order_.resize(in.size());
     std::iota(order_.begin(), order_.end(), 0);
     std::sort(order_.begin(), order_.end(), before);

@@ -159,6 +159,26 @@ def main():
             check(vtk.startswith("# vtk DataFile") and m and int(m.group(1)) > n
                   and "SCALARS current" in vtk and "SCALARS potential" in vtk,
                   f"VTK network written ({m.group(1) if m else 0} line cells)")
+        elif a.test == "packing_amg":
+            # CG preconditioned by algebraic multigrid (hypre) against ngspice, also with
+            # conductivities 1e12 apart, and with 1 and 2 processes.
+            for extra in ({}, {"gamma2": 5.88e-5}):
+                R = []
+                for nprocs in (1, 2):
+                    out = os.path.join(wd, f"amg{len(extra)}_np{nprocs}")
+                    log = run(exe, os.path.join(val, "in.packing"), out, nprocs=nprocs,
+                              solver="amg", **extra)
+                    R.append(read_R(log, "PACKING_R"))
+                iters = int(float(re.search(r"^PACKING_R \S+ contacts \S+ iterations (\S+)",
+                                            log, re.M).group(1)))
+                ref = ngspice_R(os.path.join(out, "network.cir"), 0.1)
+                what = "conductivities 1e12 apart" if extra else "one conductivity"
+                check(abs(R[0] / ref - 1) < 1e-9 and iters > 0,
+                      f"packing, solver amg ({what}, {iters} iterations): R = {R[0]:.15g} ohm, "
+                      f"ngspice {ref:.15g} (rel. diff {R[0] / ref - 1:+.1e})")
+                check(abs(R[1] / R[0] - 1) < 1e-12,
+                      f"packing, solver amg ({what}): R with 1 and 2 processes "
+                      f"{R[0]:.17g} / {R[1]:.17g}")
         elif a.test == "packing_mpi":
             R = []
             for nprocs in (1, 2):
