@@ -174,7 +174,8 @@ def main():
                 ref = ngspice_R(os.path.join(out, "network.cir"), 0.1)
                 what = "conductivities 1e12 apart" if extra else "one conductivity"
                 check(abs(R[0] / ref - 1) < 1e-9 and iters > 0,
-                      f"packing, solver amg ({what}, {iters} iterations): R = {R[0]:.15g} ohm, "
+                      f"packing, solver amg ({what}; last step, warm-started: {iters} iterations): "
+                      f"R = {R[0]:.15g} ohm, "
                       f"ngspice {ref:.15g} (rel. diff {R[0] / ref - 1:+.1e})")
                 check(abs(R[1] / R[0] - 1) < 1e-12,
                       f"packing, solver amg ({what}): R with 1 and 2 processes "
