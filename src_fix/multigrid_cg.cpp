@@ -40,8 +40,9 @@ void ensure_started()
 }
 
 // hypre's OpenMP loops on one thread: their reductions would otherwise add in an order that
-// depends on the thread count (which MPI's core binding changes), and R would differ in the
-// last bits between 1 and 2 processes. Measured: no loss of speed on these networks.
+// depends on the thread count (set by the machine and by MPI's core binding), so the last
+// bits of R could change from one launch to another. Measured: no loss of speed on these
+// networks (the same times with OMP_NUM_THREADS=1 and 2).
 class OneThread {
  public:
   OneThread() : threads_(omp_get_max_threads()) { omp_set_num_threads(1); }
