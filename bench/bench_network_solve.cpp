@@ -53,15 +53,6 @@ Timed step(ConductionNetwork &net, const RandomNetwork &rn, double current)
   return {s, ms_since(t0)};
 }
 
-RandomNetwork perturbed(const RandomNetwork &rn, double amplitude, std::uint64_t seed)
-{
-  RandomNetwork out = rn;
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(-amplitude, amplitude);
-  for (Edge &e : out.edges) e.g *= 1 + u(rng);
-  return out;
-}
-
 ConductionNetwork make(const RandomNetwork &rn, SolverOptions o)
 {
   ConductionNetwork net;

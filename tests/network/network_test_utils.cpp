@@ -123,6 +123,31 @@ void add_all(ohmdem::ConductionNetwork &net, const std::vector<Edge> &edges)
   for (const Edge &e : edges) net.add_conductance(e.a, e.b, e.g);
 }
 
+ohmdem::NetworkSolution solve_with(const RandomNetwork &rn, ohmdem::SolverOptions o, double current)
+{
+  ohmdem::ConductionNetwork net;
+  net.set_options(o);
+  net.set_electrodes(rn.keys[0], rn.keys[1]);
+  add_all(net, rn.edges);
+  return net.solve(current);
+}
+
+RandomNetwork perturbed(const RandomNetwork &rn, double amplitude, std::uint64_t seed)
+{
+  RandomNetwork out = rn;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  for (Edge &e : out.edges) e.g *= 1 + u(rng);
+  return out;
+}
+
+ohmdem::SolverOptions kind(ohmdem::SolverKind k)
+{
+  ohmdem::SolverOptions o;
+  o.kind = k;
+  return o;
+}
+
 long double dense_resistance(const RandomNetwork &net)
 {
   using M = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;

@@ -41,6 +41,20 @@ RandomNetwork packing_network(int nx, int ny, int nz, std::uint64_t seed);
 RandomNetwork widened(RandomNetwork net, double decades, std::uint64_t seed);
 
 void add_all(ohmdem::ConductionNetwork &net, const std::vector<Edge> &edges);
+// A fresh network with options o and the electrodes keys[0], keys[1]: all edges, one solve.
+ohmdem::NetworkSolution solve_with(const RandomNetwork &rn, ohmdem::SolverOptions o,
+                                   double current = 0.1);
+// The network of the next "time step": every conductance times 1 + U(-amplitude, amplitude).
+RandomNetwork perturbed(const RandomNetwork &rn, double amplitude, std::uint64_t seed);
+// Default options but for the solver kind.
+ohmdem::SolverOptions kind(ohmdem::SolverKind k);
+// Random networks checked against the dense reference by every solver's test: node count,
+// extra edges, conductances 10^U(lg_min, lg_max) (random_network, seed 7).
+struct DenseCase {
+  int nodes, extra;
+  double lg_min, lg_max;
+};
+inline const DenseCase kDenseCases[] = {{400, 800, -1, 1}, {400, 800, -6, 6}, {300, 300, -3, 3}};
 
 // R between keys[0] and keys[1] from the dense grounded Laplacian, long double full-pivot
 // LU: independent of the library's reduction, scaling and sparse solvers.

@@ -18,27 +18,11 @@ using namespace ohmdem_test;
 
 namespace {
 
-NetworkSolution solve_with(const RandomNetwork &rn, SolverOptions o, double current = 0.1)
-{
-  ConductionNetwork net;
-  net.set_options(o);
-  net.set_electrodes(rn.keys[0], rn.keys[1]);
-  add_all(net, rn.edges);
-  return net.solve(current);
-}
-
 SolverOptions amg()
 {
   SolverOptions o;
   o.kind = SolverKind::ConjugateGradient;
   o.preconditioner = Preconditioner::Multigrid;
-  return o;
-}
-
-SolverOptions of_kind(SolverKind k)
-{
-  SolverOptions o;
-  o.kind = k;
   return o;
 }
 
@@ -78,11 +62,7 @@ TEST(Multigrid, OneDimensionalLaplacianAgainstItsExactSolution)
 
 TEST(Multigrid, MatchesTheDenseReference)
 {
-  struct Case {
-    int nodes, extra;
-    double lg_min, lg_max;
-  };
-  for (const Case c : {Case{400, 800, -1, 1}, Case{400, 800, -6, 6}, Case{300, 300, -3, 3}}) {
+  for (const DenseCase &c : kDenseCases) {
     const RandomNetwork rn = random_network(c.nodes, c.extra, c.lg_min, c.lg_max, 7);
     const double ref = double(dense_resistance(rn));
     const NetworkSolution s = solve_with(rn, amg());
@@ -99,11 +79,11 @@ TEST(Multigrid, IterationsHardlyGrowWithSizeUnlikeDiagonalCG)
 {
   // 3D packings from ~900 to ~30000 unknowns (33x): diagonal CG's iterations grow with the
   // packing's diameter (55 -> 179 measured), multigrid's stay nearly flat (11 -> 18).
-  SolverOptions jacobi = of_kind(SolverKind::ConjugateGradient);
+  SolverOptions jacobi = kind(SolverKind::ConjugateGradient);
   int amg_small = 0, amg_large = 0, jac_small = 0, jac_large = 0;
   for (int n : {7, 22}) {
     const RandomNetwork rn = packing_network(n, n, n, 1);
-    const NetworkSolution d = solve_with(rn, of_kind(SolverKind::Direct));
+    const NetworkSolution d = solve_with(rn, kind(SolverKind::Direct));
     const NetworkSolution a = solve_with(rn, amg());
     const NetworkSolution j = solve_with(rn, jacobi);
     EXPECT_NEAR(a.resistance, d.resistance, 1e-12 * d.resistance) << n;
@@ -132,11 +112,8 @@ TEST(Multigrid, TwelveDecadesOfConductance)
 TEST(Multigrid, WarmStartAndBitwiseRepeatable)
 {
   const RandomNetwork rn = packing_network(30, 30, 1, 21);
-  RandomNetwork next = rn;
-  std::mt19937_64 rng(4);
-  std::uniform_real_distribution<double> u(-0.01, 0.01);
-  for (Edge &e : next.edges) e.g *= 1 + u(rng);
-  const double ref = solve_with(next, of_kind(SolverKind::Direct)).resistance;
+  const RandomNetwork next = perturbed(rn, 0.01, 4);
+  const double ref = solve_with(next, kind(SolverKind::Direct)).resistance;
   ConductionNetwork net;
   net.set_options(amg());
   net.set_electrodes(rn.keys[0], rn.keys[1]);

@@ -15,34 +15,10 @@
 using namespace ohmdem;
 using namespace ohmdem_test;
 
-namespace {
-
-NetworkSolution solve_with(const RandomNetwork &rn, SolverOptions o, double current = 0.1)
-{
-  ConductionNetwork net;
-  net.set_options(o);
-  net.set_electrodes(rn.keys[0], rn.keys[1]);
-  add_all(net, rn.edges);
-  return net.solve(current);
-}
-
-SolverOptions kind(SolverKind k)
-{
-  SolverOptions o;
-  o.kind = k;
-  return o;
-}
-
-}  // namespace
-
 TEST(Solvers, DirectAndCGMatchDenseReference)
 {
   // Reference: dense long-double full-pivot LU of the same Laplacian (test utils).
-  struct Case {
-    int nodes, extra;
-    double lg_min, lg_max;
-  };
-  for (const Case c : {Case{400, 800, -1, 1}, Case{400, 800, -6, 6}, Case{300, 300, -3, 3}}) {
+  for (const DenseCase &c : kDenseCases) {
     const RandomNetwork rn = random_network(c.nodes, c.extra, c.lg_min, c.lg_max, 7);
     const double ref = double(dense_resistance(rn));
     const NetworkSolution d = solve_with(rn, kind(SolverKind::Direct));
@@ -173,10 +149,7 @@ TEST(Solvers, WarmStartReducesIterations)
   // Two "time steps": every conductance changes by up to +-1 % (contacts evolve slowly).
   // The second CG solve starts from the first one's potentials.
   const RandomNetwork rn = packing_network(30, 30, 1, 21);
-  RandomNetwork next = rn;
-  std::mt19937_64 rng(4);
-  std::uniform_real_distribution<double> u(-0.01, 0.01);
-  for (Edge &e : next.edges) e.g *= 1 + u(rng);
+  const RandomNetwork next = perturbed(rn, 0.01, 4);
   // Reference: the direct solver (checked against the dense solve in the tests above).
   const double ref = solve_with(next, kind(SolverKind::Direct)).resistance;
 
