@@ -21,6 +21,7 @@
 #include "material_table.h"
 #include "modify.h"
 #include "style_args.h"
+#include "style_global_restart.h"
 #include "style_peratom_state.h"
 #include "update.h"
 
@@ -299,11 +300,7 @@ void FixBearingCage::write_restart(FILE *fp)
   const double list[kRestartSize] = {angle_, omega_, static_cast<double>(npockets_), torque_,
                                      sum_fn_, max_fn_, static_cast<double>(ncontacts_),
                                      ball_orbit_};
-  if (comm->me == 0) {
-    const int size = kRestartSize * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), kRestartSize, fp);
-  }
+  ohmdem::write_global_restart(comm->me, fp, list);
 }
 
 void FixBearingCage::restart(char *buf)

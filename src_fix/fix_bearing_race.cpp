@@ -24,6 +24,7 @@
 #include "modify.h"
 #include "race_contact.h"
 #include "style_args.h"
+#include "style_global_restart.h"
 #include "style_peratom_state.h"
 #include "update.h"
 
@@ -399,11 +400,7 @@ void FixBearingRace::write_restart(FILE *fp)
                                      sum_fn_, torque_, fx_, fy_, max_fn_,
                                      static_cast<double>(ncontacts_),
                                      static_cast<double>(nmasked_)};
-  if (comm->me == 0) {
-    const int size = kRestartSize * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), kRestartSize, fp);
-  }
+  ohmdem::write_global_restart(comm->me, fp, list);
 }
 
 void FixBearingRace::restart(char *buf)
