@@ -97,6 +97,6 @@ gnuplot -e "set terminal pngcairo size 900,600; set output '$OUT/speed_error.png
   set logscale xy; set xlabel 'wall time per simulated second (s)'; set ylabel 'relative error'; \
   set title 'SKF 6208, inner defect: error against cost (greenwood areas, dt from 5e-7 to 1e-5 s)'; \
   plot '$OUT/speed_error_greenwood.dat' using 1:2 with linespoints lw 2 title 'mean R', \
-       '' using 1:3 with linespoints lw 2 title 'defect frequency', \\
+       '' using 1:3 with linespoints lw 2 title 'defect frequency', \
        '' using 1:4 with linespoints lw 2 title 'kurtosis'"
 echo "wrote $OUT/speed_error.csv and $OUT/speed_error.png"
