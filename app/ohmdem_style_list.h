@@ -7,3 +7,4 @@
 #include "compute_network_resistance.h"
 #include "compute_contact_area.h"
 #include "fix_bearing_defect.h"
+#include "fix_signal_table.h"
