@@ -13,7 +13,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-void add_input_options(Args &a)
+void add_input_options(Args &a, const std::string &rate_option)
 {
   a.section("Input");
   a.option("--input", "KIND", "input format: auto|table|log|dump", "auto");
@@ -21,9 +21,9 @@ void add_input_options(Args &a)
            "signal column: header name (R, c_x[2], f_ID[1], v_name) or 1-based number; "
            "default: the only non-time column, else R");
   a.option("--time-column", "NAME|N",
-           "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use --rate; "
-           "default: time, t, TimeStep or Step");
-  a.option("--rate", "HZ", "sampling rate of a signal without time stamps (overrides any time)");
+           "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use " +
+               rate_option + "; default: time, t, TimeStep or Step");
+  a.option(rate_option, "HZ", "sampling rate of a signal without time stamps (overrides any time)");
   a.option("--dt", "S", "time step length for step-stamped data (dumps, logs, fix ave/time)");
   a.option("--log", "FILE",
            "take the time step length from this LIGGGHTS log (its last "
@@ -37,7 +37,7 @@ void add_input_options(Args &a)
   a.flag("--no-metadata", "ignore run.json next to the input");
 }
 
-InputOptions input_options(const Args &a)
+InputOptions input_options(const Args &a, const std::string &rate_option)
 {
   InputOptions o;
   o.files = a.positional();
@@ -46,9 +46,10 @@ InputOptions input_options(const Args &a)
   o.format = a.get("--input");
   o.column = a.get("--column");
   o.time_column = a.get("--time-column");
-  o.rate = a.number("--rate", 0);
+  o.rate = a.number(rate_option, 0);
   o.dt = a.number("--dt", 0);
-  if (a.has("--rate") && !(o.rate > 0)) throw Error("option --rate expects a rate > 0 Hz");
+  if (a.has(rate_option) && !(o.rate > 0))
+    throw Error("option " + rate_option + " expects a rate > 0 Hz");
   if (a.has("--dt") && !(o.dt > 0)) throw Error("option --dt expects a step > 0 s");
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
@@ -70,9 +71,9 @@ RunMetadata run_metadata(const Args &a)
 }
 
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
-                  bool skip_sliding_phase)
+                  bool skip_sliding_phase, const std::string &rate_option)
 {
-  InputOptions o = input_options(a);
+  InputOptions o = input_options(a, rate_option);
   o.min_samples = min_samples;
   bool auto_from = false;
   if (skip_sliding_phase && !a.has("--from") && meta.t_sliding_end) {

@@ -16,13 +16,15 @@
 
 namespace ohmdem::post::cli {
 
-void add_input_options(Args &a);
-InputOptions input_options(const Args &a);
+// `rate_option` names the option giving the rate of a signal without time stamps (acquire uses
+// --rate for the instrument's rate and --input-rate for this).
+void add_input_options(Args &a, const std::string &rate_option = "--rate");
+InputOptions input_options(const Args &a, const std::string &rate_option = "--rate");
 // --metadata FILE, else run.json next to the first input (unless --no-metadata), else none.
 RunMetadata run_metadata(const Args &a);
 // Loads the signal and applies the metadata's t_sliding_end as default --from when asked.
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
-                  bool skip_sliding_phase = false);
+                  bool skip_sliding_phase = false, const std::string &rate_option = "--rate");
 
 void add_output_options(Args &a);
 class Output {
