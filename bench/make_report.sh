@@ -5,6 +5,7 @@
 # LIGGGHTS, electrical cost, speed against error, partition sweep). Takes about 10 minutes on
 # 2 cores (DETECTABILITY=--full: the whole detectability grid, longer).
 #   bench/make_report.sh [REPORT_DIR]          (default: report; needs a build in build/)
+#   PARTS="load_speed detectability" bench/make_report.sh doc/report   (only those, again)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$(realpath -m "${1:-report}")
@@ -14,31 +15,52 @@ trap 'rm -rf "$WORK"' EXIT
 cd "$ROOT"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-echo "== defect study (Fig. 13, Fig. 15)"
-inputs/bearing_6208/study_defects.sh "$WORK/study" 0.12 > "$OUT/study.log"
-mkdir -p "$OUT/study"
-cp "$WORK"/study/*.png "$WORK"/study/*.csv "$WORK"/study/study.md "$OUT/study/"
-echo "== load and speed study"
-inputs/bearing_6208/study_load_speed.sh "$WORK/load_speed" > "$OUT/load_speed.log"
-mkdir -p "$OUT/load_speed"
-cp "$WORK"/load_speed/*.png "$WORK"/load_speed/load_speed.csv "$WORK"/load_speed/load_speed.md "$OUT/load_speed/"
-echo "== detectability study (${DETECTABILITY:---quick} grid; DETECTABILITY=--full for the whole grid)"
-det_args=()
-[ "${DETECTABILITY:---quick}" = "--quick" ] && det_args=(--quick)
-inputs/bearing_6208/study_detectability.sh "${det_args[@]}" "$WORK/detectability" > "$OUT/detectability.log"
-mkdir -p "$OUT/detectability"
-cp "$WORK"/detectability/*.png "$WORK"/detectability/detectability.csv \
-   "$WORK"/detectability/detectability.md "$OUT/detectability/"
-echo "== validation numbers (test suite)"
-ctest --test-dir build -V -R "deck_hertz_static|deck_kinematics|deck_radial|deck_resistance|validation_|defect_frequencies|defect_sizes|defect_diagnose|vibration_" \
-  > "$OUT/validation.log" 2>&1 || true
-echo "== speed: stock LIGGGHTS scenes, electrical cost, speed against error, sweep"
-bench/stock/run_stock.sh -n 30000 -o "$WORK/stock" > "$OUT/stock.log" 2>&1 || true
-bench/resistance/run_resistance_bench.sh 30000 > "$OUT/resistance.log"
-bench/speed_error/run_speed_error.sh "$WORK/speed_error" 0.1 > "$OUT/speed_error.log"
-mkdir -p "$OUT/speed_error"
-cp "$WORK"/speed_error/speed_error.png "$WORK"/speed_error/speed_error.csv "$OUT/speed_error/"
-bench/sweep/run_sweep_bench.sh 0.05 > "$OUT/sweep.log"
+# PARTS: which parts to run again (the others keep their logs and figures in REPORT_DIR):
+# any of defects load_speed detectability validation speed signal; default all.
+PARTS=" ${PARTS:-defects load_speed detectability validation speed signal} "
+want() { [[ "$PARTS" == *" $1 "* ]]; }
+
+if want defects; then
+  echo "== defect study (Fig. 13, Fig. 15)"
+  inputs/bearing_6208/study_defects.sh "$WORK/study" 0.12 > "$OUT/study.log"
+  mkdir -p "$OUT/study"
+  cp "$WORK"/study/*.png "$WORK"/study/*.csv "$WORK"/study/study.md "$OUT/study/"
+fi
+if want load_speed; then
+  echo "== load and speed study"
+  inputs/bearing_6208/study_load_speed.sh "$WORK/load_speed" > "$OUT/load_speed.log"
+  mkdir -p "$OUT/load_speed"
+  cp "$WORK"/load_speed/*.png "$WORK"/load_speed/load_speed.csv "$WORK"/load_speed/load_speed.md \
+     "$OUT/load_speed/"
+fi
+if want detectability; then
+  echo "== detectability study (${DETECTABILITY:---quick} grid; DETECTABILITY=--full for the whole grid)"
+  det_args=()
+  [ "${DETECTABILITY:---quick}" = "--quick" ] && det_args=(--quick)
+  inputs/bearing_6208/study_detectability.sh "${det_args[@]}" "$WORK/detectability" \
+    > "$OUT/detectability.log"
+  mkdir -p "$OUT/detectability"
+  cp "$WORK"/detectability/*.png "$WORK"/detectability/detectability.csv \
+     "$WORK"/detectability/detectability.md "$OUT/detectability/"
+fi
+if want validation; then
+  echo "== validation numbers (test suite)"
+  ctest --test-dir build -V -R "deck_hertz_static|deck_kinematics|deck_radial|deck_resistance|validation_|defect_frequencies|defect_sizes|defect_diagnose|vibration_" \
+    > "$OUT/validation.log" 2>&1 || true
+fi
+if want speed; then
+  echo "== speed: stock LIGGGHTS scenes, electrical cost, speed against error, sweep"
+  bench/stock/run_stock.sh -n 30000 -o "$WORK/stock" > "$OUT/stock.log" 2>&1 || true
+  bench/resistance/run_resistance_bench.sh 30000 > "$OUT/resistance.log"
+  bench/speed_error/run_speed_error.sh "$WORK/speed_error" 0.1 > "$OUT/speed_error.log"
+  mkdir -p "$OUT/speed_error"
+  cp "$WORK"/speed_error/speed_error.png "$WORK"/speed_error/speed_error.csv "$OUT/speed_error/"
+  bench/sweep/run_sweep_bench.sh 0.05 > "$OUT/sweep.log"
+fi
+if want signal; then
+  echo "== signal writer: every step against every 100th"
+  bench/signal/run_signal_bench.sh 0.2 3 > "$OUT/signal.log"
+fi
 
 /usr/bin/python3 - "$OUT" <<'PY'
 import os, re, sys
@@ -108,6 +130,12 @@ Recommended time step per use (from the table above): dt = 1e-5 s (the largest s
 when only the defect frequencies matter (error 2e-5); the paper's 1e-6 s for the statistical
 indicators, the paper's own reading (kurtosis within 0.6 %; at 5e-6 s it is off by 4 %); 5e-7 s
 when the pulse shape matters (the size estimate, kurtosis within 0.2 %).
+
+Writing the signal at full rate (`bench/signal/run_signal_bench.sh`):
+
+```
+{text("signal.log").strip()}
+```
 
 Partition sweep (`bench/sweep/run_sweep_bench.sh`):
 
