@@ -226,10 +226,10 @@ def test_custom(r):
     d, md = r.run("default", tend=0.0001)
     want = {"bearing": "6208", "nb": 13, "db": 0.0126, "dext": 0.0732, "dinn": 0.048,
             "rc_ext": 0.00665, "rc_inn": 0.00655, "F": 320, "ring_mass": 0.15,
-            "cage_mass": 0.008, "cage_clearance": 1e-4}
+            "cage_mass": 0.008, "cage_clearance": 1e-4, "ring_damping": 6000}
     bad = {k: md.get(k) for k, v in want.items() if md.get(k) != v}
-    check(not bad, f"default run: the paper's 6208, F = 320 N, ring 0.15 kg, cage 8 g, "
-          f"0.1 mm play (differences: {bad})")
+    check(not bad, f"default run: the paper's 6208, F = 320 N, ring 0.15 kg and 6000 N s/m, "
+          f"cage 8 g, 0.1 mm play (differences: {bad})")
 
 
 def main():
