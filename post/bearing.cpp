@@ -130,9 +130,8 @@ CatalogEntry catalog_entry(const std::string &dir, const std::string &name)
 {
   const std::vector<std::string> names = catalog_names(dir);
   if (std::find(names.begin(), names.end(), name) == names.end())
-    throw Error("bearing '" + name + "' is not in the catalog " + dir +
-                "; known bearings: " + joined(names) +
-                " (or give --nb --db --dp [--beta] explicitly)");
+    throw Error("bearing '" + name + "' is not in the catalog " + dir + "; known bearings: " +
+                joined(names) + " (or give --nb --db --dp [--beta] explicitly)");
   return read_catalog_file(dir + "/" + name, name);
 }
 

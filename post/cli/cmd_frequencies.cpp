@@ -27,8 +27,7 @@ int run_frequencies(const std::vector<std::string> &argv)
   const RunMetadata meta =
       a.has("--metadata") ? read_run_metadata(a.get("--metadata")) : RunMetadata{};
   const BearingChoice bc = bearing_choice(a, meta);
-  if (!bc.geometry)
-    throw Error("frequencies: give a bearing (--bearing NAME or --nb --db --dp)");
+  if (!bc.geometry) throw Error("frequencies: give a bearing (--bearing NAME or --nb --db --dp)");
   if (!bc.fr) throw Error("frequencies: give the shaft speed (--rpm, --shaft-hz or --omega)");
   const long long harmonics = a.integer("--harmonics", 1);
   if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
