@@ -50,6 +50,11 @@ RunMetadata read_run_metadata(const std::string &path)
   m.nb = number(j, "nb", path);
   m.db = number(j, "db", path);
   m.dp = number(j, "dp", path);
+  m.catalog_name = text(j, "catalog_name", path);
+  m.dext = number(j, "dext", path);
+  m.dinn = number(j, "dinn", path);
+  m.rc_ext = number(j, "rc_ext", path);
+  m.rc_inn = number(j, "rc_inn", path);
   m.contact_angle = number(j, "contact_angle", path);
   m.dt = number(j, "dt", path);
   m.size_deg = number(j, "size_deg", path);

@@ -11,8 +11,11 @@ namespace ohmdem::post {
 struct RunMetadata {
   std::string path;  // empty when no metadata was found
   std::optional<std::string> bearing, defect, load;
+  std::optional<std::string> catalog_name;  // the -var bearing NAME the run started from
   std::optional<double> omega_inner;    // shaft angular speed (rad/s)
   std::optional<double> nb, db, dp;     // ball count, ball and pitch diameters (m)
+  std::optional<double> dext, dinn;     // race diameters at the groove bottom (m)
+  std::optional<double> rc_ext, rc_inn; // groove radii (m)
   std::optional<double> contact_angle;  // degrees
   std::optional<double> dt;             // engine time step (s)
   std::optional<double> size_deg;       // the defect size set in the deck (for reference only)

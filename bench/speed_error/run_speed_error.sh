@@ -8,6 +8,7 @@
 #   bench/speed_error/run_speed_error.sh [OUT] [TEND]        (defaults: speed-error, 0.1 s)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
 OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
 POST=${POST:-$ROOT/build/ohmdem-post}
 OUT=$(realpath -m "${1:-speed-error}")

@@ -29,6 +29,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 OHMDEM = os.environ.get("OHMDEM", os.path.join(ROOT, "build", "ohmdem"))
 POST = os.environ.get("POST", os.path.join(ROOT, "build", "ohmdem-post"))
+# in.bearing finds the bearing catalog through OHMDEM_CATALOG when run from another folder.
+os.environ.setdefault("OHMDEM_CATALOG", os.path.join(ROOT, "inputs", "bearings"))
 
 CURRENT = 0.1          # A, the deck's injected current: the instrument reads V = I R
 SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer
@@ -89,7 +91,7 @@ def simulate(out, sizes):
         os.makedirs(root, exist_ok=True)
         values = " ".join(f"{s:g}" for s in sizes)
         cmd = ["mpirun", "-np", "2", OHMDEM, "-partition", "2x1", "-in", os.path.join(HERE, "in.sweep"),
-               "-var", "here", HERE, "-var", "bearing", os.path.join(HERE, "in.bearing"),
+               "-var", "here", HERE, "-var", "bearing_deck", os.path.join(HERE, "in.bearing"),
                "-var", "root", root, "-var", "sizes", values, "-var", "ncases", str(len(sizes)),
                "-var", "defect", defect, "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
         for k, v in DECK_VARS.items():

@@ -20,6 +20,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 OHMDEM = os.environ.get("OHMDEM", os.path.join(ROOT, "build", "ohmdem"))
 POST = os.environ.get("POST", os.path.join(ROOT, "build", "ohmdem-post"))
+# in.bearing finds the bearing catalog through OHMDEM_CATALOG when run from another folder.
+os.environ.setdefault("OHMDEM_CATALOG", os.path.join(ROOT, "inputs", "bearings"))
 
 # The deck's defaults (in.bearing: Table 1 of the paper and the deck's stated choices).
 NB, DB, DEXT, DINN = 13, 0.0126, 0.0732, 0.048

@@ -106,7 +106,12 @@ Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.
 void add_bearing_options(Args &a)
 {
   a.section("Bearing and speed");
-  a.option("--bearing", "NAME", "preset geometry: 6208 (the paper) or 6205 (CWRU)");
+  a.option("--bearing", "NAME",
+           "a bearing of the catalog (inputs/bearings, e.g. 6208 the paper's, 6205-2RS_JEM "
+           "CWRU's drive end)");
+  a.option("--catalog", "DIR",
+           "bearing catalog folder (default: $OHMDEM_CATALOG, else the source tree's "
+           "inputs/bearings)");
   a.option("--nb", "N", "number of balls");
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");
@@ -122,15 +127,18 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
   BearingChoice c;
   BearingGeometry g;
   bool have = false;
+  const std::string catalog = a.has("--catalog") ? a.get("--catalog") : default_catalog_dir();
   if (a.has("--bearing")) {
-    g = bearing_preset(a.get("--bearing"));
+    const CatalogEntry e = catalog_entry(catalog, a.get("--bearing"));
+    g = e.geometry();
     have = true;
-    c.geometry_source = "--bearing";
-  } else if (meta.bearing && (*meta.bearing == "6208" || *meta.bearing == "6205") &&
-             !(meta.nb && meta.db && meta.dp)) {
-    g = bearing_preset(*meta.bearing);
+    c.geometry_source = e.path;
+  } else if (meta.bearing && *meta.bearing != "custom" && !(meta.nb && meta.db && meta.dp)) {
+    // an older run.json that names its bearing only
+    const CatalogEntry e = catalog_entry(catalog, *meta.bearing);
+    g = e.geometry();
     have = true;
-    c.geometry_source = meta.path;
+    c.geometry_source = meta.path + " (" + e.path + ")";
   } else if (meta.nb && meta.db && meta.dp) {
     g.name = meta.bearing ? *meta.bearing : "custom";
     g.nb = static_cast<int>(std::lround(*meta.nb));

@@ -45,8 +45,8 @@ struct BearingChoice {
   std::optional<double> fr;  // shaft frequency (Hz)
   std::string geometry_source, fr_source;
 };
-// Command line first (--bearing, --nb/--db/--dp/--beta, --rpm/--shaft-hz/--fr/--omega), then
-// the run's metadata.
+// Command line first (--bearing NAME from the catalog --catalog DIR, --nb/--db/--dp/--beta,
+// --rpm/--shaft-hz/--fr/--omega), then the run's metadata (its nb, db, dp: what ran).
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.

@@ -37,7 +37,7 @@ def restart_pair(r, name, dt_second):
     split = os.path.join(r.workdir, f"{name}_split")
     first, _ = r.run(f"{name}_split", deck=os.path.join(os.path.dirname(__file__),
                                                         "in.restart_first"),
-                     bearing=r.deck, tend=0.002)
+                     bearing_deck=r.deck, tend=0.002)
     # The second part continues into the same folder, from the restart file written there.
     r.run(f"{name}_split", tend=0.004, start="restart", dt=dt_second,
           restart_file=os.path.join(split, "half.restart"))
