@@ -56,6 +56,7 @@ void validate(const AcquireSettings &s, double fs_in)
 std::size_t integer_ratio(double fs_in, double rate)
 {
   const double r = fs_in / rate;
+  if (!(r < 1e12)) return 0;  // (an absurd ratio: leave it to the sample count check)
   const double k = std::round(r);
   return k >= 1 && std::abs(r - k) <= 1e-6 * r ? static_cast<std::size_t>(k) : 0;
 }

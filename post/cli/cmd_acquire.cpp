@@ -198,7 +198,7 @@ int run_acquire(const std::vector<std::string> &argv)
     throw Error("option --name expects one word without blanks, commas, quotes or '#', got '" +
                 name + "'");
   if (name == "time")
-    throw Error("option --name: 'time' names the time column; choose another name");
+    throw Error("the value column cannot be called 'time' (the time column's name): give --name");
   const Acquisition q = acquire(s, set);
   Output out(a);
   if (out.format() == OutputFormat::Json)

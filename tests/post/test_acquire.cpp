@@ -289,6 +289,33 @@ TEST(Sampling, IntegerRatioTakesEveryKthFilteredSample)
   EXPECT_TRUE(a.warnings.empty());
 }
 
+TEST(Sampling, IntegerRatioToleratesAFittedInputRate)
+{
+  EXPECT_EQ(integer_ratio(1e6, 50000), 20u);
+  EXPECT_EQ(integer_ratio(1e6 * (1 - 3e-13), 50000), 20u);  // a rate fitted to printed stamps
+  EXPECT_EQ(integer_ratio(1e6, 1e6), 1u);
+  EXPECT_EQ(integer_ratio(1e6, 48000), 0u);
+  EXPECT_EQ(integer_ratio(1e6, 50001), 0u);  // 19.9996: 2e-5 off, interpolated
+  EXPECT_EQ(integer_ratio(1e6, 1e-300), 0u);
+}
+
+TEST(Sampling, SteadyStartHasNoTransientZeroStartHasTheStepResponse)
+{
+  // a constant R of 1.39 ohm: from a steady state the filter outputs it unchanged, from rest it
+  // rises from b0 * 1.39 (the step response), as scipy's sosfilt without zi
+  AcquireSettings s;
+  s.lowpass = 20000;
+  s.order = 6;
+  const Signal in = make_signal(std::vector<double>(2000, 1.39), 1e6);
+  const Acquisition a = acquire(in, s);
+  for (double v : a.signal.x) ASSERT_NEAR(v, 1.39, 1e-12);
+  s.steady_start = false;
+  const Acquisition b = acquire(in, s);
+  EXPECT_NEAR(b.signal.x[0], b.filter[0].b0 * 1.39, 1e-18);
+  EXPECT_LT(b.signal.x[10], 0.1);
+  EXPECT_NEAR(b.signal.x.back(), 1.39, 1e-6);
+}
+
 TEST(Sampling, NoOptionIsACopy)
 {
   const std::vector<double> x = test::read_column(test::reference("acquire_input.txt"));
