@@ -142,8 +142,8 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     throw Error("acquire needs at least 4 input samples, got " + std::to_string(in.size()));
   for (std::size_t i = 0; i < in.size(); ++i)
     if (!std::isfinite(in.x[i]))
-      throw Error("acquire: non-finite value at sample " + std::to_string(i) + " (t = " +
-                  format_number(in.time(i), 10) + " s)");
+      throw Error("acquire: non-finite value at sample " + std::to_string(i) +
+                  " (t = " + format_number(in.time(i), 10) + " s)");
   Acquisition a;
   std::vector<double> y = in.x;
   for (double &v : y) v = s.scale * v + s.offset;
@@ -168,7 +168,8 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     if (s.lowpass == 0 && fs_out < in.rate)
       a.warnings.push_back("sampling at " + format_number(fs_out) +
                            " Hz without --lowpass: nothing stops aliasing of content above "
-                           "rate/2 = " + format_number(fs_out / 2) + " Hz");
+                           "rate/2 = " +
+                           format_number(fs_out / 2) + " Hz");
   } else {
     a.decimation = 1;
   }
@@ -187,13 +188,11 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     a.q = (s.hi - s.lo) / std::ldexp(1.0, s.bits);
     a.clipped = quantize(y, s.bits, s.lo, s.hi);
     if (a.clipped > 0)
-      a.warnings.push_back(std::to_string(a.clipped) + " of " + std::to_string(y.size()) +
-                           " samples (" +
-                           format_number(100.0 * static_cast<double>(a.clipped) /
-                                             static_cast<double>(y.size()),
-                                         3) +
-                           " %) clipped at the ADC range [" + format_number(s.lo) + ", " +
-                           format_number(s.hi) + "]");
+      a.warnings.push_back(
+          std::to_string(a.clipped) + " of " + std::to_string(y.size()) + " samples (" +
+          format_number(100.0 * static_cast<double>(a.clipped) / static_cast<double>(y.size()), 3) +
+          " %) clipped at the ADC range [" + format_number(s.lo) + ", " + format_number(s.hi) +
+          "]");
   }
 
   a.signal.x = std::move(y);

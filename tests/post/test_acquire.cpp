@@ -96,8 +96,8 @@ TEST(Butterworth, SectionsMatchScipyButter)
     }
     ++filters;
   }
-  std::printf("[ measured ] %zu filters: largest coefficient difference from scipy %.3g\n",
-              filters, worst);
+  std::printf("[ measured ] %zu filters: largest coefficient difference from scipy %.3g\n", filters,
+              worst);
 }
 
 TEST(Butterworth, FilteringMatchesScipySosfilt)
@@ -202,8 +202,7 @@ TEST(Adc, ClippedCountOfAnOverdrivenSine)
   const double a = 1.5, q = 2 / 256.0;
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = a * std::sin(std::sqrt(2.0) * i);
-  const double expected =
-      n * (std::acos((1 - q / 2) / a) + std::acos((1 + q / 2) / a)) / kPi;
+  const double expected = n * (std::acos((1 - q / 2) / a) + std::acos((1 + q / 2) / a)) / kPi;
   const std::size_t clipped = quantize(x, 8, -1, 1);
   EXPECT_NEAR(static_cast<double>(clipped), expected, 0.002 * n);
   EXPECT_EQ(*std::max_element(x.begin(), x.end()), 1 - q);
@@ -345,12 +344,12 @@ TEST(Sampling, CubicInterpolationWithinItsErrorBound)
     double inner = 0, ends = 0;
     for (std::size_t j = 0; j < a.signal.size(); ++j) {
       const double u = j * fs / rate;  // position in input samples
-      const double e =
-          std::abs(a.signal.x[j] - amp * std::sin(2 * kPi * f * (u / fs) + 0.3)) / amp;
+      const double e = std::abs(a.signal.x[j] - amp * std::sin(2 * kPi * f * (u / fs) + 0.3)) / amp;
       (u < 1 || u > 19998 ? ends : inner) = std::max(u < 1 || u > 19998 ? ends : inner, e);
     }
-    std::printf("[ measured ] interpolation at %g Hz: max error %.3g of the amplitude (bound %.3g)\n",
-                rate, inner, bound);
+    std::printf(
+        "[ measured ] interpolation at %g Hz: max error %.3g of the amplitude (bound %.3g)\n", rate,
+        inner, bound);
     EXPECT_LE(inner, bound * 1.001 + 1e-14) << rate;
     EXPECT_GT(inner, bound / 4) << rate;  // the bound is tight: a worse scheme would fail
     EXPECT_LE(ends, end_bound * 1.001 + 1e-14) << rate;
@@ -370,11 +369,13 @@ TEST(Sampling, ToneAboveNyquistIsAttenuatedByTheFilter)
     const Acquisition a = acquire(in, s);
     const double alias = f - rate;
     // skip the first 2 ms: the filter's start-up transient on the tone
-    const double got = tone_amplitude(a.signal.x, rate, alias, static_cast<std::size_t>(0.002 * rate));
+    const double got =
+        tone_amplitude(a.signal.x, rate, alias, static_cast<std::size_t>(0.002 * rate));
     const double theory = amp * butterworth_gain(4, 10000, fs, f);
-    std::printf("[ measured ] %g Hz at %g Hz: alias at %g Hz, amplitude / theory = %.6f "
-                "(|H| = %.4g)\n",
-                f, rate, alias, got / theory, theory / amp);
+    std::printf(
+        "[ measured ] %g Hz at %g Hz: alias at %g Hz, amplitude / theory = %.6f "
+        "(|H| = %.4g)\n",
+        f, rate, alias, got / theory, theory / amp);
     // interpolation scales a tone by at most cubic_interpolation_error(f) (6e-5 here)
     EXPECT_NEAR(got / theory, 1, 1e-4) << rate;
     // without the filter the alias keeps the full amplitude
@@ -401,7 +402,8 @@ TEST(Acquire, ScaleOffsetThenAdc)
   EXPECT_DOUBLE_EQ(a.q, q);
   EXPECT_EQ(a.clipped, 1u);
   ASSERT_EQ(a.warnings.size(), 1u);
-  EXPECT_NE(a.warnings[0].find("1 of 5 samples (20 %) clipped"), std::string::npos) << a.warnings[0];
+  EXPECT_NE(a.warnings[0].find("1 of 5 samples (20 %) clipped"), std::string::npos)
+      << a.warnings[0];
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double v = std::min(0.01 * x[i] + 0.001, 0.02 - q);
     EXPECT_NEAR(a.signal.x[i], v, q / 2 * (1 + 1e-9)) << i;
