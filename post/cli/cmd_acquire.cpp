@@ -37,10 +37,10 @@ AcquireSettings settings(const Args &a)
     if (!(s.lowpass > 0)) throw Error("option --lowpass expects a cut-off > 0 Hz");
   }
   const long long order = a.integer("--order", 4);
-  s.order = order < 1 || order > kMaxButterworthOrder ? -1 : static_cast<int>(order);
-  if (s.order < 0)
+  if (order < 1 || order > kMaxButterworthOrder)
     throw Error("option --order expects a filter order in 1.." +
                 std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(order));
+  s.order = static_cast<int>(order);
   if (a.has("--order") && !a.has("--lowpass")) throw Error("option --order needs --lowpass HZ");
   const std::string start = a.get("--filter-start");
   if (start != "steady" && start != "zero")
