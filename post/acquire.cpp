@@ -56,6 +56,7 @@ void validate(const AcquireSettings &s, double fs_in)
 std::size_t integer_ratio(double fs_in, double rate)
 {
   const double r = fs_in / rate;
+  if (!(r < 1e12)) return 0;  // (an absurd ratio: leave it to the sample count check)
   const double k = std::round(r);
   return k >= 1 && std::abs(r - k) <= 1e-6 * r ? static_cast<std::size_t>(k) : 0;
 }
@@ -141,8 +142,8 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     throw Error("acquire needs at least 4 input samples, got " + std::to_string(in.size()));
   for (std::size_t i = 0; i < in.size(); ++i)
     if (!std::isfinite(in.x[i]))
-      throw Error("acquire: non-finite value at sample " + std::to_string(i) + " (t = " +
-                  format_number(in.time(i), 10) + " s)");
+      throw Error("acquire: non-finite value at sample " + std::to_string(i) +
+                  " (t = " + format_number(in.time(i), 10) + " s)");
   Acquisition a;
   std::vector<double> y = in.x;
   for (double &v : y) v = s.scale * v + s.offset;
@@ -167,7 +168,8 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     if (s.lowpass == 0 && fs_out < in.rate)
       a.warnings.push_back("sampling at " + format_number(fs_out) +
                            " Hz without --lowpass: nothing stops aliasing of content above "
-                           "rate/2 = " + format_number(fs_out / 2) + " Hz");
+                           "rate/2 = " +
+                           format_number(fs_out / 2) + " Hz");
   } else {
     a.decimation = 1;
   }
@@ -186,13 +188,11 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     a.q = (s.hi - s.lo) / std::ldexp(1.0, s.bits);
     a.clipped = quantize(y, s.bits, s.lo, s.hi);
     if (a.clipped > 0)
-      a.warnings.push_back(std::to_string(a.clipped) + " of " + std::to_string(y.size()) +
-                           " samples (" +
-                           format_number(100.0 * static_cast<double>(a.clipped) /
-                                             static_cast<double>(y.size()),
-                                         3) +
-                           " %) clipped at the ADC range [" + format_number(s.lo) + ", " +
-                           format_number(s.hi) + "]");
+      a.warnings.push_back(
+          std::to_string(a.clipped) + " of " + std::to_string(y.size()) + " samples (" +
+          format_number(100.0 * static_cast<double>(a.clipped) / static_cast<double>(y.size()), 3) +
+          " %) clipped at the ADC range [" + format_number(s.lo) + ", " + format_number(s.hi) +
+          "]");
   }
 
   a.signal.x = std::move(y);

@@ -27,20 +27,20 @@ struct AcquireSettings {
   double noise_rms = 0;          // white noise rms per sample (output unit)
   double noise_density = 0;      // or its one-sided density (unit/sqrt(Hz)) over 0..rate/2
   std::uint64_t seed = 1;
-  int bits = 0;  // ADC resolution; 0 = no ADC
-  double lo = 0, hi = 0;         // ADC input range
+  int bits = 0;           // ADC resolution; 0 = no ADC
+  double lo = 0, hi = 0;  // ADC input range
 };
 
 // Throws Error naming the command-line option for an impossible setting.
 void validate(const AcquireSettings &s, double input_rate);
 
 struct Acquisition {
-  Signal signal;                // the record (t0 = the input's first time)
-  Sos filter;                   // the anti-alias filter's sections (empty without --lowpass)
-  std::size_t decimation = 0;   // k when every k-th sample was taken; 0 when interpolated
-  double noise_sigma = 0;       // rms of the added noise
-  double q = 0;                 // ADC step (HI - LO) / 2^bits
-  std::size_t clipped = 0;      // samples outside the ADC's codes
+  Signal signal;               // the record (t0 = the input's first time)
+  Sos filter;                  // the anti-alias filter's sections (empty without --lowpass)
+  std::size_t decimation = 0;  // k when every k-th sample was taken; 0 when interpolated
+  double noise_sigma = 0;      // rms of the added noise
+  double q = 0;                // ADC step (HI - LO) / 2^bits
+  std::size_t clipped = 0;     // samples outside the ADC's codes
   std::vector<std::string> warnings;
 };
 

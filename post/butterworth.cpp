@@ -77,8 +77,8 @@ Sos butterworth_lowpass(int order, double fc, double fs)
   if (!(fs > 0) || !std::isfinite(fs))
     throw Error("Butterworth design: sampling rate must be > 0 Hz");
   if (!(fc > 0) || !(fc < fs / 2))
-    throw Error("Butterworth cut-off " + format_number(fc) + " Hz must lie in (0, fs/2 = " +
-                format_number(fs / 2) + " Hz)");
+    throw Error("Butterworth cut-off " + format_number(fc) +
+                " Hz must lie in (0, fs/2 = " + format_number(fs / 2) + " Hz)");
   const int n = order;
   // scipy.signal.iirfilter: frequencies normalised to fs = 2, cut-off prewarped
   const double wn = 2 * fc / fs;

@@ -37,10 +37,10 @@ AcquireSettings settings(const Args &a)
     if (!(s.lowpass > 0)) throw Error("option --lowpass expects a cut-off > 0 Hz");
   }
   const long long order = a.integer("--order", 4);
-  s.order = order < 1 || order > kMaxButterworthOrder ? -1 : static_cast<int>(order);
-  if (s.order < 0)
+  if (order < 1 || order > kMaxButterworthOrder)
     throw Error("option --order expects a filter order in 1.." +
                 std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(order));
+  s.order = static_cast<int>(order);
   if (a.has("--order") && !a.has("--lowpass")) throw Error("option --order needs --lowpass HZ");
   const std::string start = a.get("--filter-start");
   if (start != "steady" && start != "zero")
@@ -89,7 +89,8 @@ std::string setting_lines(const Args &a, const AcquireSettings &s, const Acquisi
   const Signal &y = q.signal;
   auto line = [](const std::string &k, const std::string &v) { return "# " + k + ": " + v + "\n"; };
   std::string m;
-  m += line("chain", "scale/offset -> anti-alias low-pass (input rate) -> sampling -> noise -> ADC");
+  m +=
+      line("chain", "scale/offset -> anti-alias low-pass (input rate) -> sampling -> noise -> ADC");
   m += line("scale", format_number(s.scale, 10) + " (output = scale * input + offset)");
   m += line("offset", format_number(s.offset, 10));
   if (q.filter.empty())
@@ -109,27 +110,25 @@ std::string setting_lines(const Args &a, const AcquireSettings &s, const Acquisi
               "cubic (4-point Lagrange) interpolation at " + format_number(y.rate, 10) +
                   " Hz; error on a tone at f <= (3/128)(2 pi f/" + format_number(fs_in, 10) +
                   ")^4 of its amplitude (" +
-                  format_number(cubic_interpolation_error(
-                                    s.lowpass > 0 ? s.lowpass : y.rate / 2, fs_in),
-                                3) +
+                  format_number(
+                      cubic_interpolation_error(s.lowpass > 0 ? s.lowpass : y.rate / 2, fs_in), 3) +
                   (s.lowpass > 0 ? " at the cut-off)" : " at the output Nyquist frequency)"));
   if (q.noise_sigma > 0)
     m += line("noise", "white Gaussian added to the samples, rms " +
                            format_number(q.noise_sigma, 10) + " (" +
-                           (s.noise_density > 0
-                                ? "density " + format_number(s.noise_density, 10) +
-                                      " per sqrt(Hz) over 0 to rate/2 = " +
-                                      format_number(y.rate / 2, 10) + " Hz"
-                                : std::string("--noise-rms")) +
+                           (s.noise_density > 0 ? "density " + format_number(s.noise_density, 10) +
+                                                      " per sqrt(Hz) over 0 to rate/2 = " +
+                                                      format_number(y.rate / 2, 10) + " Hz"
+                                                : std::string("--noise-rms")) +
                            (a.has("--input-referred") ? ", input-referred x |scale|" : "") +
                            "), mt19937_64 + Box-Muller, seed " + std::to_string(s.seed));
   else
     m += line("noise", "none");
   if (s.bits > 0)
-    m += line("adc", std::to_string(s.bits) + " bits, range " + format_number(s.lo, 10) +
-                         " to " + format_number(s.hi, 10) + ", q = " +
-                         format_number(q.q, 10) + ", mid-tread (levels LO + k q), clipped " +
-                         std::to_string(q.clipped) + " of " + std::to_string(y.size()));
+    m += line("adc", std::to_string(s.bits) + " bits, range " + format_number(s.lo, 10) + " to " +
+                         format_number(s.hi, 10) + ", q = " + format_number(q.q, 10) +
+                         ", mid-tread (levels LO + k q), clipped " + std::to_string(q.clipped) +
+                         " of " + std::to_string(y.size()));
   else
     m += line("adc", "none");
   if (!unit.empty()) m += line("unit", unit);
@@ -198,15 +197,15 @@ int run_acquire(const std::vector<std::string> &argv)
     throw Error("option --name expects one word without blanks, commas, quotes or '#', got '" +
                 name + "'");
   if (name == "time")
-    throw Error("option --name: 'time' names the time column; choose another name");
+    throw Error("the value column cannot be called 'time' (the time column's name): give --name");
   const Acquisition q = acquire(s, set);
   Output out(a);
   if (out.format() == OutputFormat::Json)
     throw Error("option --format expects table|csv for acquire (the other commands read them)");
   for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << w << "\n";
 
-  std::string text = "# ohmdem-post " + std::string(ohmdem::version()) +
-                     " acquire: what an instrument records\n";
+  std::string text =
+      "# ohmdem-post " + std::string(ohmdem::version()) + " acquire: what an instrument records\n";
   for (const auto &kv : s.meta)
     text += "# " + (kv.first == "source" ? kv.first : "input " + kv.first) + ": " +
             input_rate_named(kv.second) + "\n";

@@ -11,6 +11,7 @@
 #include "acquire.h"
 #include "butterworth.h"
 #include "error.h"
+#include "spectrum.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -96,8 +97,8 @@ TEST(Butterworth, SectionsMatchScipyButter)
     }
     ++filters;
   }
-  std::printf("[ measured ] %zu filters: largest coefficient difference from scipy %.3g\n",
-              filters, worst);
+  std::printf("[ measured ] %zu filters: largest coefficient difference from scipy %.3g\n", filters,
+              worst);
 }
 
 TEST(Butterworth, FilteringMatchesScipySosfilt)
@@ -202,8 +203,7 @@ TEST(Adc, ClippedCountOfAnOverdrivenSine)
   const double a = 1.5, q = 2 / 256.0;
   std::vector<double> x(n);
   for (std::size_t i = 0; i < n; ++i) x[i] = a * std::sin(std::sqrt(2.0) * i);
-  const double expected =
-      n * (std::acos((1 - q / 2) / a) + std::acos((1 + q / 2) / a)) / kPi;
+  const double expected = n * (std::acos((1 - q / 2) / a) + std::acos((1 + q / 2) / a)) / kPi;
   const std::size_t clipped = quantize(x, 8, -1, 1);
   EXPECT_NEAR(static_cast<double>(clipped), expected, 0.002 * n);
   EXPECT_EQ(*std::max_element(x.begin(), x.end()), 1 - q);
@@ -256,6 +256,26 @@ TEST(Noise, DensityGivesRmsOverTheOutputNyquistBand)
   EXPECT_NEAR(rms(b.signal.x) / 0.25, 1, 0.01);
 }
 
+TEST(Noise, DensityIsTheOneSidedPsdLevel)
+{
+  // the Welch PSD (Hann, 1024-sample segments, one-sided) of the added noise is flat at D^2:
+  // --noise-density is the density a spectrum analyser would read
+  const double d = 2e-8;
+  AcquireSettings s;
+  s.noise_density = d;
+  const Acquisition a = acquire(make_signal(std::vector<double>(200000, 0.0), 50000), s);
+  SpectrumOptions o;
+  o.scaling = Scaling::Psd;
+  o.segment = 1024;
+  const Spectrum p = spectrum(a.signal.x, 50000, o);
+  double mean = 0;
+  for (std::size_t k = 1; k + 1 < p.bins(); ++k) mean += p.value[k];  // DC and Nyquist left out
+  mean /= static_cast<double>(p.bins() - 2);
+  std::printf("[ measured ] Welch PSD level / density^2 = %.4f\n", mean / (d * d));
+  // 511 bins x 389 half-overlapping segments: relative standard error well below 1 %
+  EXPECT_NEAR(mean / (d * d), 1, 0.02);
+}
+
 TEST(Noise, SameSeedSameRecord)
 {
   AcquireSettings s;
@@ -289,6 +309,33 @@ TEST(Sampling, IntegerRatioTakesEveryKthFilteredSample)
   EXPECT_TRUE(a.warnings.empty());
 }
 
+TEST(Sampling, IntegerRatioToleratesAFittedInputRate)
+{
+  EXPECT_EQ(integer_ratio(1e6, 50000), 20u);
+  EXPECT_EQ(integer_ratio(1e6 * (1 - 3e-13), 50000), 20u);  // a rate fitted to printed stamps
+  EXPECT_EQ(integer_ratio(1e6, 1e6), 1u);
+  EXPECT_EQ(integer_ratio(1e6, 48000), 0u);
+  EXPECT_EQ(integer_ratio(1e6, 50001), 0u);  // 19.9996: 2e-5 off, interpolated
+  EXPECT_EQ(integer_ratio(1e6, 1e-300), 0u);
+}
+
+TEST(Sampling, SteadyStartHasNoTransientZeroStartHasTheStepResponse)
+{
+  // a constant R of 1.39 ohm: from a steady state the filter outputs it unchanged, from rest it
+  // rises from b0 * 1.39 (the step response), as scipy's sosfilt without zi
+  AcquireSettings s;
+  s.lowpass = 20000;
+  s.order = 6;
+  const Signal in = make_signal(std::vector<double>(2000, 1.39), 1e6);
+  const Acquisition a = acquire(in, s);
+  for (double v : a.signal.x) ASSERT_NEAR(v, 1.39, 1e-12);
+  s.steady_start = false;
+  const Acquisition b = acquire(in, s);
+  EXPECT_NEAR(b.signal.x[0], b.filter[0].b0 * 1.39, 1e-18);
+  EXPECT_LT(b.signal.x[10], 0.1);
+  EXPECT_NEAR(b.signal.x.back(), 1.39, 1e-6);
+}
+
 TEST(Sampling, NoOptionIsACopy)
 {
   const std::vector<double> x = test::read_column(test::reference("acquire_input.txt"));
@@ -318,12 +365,12 @@ TEST(Sampling, CubicInterpolationWithinItsErrorBound)
     double inner = 0, ends = 0;
     for (std::size_t j = 0; j < a.signal.size(); ++j) {
       const double u = j * fs / rate;  // position in input samples
-      const double e =
-          std::abs(a.signal.x[j] - amp * std::sin(2 * kPi * f * (u / fs) + 0.3)) / amp;
+      const double e = std::abs(a.signal.x[j] - amp * std::sin(2 * kPi * f * (u / fs) + 0.3)) / amp;
       (u < 1 || u > 19998 ? ends : inner) = std::max(u < 1 || u > 19998 ? ends : inner, e);
     }
-    std::printf("[ measured ] interpolation at %g Hz: max error %.3g of the amplitude (bound %.3g)\n",
-                rate, inner, bound);
+    std::printf(
+        "[ measured ] interpolation at %g Hz: max error %.3g of the amplitude (bound %.3g)\n", rate,
+        inner, bound);
     EXPECT_LE(inner, bound * 1.001 + 1e-14) << rate;
     EXPECT_GT(inner, bound / 4) << rate;  // the bound is tight: a worse scheme would fail
     EXPECT_LE(ends, end_bound * 1.001 + 1e-14) << rate;
@@ -343,11 +390,13 @@ TEST(Sampling, ToneAboveNyquistIsAttenuatedByTheFilter)
     const Acquisition a = acquire(in, s);
     const double alias = f - rate;
     // skip the first 2 ms: the filter's start-up transient on the tone
-    const double got = tone_amplitude(a.signal.x, rate, alias, static_cast<std::size_t>(0.002 * rate));
+    const double got =
+        tone_amplitude(a.signal.x, rate, alias, static_cast<std::size_t>(0.002 * rate));
     const double theory = amp * butterworth_gain(4, 10000, fs, f);
-    std::printf("[ measured ] %g Hz at %g Hz: alias at %g Hz, amplitude / theory = %.6f "
-                "(|H| = %.4g)\n",
-                f, rate, alias, got / theory, theory / amp);
+    std::printf(
+        "[ measured ] %g Hz at %g Hz: alias at %g Hz, amplitude / theory = %.6f "
+        "(|H| = %.4g)\n",
+        f, rate, alias, got / theory, theory / amp);
     // interpolation scales a tone by at most cubic_interpolation_error(f) (6e-5 here)
     EXPECT_NEAR(got / theory, 1, 1e-4) << rate;
     // without the filter the alias keeps the full amplitude
@@ -374,7 +423,8 @@ TEST(Acquire, ScaleOffsetThenAdc)
   EXPECT_DOUBLE_EQ(a.q, q);
   EXPECT_EQ(a.clipped, 1u);
   ASSERT_EQ(a.warnings.size(), 1u);
-  EXPECT_NE(a.warnings[0].find("1 of 5 samples (20 %) clipped"), std::string::npos) << a.warnings[0];
+  EXPECT_NE(a.warnings[0].find("1 of 5 samples (20 %) clipped"), std::string::npos)
+      << a.warnings[0];
   for (std::size_t i = 0; i < x.size(); ++i) {
     const double v = std::min(0.01 * x[i] + 0.001, 0.02 - q);
     EXPECT_NEAR(a.signal.x[i], v, q / 2 * (1 + 1e-9)) << i;

@@ -89,9 +89,11 @@ TEST(AcquireCli, BearingVoltageRecordIsReadByStatsSpectrumAndDiagnose)
   const std::string dir = make_run("acq_inner", "inner", &n);
   // 10 mA through R, 16 bits on 0..30 mV, 50 kHz behind a 20 kHz order-4 anti-alias filter
   const std::string rec = tmp("acq_inner_U.txt");
-  const CliRun a = run("acquire " + dir + "/signal.txt --scale 0.01 --lowpass 20000 --rate 50000 "
+  const CliRun a = run("acquire " + dir +
+                       "/signal.txt --scale 0.01 --lowpass 20000 --rate 50000 "
                        "--bits 16 --range 0 0.03 --noise-density 2e-8 --name U --unit V "
-                       "--output " + rec);
+                       "--output " +
+                       rec);
   ASSERT_EQ(a.status, 0) << a.out;
   EXPECT_EQ(a.out, "");  // no warning: nothing clipped, filtered
   const Record r = read_record(rec);
@@ -167,8 +169,8 @@ TEST(AcquireCli, WarnsOnClippingAndOnSamplingWithoutFilter)
   ASSERT_EQ(c.status, 0) << c.out;
   EXPECT_NE(c.out.find("WARNING: acquire: "), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("clipped at the ADC range [-1, 1]"), std::string::npos) << c.out;
-  const CliRun al = run("acquire " + in + " --input-rate 1000 --rate 300 --output " +
-                        tmp("acq_alias.txt"));
+  const CliRun al =
+      run("acquire " + in + " --input-rate 1000 --rate 300 --output " + tmp("acq_alias.txt"));
   ASSERT_EQ(al.status, 0) << al.out;
   EXPECT_NE(al.out.find("without --lowpass: nothing stops aliasing"), std::string::npos) << al.out;
   EXPECT_NE(test::slurp(tmp("acq_alias.txt")).find("# sampling: cubic (4-point Lagrange)"),
@@ -193,13 +195,15 @@ TEST(AcquireCli, AccelerometerWithInputReferredNoiseDensity)
   std::string text = "# time a\n";
   char buf[64];
   for (int i = 0; i < 20000; ++i) {
-    std::snprintf(buf, sizeof buf, "%.9g %.9g\n", i * 1e-5, 3 * std::sin(2 * 3.14159 * 160 * i * 1e-5));
+    std::snprintf(buf, sizeof buf, "%.9g %.9g\n", i * 1e-5,
+                  3 * std::sin(2 * 3.14159 * 160 * i * 1e-5));
     text += buf;
   }
   const std::string in = test::write_temp("acq_accel_in.txt", text);
   const CliRun a = run("acquire " + in +
                        " --scale 0.010197 --noise-density 5e-4 --input-referred --lowpass 10000 "
-                       "--rate 25600 --name v --unit V --output " + tmp("acq_accel.txt"));
+                       "--rate 25600 --name v --unit V --output " +
+                       tmp("acq_accel.txt"));
   ASSERT_EQ(a.status, 0) << a.out;
   const std::string out = test::slurp(tmp("acq_accel.txt"));
   char want[128];
