@@ -116,7 +116,7 @@ def acquire(sim, channel, rate, noise, bits, seed, dest):
             "--from", repr(T_FROM - 0.005), "--lowpass", repr(0.4 * rate), "--order", "4",
             "--rate", repr(rate), "--bits", str(bits), "--range", repr(lo), repr(hi),
             "--noise-density", repr(ch["noise"][noise]), "--seed", str(seed),
-            "--output", dest, os.path.join(sim, "signal.txt")]
+            "--name", "V", "--unit", "V", "--output", dest, os.path.join(sim, "signal.txt")]
     post(args)
     return dest
 
