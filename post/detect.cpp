@@ -1,0 +1,469 @@
+#include "detect.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+#include "error.h"
+#include "fft.h"
+#include "sampled_signal.h"
+#include "spectrum.h"
+#include "stats.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Largest z in [lo, hi] with sf(z) >= p, for a decreasing sf: bisection to the last bit.
+template <class F>
+double invert_decreasing(F sf, double p, double lo, double hi)
+{
+  for (int i = 0; i < 2000 && hi - lo > 0; ++i) {
+    const double mid = lo + (hi - lo) / 2;
+    if (mid <= lo || mid >= hi) break;
+    (sf(mid) > p ? lo : hi) = mid;
+  }
+  return lo + (hi - lo) / 2;
+}
+
+// Continued fraction of the incomplete beta function (modified Lentz).
+double beta_fraction(double a, double b, double x)
+{
+  const double tiny = 1e-300;
+  double c = 1, d = 1 - (a + b) * x / (a + 1);
+  if (std::fabs(d) < tiny) d = tiny;
+  d = 1 / d;
+  double h = d;
+  for (int m = 1; m <= 10000; ++m) {
+    const double m2 = 2.0 * m;
+    double aa = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
+    d = 1 + aa * d;
+    c = 1 + aa / c;
+    if (std::fabs(d) < tiny) d = tiny;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1 / d;
+    h *= d * c;
+    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
+    d = 1 + aa * d;
+    c = 1 + aa / c;
+    if (std::fabs(d) < tiny) d = tiny;
+    if (std::fabs(c) < tiny) c = tiny;
+    d = 1 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::fabs(del - 1) < 1e-16) break;
+  }
+  return h;
+}
+
+// Regularised incomplete beta I_x(a, b).
+double incomplete_beta(double a, double b, double x)
+{
+  if (x <= 0) return 0;
+  if (x >= 1) return 1;
+  const double lbt =
+      std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
+  if (x < (a + 1) / (a + b + 2)) return std::exp(lbt) * beta_fraction(a, b, x) / a;
+  return 1 - std::exp(lbt) * beta_fraction(b, a, 1 - x) / b;
+}
+
+double student_t_sf(double t, double nu)
+{
+  const double tail = 0.5 * incomplete_beta(nu / 2, 0.5, nu / (nu + t * t));
+  return t >= 0 ? tail : 1 - tail;
+}
+
+// Anscombe-Glynn constants for n values: mean and variance of b2, and A.
+struct AnscombeGlynn {
+  double mean, sd, a;
+  explicit AnscombeGlynn(double n)
+  {
+    mean = 3 * (n - 1) / (n + 1);
+    sd = std::sqrt(24 * n * (n - 2) * (n - 3) / ((n + 1) * (n + 1) * (n + 3) * (n + 5)));
+    const double sqrt_beta1 = 6 * (n * n - 5 * n + 2) / ((n + 7) * (n + 9)) *
+                              std::sqrt(6 * (n + 3) * (n + 5) / (n * (n - 2) * (n - 3)));
+    a = 6 + 8 / sqrt_beta1 * (2 / sqrt_beta1 + std::sqrt(1 + 4 / (sqrt_beta1 * sqrt_beta1)));
+  }
+};
+
+// Greenwood's statistic G = m sum D_i^2 (D uniform on the m-simplex): E G^r from the Dirichlet
+// moments E prod D_i^{a_i} = Gamma(m) prod a_i! / Gamma(m + sum a_i).
+struct ShiftedGamma {
+  double k = 0, theta = 0, loc = 0;
+};
+
+ShiftedGamma greenwood_law(double m)
+{
+  const double e1 = 2 * m / (m + 1);
+  const double e2 = m * m * (4 * m + 20) / ((m + 1) * (m + 2) * (m + 3));
+  const double e3 = m * m * m * (720 + 144 * (m - 1) + 8 * (m - 1) * (m - 2)) /
+                    ((m + 1) * (m + 2) * (m + 3) * (m + 4) * (m + 5));
+  const double var = e2 - e1 * e1;
+  const double mu3 = e3 - 3 * e1 * e2 + 2 * e1 * e1 * e1;
+  const double sd = std::sqrt(var);
+  const double skew = mu3 / (var * sd);
+  ShiftedGamma g;
+  g.k = 4 / (skew * skew);
+  g.theta = sd * skew / 2;
+  g.loc = e1 - g.k * g.theta;
+  return g;
+}
+
+double check_probability(double p, const char *what)
+{
+  if (!(p > 0 && p < 1)) throw Error(std::string(what) + ": probability must be in (0, 1)");
+  return p;
+}
+
+}  // namespace
+
+double normal_sf(double z)
+{
+  return 0.5 * std::erfc(z / std::sqrt(2.0));
+}
+
+double normal_isf(double p)
+{
+  check_probability(p, "normal_isf");
+  return invert_decreasing(normal_sf, p, -40, 40);
+}
+
+double student_t_isf(double p, double nu)
+{
+  check_probability(p, "student_t_isf");
+  if (!(nu > 0)) throw Error("student_t_isf: degrees of freedom must be > 0");
+  auto sf = [nu](double t) { return student_t_sf(t, nu); };
+  double lo = -1, hi = 1;
+  while (sf(hi) > p && hi < 1e300) hi *= 2;
+  while (sf(lo) < p && lo > -1e300) lo *= 2;
+  return invert_decreasing(sf, p, lo, hi);
+}
+
+double kurtosis_z(double b2, double n)
+{
+  if (!(n >= 5)) return kNaN;
+  const AnscombeGlynn ag(n);
+  const double x = (b2 - ag.mean) / ag.sd;
+  const double term1 = 1 - 2 / (9 * ag.a);
+  const double denom = 1 + x * std::sqrt(2 / (ag.a - 4));
+  // denom <= 0 (b2 far below its mean): the transform is undefined; scipy then returns a
+  // meaningless sign-flipped z. For a one-sided test of a high kurtosis it is -infinity.
+  if (!(denom > 0)) return -std::numeric_limits<double>::infinity();
+  const double term2 = std::cbrt((1 - 2 / ag.a) / denom);
+  return (term1 - term2) / std::sqrt(2 / (9 * ag.a));
+}
+
+double kurtosis_sf(double b2, double n)
+{
+  return normal_sf(kurtosis_z(b2, n));
+}
+
+double kurtosis_threshold(double n, double p)
+{
+  check_probability(p, "kurtosis_threshold");
+  if (!(n >= 5)) return kNaN;
+  const AnscombeGlynn ag(n);
+  const double term1 = 1 - 2 / (9 * ag.a);
+  const double term2 = term1 - normal_isf(p) * std::sqrt(2 / (9 * ag.a));
+  if (!(term2 > 0)) return std::numeric_limits<double>::infinity();
+  const double denom = (1 - 2 / ag.a) / (term2 * term2 * term2);
+  return ag.mean + ag.sd * (denom - 1) / std::sqrt(2 / (ag.a - 4));
+}
+
+double crest_sf(double u, double n)
+{
+  return -std::expm1(n * std::log1p(-2 * normal_sf(u)));
+}
+
+double crest_threshold(double n, double p)
+{
+  check_probability(p, "crest_threshold");
+  return normal_isf(-std::expm1(std::log1p(-p) / n) / 2);
+}
+
+double spectral_kurtosis_sf(double sk, double m)
+{
+  const ShiftedGamma g = greenwood_law(m);
+  const double y = (sk + 2 - g.loc) / g.theta;
+  if (!(y > 0)) return 1;
+  const double v = 1 / (9 * g.k);
+  return normal_sf((std::cbrt(y / g.k) - (1 - v)) / std::sqrt(v));
+}
+
+double spectral_kurtosis_threshold(double m, double p)
+{
+  check_probability(p, "spectral_kurtosis_threshold");
+  const ShiftedGamma g = greenwood_law(m);
+  const double v = 1 / (9 * g.k);
+  const double c = 1 - v + normal_isf(p) * std::sqrt(v);
+  return g.loc + g.theta * g.k * std::max(c, 0.0) * c * c - 2;
+}
+
+namespace {
+
+std::size_t next_pow2(std::size_t n)
+{
+  std::size_t p = 1;
+  while (p < n) p <<= 1;
+  return p;
+}
+
+// Sum over all lags of rho^4 for the circular autocorrelation given by the power |X_k|^2
+// (k over a complex band): the fourth-moment effective count of the band's m samples is
+// m / that.
+double sum_rho4(std::vector<Complex> power)
+{
+  cfft(power, +1);
+  const double r0 = power[0].real();
+  if (!(r0 > 0)) return kNaN;
+  double s = 0;
+  for (const Complex &r : power) s += std::pow(std::norm(r) / (r0 * r0), 2);
+  return s;
+}
+
+}  // namespace
+
+double kurtosis_effective_samples(const std::vector<double> &x)
+{
+  const std::size_t n = x.size();
+  const std::size_t nfft = next_pow2(2 * n);
+  std::vector<double> padded(nfft, 0.0);
+  std::copy(x.begin(), x.end(), padded.begin());
+  std::vector<Complex> X;
+  rfft(padded.data(), nfft, X);
+  for (Complex &v : X) v = std::norm(v);
+  std::vector<double> r(nfft);
+  irfft(X, nfft, r.data());  // r[k] = nfft x sum_t x_t x_{t+k}: the biased autocovariance
+  if (!(r[0] > 0)) return kNaN;
+  double s = 1;
+  for (std::size_t k = 1; k < n; ++k) s += 2 * std::pow(r[k] / r[0], 4);
+  return static_cast<double>(n) / s;
+}
+
+double white_floor_ratio(const std::vector<double> &x)
+{
+  const std::size_t h = x.size() / 2;
+  if (h == 0) return 0;
+  std::vector<double> d(h);
+  for (std::size_t i = 0; i < h; ++i) d[i] = std::fabs(x[2 * i] - x[2 * i + 1]) / std::sqrt(2.0);
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(h / 2), d.end());
+  const double sigma_w = d[h / 2] / 0.6744897501960817;  // Phi^-1(3/4): MAD of N(0, 1)
+  const double sd = indicators(x).std;
+  return sd > 0 ? sigma_w / sd : 0;
+}
+
+namespace {
+
+// Spectral kurtosis of a band and its effective number of complex samples, computed as the
+// kurtogram does (ideal FFT band of the mean-removed record, complex envelope at baseband).
+struct BandKurtosis {
+  double sk = kNaN, m = 0, m_eff = 0;
+};
+
+BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
+{
+  BandKurtosis b;
+  std::vector<Complex> X;
+  rfft(x.data(), x.size(), X);
+  const double df = rate / static_cast<double>(x.size());
+  const double hi = band.hi > 0 ? band.hi : rate / 2;
+  const auto k1 = static_cast<std::size_t>(std::max(1.0, std::ceil(band.lo / df)));
+  const auto k2 = std::min(X.size() - 1, static_cast<std::size_t>(std::floor(hi / df)));
+  if (k2 < k1 + 7) return b;
+  std::vector<Complex> c(X.begin() + static_cast<long>(k1), X.begin() + static_cast<long>(k2) + 1);
+  std::vector<Complex> power(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i) power[i] = std::norm(c[i]);
+  cfft(c, +1);
+  double s2 = 0, s4 = 0;
+  for (const Complex &v : c) {
+    const double p = std::norm(v);
+    s2 += p;
+    s4 += p * p;
+  }
+  b.m = static_cast<double>(c.size());
+  if (!(s2 > 0)) return b;
+  b.sk = (s4 / b.m) / ((s2 / b.m) * (s2 / b.m)) - 2;
+  b.m_eff = b.m / sum_rho4(power);
+  return b;
+}
+
+DetectionTest gaussian_kurtosis(const std::vector<double> &x, double p)
+{
+  DetectionTest t;
+  t.name = "kurtosis";
+  t.reference = "gaussian";
+  const Indicators ind = indicators(x);
+  t.value = ind.kurtosis;
+  t.samples = kurtosis_effective_samples(x);
+  // scipy.stats.kurtosistest asks for n >= 20 (the Anscombe-Glynn approximation below that)
+  if (!(t.samples >= 20)) {
+    t.applicable = false;
+    t.threshold = t.p_value = kNaN;
+    t.note = "fewer than 20 independent samples";
+    return t;
+  }
+  t.threshold = kurtosis_threshold(t.samples, p);
+  t.p_value = kurtosis_sf(t.value, t.samples);
+  t.fired = t.value > t.threshold;
+  return t;
+}
+
+DetectionTest gaussian_crest(const std::vector<double> &x, double p)
+{
+  DetectionTest t;
+  t.name = "crest";
+  t.reference = "gaussian";
+  const Indicators ind = indicators(x);
+  t.value = ind.peak / ind.std;  // x is mean-removed: peak |x - mean| / sigma
+  t.samples = static_cast<double>(x.size());
+  t.threshold = crest_threshold(t.samples, p);
+  t.p_value = crest_sf(t.value, t.samples);
+  t.fired = t.value > t.threshold;
+  return t;
+}
+
+DetectionTest gaussian_band(const std::vector<double> &x, double rate, const DetectOptions &opt)
+{
+  DetectionTest t;
+  t.name = "band_sk";
+  t.reference = "gaussian";
+  const BandKurtosis b = band_kurtosis(x, rate, opt.band);
+  t.value = b.sk;
+  t.samples = b.m_eff;
+  if (!(b.m_eff >= 8) || !std::isfinite(b.sk)) {
+    t.applicable = false;
+    t.threshold = t.p_value = kNaN;
+    t.note = "band holds fewer than 8 independent complex samples";
+    return t;
+  }
+  // the band was the largest spectral kurtosis among bands_searched: Bonferroni
+  const double per_band = opt.false_alarm / static_cast<double>(std::max<std::size_t>(1, opt.bands_searched));
+  t.threshold = spectral_kurtosis_threshold(b.m_eff, per_band);
+  t.p_value = std::min(1.0, spectral_kurtosis_sf(b.sk, b.m_eff) *
+                                static_cast<double>(std::max<std::size_t>(1, opt.bands_searched)));
+  t.fired = t.value > t.threshold;
+  if (opt.bands_searched > 1)
+    t.note = "threshold at p/" + std::to_string(opt.bands_searched) + " (kurtogram bands)";
+  return t;
+}
+
+// ---- baseline: window statistics (logarithms: positive, skewed quantities)
+struct WindowStats {
+  double log_rms, log_kurtosis, log_crest, log_band;
+};
+
+WindowStats window_stats(const double *w, std::size_t n, double rate, Band band)
+{
+  std::vector<double> x(w, w + n);
+  const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
+  for (double &v : x) v -= mean;
+  const Indicators ind = indicators(x);
+  if (!(ind.std > 0)) throw Error("a window of the record or of --baseline is constant");
+  // band mean square from the Hann-windowed power spectrum (it sums to the mean square)
+  SpectrumOptions o;
+  o.window = WindowKind::Hann;
+  o.detrend = Detrend::Mean;
+  o.scaling = Scaling::Power;
+  const Spectrum s = spectrum(x, rate, o);
+  const double hi = band.hi > 0 ? band.hi : rate / 2;
+  double e = 0;
+  for (std::size_t k = 1; k < s.bins(); ++k) {
+    const double f = static_cast<double>(k) * s.df;
+    if (f >= band.lo && f <= hi) e += s.value[k];
+  }
+  return {std::log(ind.std), std::log(ind.kurtosis), std::log(ind.peak / ind.std),
+          std::log(std::max(e, 1e-300))};
+}
+
+std::vector<DetectionTest> baseline_tests(const std::vector<double> &x, double rate,
+                                          const std::vector<double> &base,
+                                          const DetectOptions &opt)
+{
+  const std::size_t W0 = std::max<std::size_t>(opt.baseline_windows, 3);
+  const std::size_t len = std::min(base.size() / W0, x.size());
+  if (len < 256)
+    throw Error("--baseline: " + std::to_string(base.size()) + " samples make " +
+                std::to_string(W0) + " windows of fewer than 256 samples; give a longer record");
+  const std::size_t W = base.size() / len, M = x.size() / len;
+  std::vector<WindowStats> b, r;
+  for (std::size_t i = 0; i < W; ++i)
+    b.push_back(window_stats(base.data() + i * len, len, rate, opt.band));
+  for (std::size_t i = 0; i < M; ++i)
+    r.push_back(window_stats(x.data() + i * len, len, rate, opt.band));
+  // prediction bound for the mean of M new windows from W healthy ones (normal law, unknown
+  // variance): mean_b + t_{W-1, 1-p} sd_b sqrt(1/W + 1/M)
+  const double tq = student_t_isf(opt.false_alarm, static_cast<double>(W - 1));
+  const double spread = std::sqrt(1.0 / static_cast<double>(W) + 1.0 / static_cast<double>(M));
+  const struct {
+    const char *name;
+    double WindowStats::*field;
+  } stats[] = {{"baseline_rms", &WindowStats::log_rms},
+               {"baseline_kurtosis", &WindowStats::log_kurtosis},
+               {"baseline_crest", &WindowStats::log_crest},
+               {"baseline_band_energy", &WindowStats::log_band}};
+  std::vector<DetectionTest> out;
+  for (const auto &st : stats) {
+    double mb = 0, mr = 0;
+    for (const auto &w : b) mb += w.*st.field / static_cast<double>(W);
+    for (const auto &w : r) mr += w.*st.field / static_cast<double>(M);
+    double var = 0;
+    for (const auto &w : b) var += (w.*st.field - mb) * (w.*st.field - mb);
+    // windows of a strictly periodic record can agree to the last bits: the scatter is floored
+    // at the resolution of a double statistic
+    const double sd = std::max(std::sqrt(var / static_cast<double>(W - 1)),
+                               64 * std::numeric_limits<double>::epsilon() * (1 + std::fabs(mb)));
+    DetectionTest t;
+    t.name = st.name;
+    t.reference = "baseline";
+    t.value = std::exp(mr);
+    t.threshold = std::exp(mb + tq * sd * spread);
+    t.p_value = student_t_sf((mr - mb) / (sd * spread), static_cast<double>(W - 1));
+    t.samples = static_cast<double>(M);
+    t.fired = mr > mb + tq * sd * spread;
+    t.note = std::to_string(M) + " window(s) of " + std::to_string(len) + " samples against " +
+             std::to_string(W) + " baseline windows";
+    out.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace
+
+Detection detect(const std::vector<double> &x, double rate, const DetectOptions &opt,
+                 const std::vector<double> *baseline)
+{
+  check_probability(opt.false_alarm, "--false-alarm");
+  if (x.size() < 256) throw Error("detection needs at least 256 samples");
+  Detection d;
+  d.white_floor = white_floor_ratio(x);
+  d.gaussian_applicable = d.white_floor >= kMinWhiteFloor;
+  d.gaussian_note = d.gaussian_applicable
+                        ? "white noise floor " + format_number(d.white_floor, 3) + " of the spread"
+                        : "no noise floor (white floor " + format_number(d.white_floor, 3) +
+                              " of the spread < " + format_number(kMinWhiteFloor) +
+                              "): a deterministic record, judged only against --baseline";
+  std::vector<DetectionTest> g = {gaussian_kurtosis(x, opt.false_alarm),
+                                  gaussian_crest(x, opt.false_alarm), gaussian_band(x, rate, opt)};
+  for (auto &t : g) {
+    if (!d.gaussian_applicable && t.applicable) {
+      t.applicable = false;
+      t.note = "no noise floor";
+    }
+    if (!t.applicable) t.fired = false;
+    d.tests.push_back(t);
+  }
+  if (baseline)
+    for (auto &t : baseline_tests(x, rate, *baseline, opt)) d.tests.push_back(t);
+  for (const auto &t : d.tests) {
+    if (!t.applicable) continue;
+    ++d.tests_applied;
+    d.fired = d.fired || t.fired;
+  }
+  d.false_alarm_bound = std::min(1.0, static_cast<double>(d.tests_applied) * opt.false_alarm);
+  return d;
+}
+
+}  // namespace ohmdem::post
