@@ -211,17 +211,28 @@ std::size_t next_pow2(std::size_t n)
   return p;
 }
 
-// Sum over all lags of rho^4 for the circular autocorrelation given by the power |X_k|^2
-// (k over a complex band): the fourth-moment effective count of the band's m samples is
-// m / that.
-double sum_rho4(std::vector<Complex> power)
+// Effective count of the m complex samples c of a band for its spectral kurtosis: m / S with
+// S = sum over the circular lags of rho_l^2, rho the autocorrelation of the squared envelope
+// |c|^2. For circular Gaussian c, rho_l = |rho_c(l)|^2, so S = sum |rho_c|^4 (the count of the
+// sample kurtosis); a periodic modulation of the band (a shaft-synchronous one in a healthy
+// machine) raises S and is counted as dependence, not as evidence. Each estimated rho_l^2
+// carries about 1/m of sampling noise, removed (S >= 1).
+double band_effective_samples(const std::vector<Complex> &c)
 {
-  cfft(power, +1);
-  const double r0 = power[0].real();
-  if (!(r0 > 0)) return kNaN;
-  double s = 0;
-  for (const Complex &r : power) s += std::pow(std::norm(r) / (r0 * r0), 2);
-  return s;
+  const std::size_t m = c.size();
+  std::vector<Complex> p(m);
+  double mean = 0;
+  for (std::size_t i = 0; i < m; ++i) mean += std::norm(c[i]) / static_cast<double>(m);
+  for (std::size_t i = 0; i < m; ++i) p[i] = std::norm(c[i]) - mean;
+  cfft(p, -1);
+  for (Complex &v : p) v = std::norm(v);
+  cfft(p, +1);  // circular autocovariance x m
+  const double r0 = p[0].real();
+  if (!(r0 > 0)) return 0;
+  const double dm = static_cast<double>(m);
+  double s = 1;
+  for (std::size_t l = 1; l < m; ++l) s += std::pow(p[l].real() / r0, 2) - 1 / dm;
+  return dm / std::max(s, 1.0);
 }
 
 }  // namespace
@@ -245,10 +256,13 @@ double kurtosis_effective_samples(const std::vector<double> &x)
 
 double white_floor_ratio(const std::vector<double> &x)
 {
-  const std::size_t h = x.size() / 2;
+  // second differences of disjoint triples, (x_3i - 2 x_3i+1 + x_3i+2)/sqrt(6): N(0, sigma^2)
+  // for white noise of sigma, ~(2 pi f/fs)^2 for a smooth component of frequency f
+  const std::size_t h = x.size() / 3;
   if (h == 0) return 0;
   std::vector<double> d(h);
-  for (std::size_t i = 0; i < h; ++i) d[i] = std::fabs(x[2 * i] - x[2 * i + 1]) / std::sqrt(2.0);
+  for (std::size_t i = 0; i < h; ++i)
+    d[i] = std::fabs(x[3 * i] - 2 * x[3 * i + 1] + x[3 * i + 2]) / std::sqrt(6.0);
   std::nth_element(d.begin(), d.begin() + static_cast<long>(h / 2), d.end());
   const double sigma_w = d[h / 2] / 0.6744897501960817;  // Phi^-1(3/4): MAD of N(0, 1)
   const double sd = indicators(x).std;
@@ -266,17 +280,32 @@ struct BandKurtosis {
 BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
 {
   BandKurtosis b;
+  // The transform sees the record as periodic: the jump between its end and its start leaks
+  // into every band as an impulse at the edges, large where the spectrum falls steeply (red
+  // noise, strong shaft lines). The line through the means of the first and last 1/32 of the
+  // record removes the low-frequency part of the jump, and the envelope's
+  // samples within those end zones, where the rest of it rings, are left out.
+  const std::size_t n = x.size(), L = std::max<std::size_t>(1, n / 32);
+  double m0 = 0, m1 = 0;
+  for (std::size_t i = 0; i < L; ++i) {
+    m0 += x[i] / static_cast<double>(L);
+    m1 += x[n - L + i] / static_cast<double>(L);
+  }
+  std::vector<double> y = x;
+  const double slope = (m1 - m0) / static_cast<double>(n - L), mid = (static_cast<double>(L) - 1) / 2;
+  for (std::size_t i = 0; i < n; ++i) y[i] -= m0 + slope * (static_cast<double>(i) - mid);
   std::vector<Complex> X;
-  rfft(x.data(), x.size(), X);
-  const double df = rate / static_cast<double>(x.size());
+  rfft(y.data(), n, X);
+  const double df = rate / static_cast<double>(n);
   const double hi = band.hi > 0 ? band.hi : rate / 2;
   const auto k1 = static_cast<std::size_t>(std::max(1.0, std::ceil(band.lo / df)));
   const auto k2 = std::min(X.size() - 1, static_cast<std::size_t>(std::floor(hi / df)));
   if (k2 < k1 + 7) return b;
-  std::vector<Complex> c(X.begin() + static_cast<long>(k1), X.begin() + static_cast<long>(k2) + 1);
-  std::vector<Complex> power(c.size());
-  for (std::size_t i = 0; i < c.size(); ++i) power[i] = std::norm(c[i]);
-  cfft(c, +1);
+  std::vector<Complex> full(X.begin() + static_cast<long>(k1), X.begin() + static_cast<long>(k2) + 1);
+  cfft(full, +1);
+  const std::size_t guard = (full.size() + 31) / 32;
+  const std::vector<Complex> c(full.begin() + static_cast<long>(guard),
+                               full.end() - static_cast<long>(guard));
   double s2 = 0, s4 = 0;
   for (const Complex &v : c) {
     const double p = std::norm(v);
@@ -286,7 +315,7 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
   b.m = static_cast<double>(c.size());
   if (!(s2 > 0)) return b;
   b.sk = (s4 / b.m) / ((s2 / b.m) * (s2 / b.m)) - 2;
-  b.m_eff = b.m / sum_rho4(power);
+  b.m_eff = band_effective_samples(c);
   return b;
 }
 

@@ -73,10 +73,11 @@ struct Detection {
   std::vector<DetectionTest> tests;
 };
 
-// The white noise floor of a record relative to its spread: the Donoho-Johnstone estimate
-// median|d_i| / 0.6745 of its finest Haar details d_i = (x_2i - x_2i+1)/sqrt(2), over the
-// standard deviation. 1 for white noise, 0.27..1.04 for the measured CWRU records, 1e-8..1e-6
-// for the simulator's R(t) (round-off steps between contact events).
+// The white noise floor of a record relative to its spread: the robust (median absolute) scale
+// of its second differences over disjoint triples, (x_3i - 2 x_3i+1 + x_3i+2)/sqrt(6), over its
+// standard deviation (a Donoho-Johnstone estimate with a filter blind to smooth content).
+// 1 for white noise, 0.16..0.96 for the measured CWRU records, 1e-9..2e-6 for the simulator's
+// R(t) (flat between contact events: round-off).
 double white_floor_ratio(const std::vector<double> &x);
 // Below this ratio (the white floor holds < 1e-6 of the variance) a record is deterministic at
 // the precision of its numbers and the Gaussian tests do not apply (doc/ohmdem-post.md).

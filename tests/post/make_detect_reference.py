@@ -6,7 +6,8 @@ Writes reference/detect_reference.txt (next to this script), one case per line, 
                         seeded samples of N values (Gaussian, Student t, uniform, impulses):
                         B2 = scipy.stats.kurtosis(x, fisher=False), Z its statistic, P = p-value
   normal_isf P Z        scipy.stats.norm.isf(P)
-  t_isf NU P T          scipy.stats.t.isf(P, NU)
+  t_sf NU T P           scipy.stats.t.sf(T, NU) (scipy's t.isf itself is good to ~1e-8 only:
+                        its sf at its isf misses P by that much)
   crest N P U           the level U with P(max_i |x_i| > U) = P for N independent N(0, 1):
                         scipy.stats.norm.isf((1 - (1 - P) ** (1 / N)) / 2)
 
@@ -34,8 +35,8 @@ def main():
     for p in (0.5, 0.1, 1e-3, 1e-6, 1e-9, 1e-12):
         lines.append(f"normal_isf {p:.17g} {st.norm.isf(p):.17g}")
     for nu in (1, 2, 5, 9, 15, 30, 100):
-        for p in (0.1, 0.01, 1e-3, 1e-5):
-            lines.append(f"t_isf {nu} {p:.17g} {st.t.isf(p, nu):.17g}")
+        for t in (0.5, 1.5, 3.0, 4.5, 8.0, 40.0):
+            lines.append(f"t_sf {nu} {t:.17g} {st.t.sf(t, nu):.17g}")
     for n in (100, 4096, 122136, 243938):
         for p in (0.05, 1e-3, 1e-6):
             u = st.norm.isf(-np.expm1(np.log1p(-p) / n) / 2)
