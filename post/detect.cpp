@@ -5,6 +5,9 @@
 #include <limits>
 #include <numeric>
 
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/distributions/students_t.hpp>
+
 #include "error.h"
 #include "fft.h"
 #include "sampled_signal.h"
@@ -17,63 +20,9 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Largest z in [lo, hi] with sf(z) >= p, for a decreasing sf: bisection to the last bit.
-template <class F>
-double invert_decreasing(F sf, double p, double lo, double hi)
-{
-  for (int i = 0; i < 2000 && hi - lo > 0; ++i) {
-    const double mid = lo + (hi - lo) / 2;
-    if (mid <= lo || mid >= hi) break;
-    (sf(mid) > p ? lo : hi) = mid;
-  }
-  return lo + (hi - lo) / 2;
-}
-
-// Continued fraction of the incomplete beta function (modified Lentz).
-double beta_fraction(double a, double b, double x)
-{
-  const double tiny = 1e-300;
-  double c = 1, d = 1 - (a + b) * x / (a + 1);
-  if (std::fabs(d) < tiny) d = tiny;
-  d = 1 / d;
-  double h = d;
-  for (int m = 1; m <= 10000; ++m) {
-    const double m2 = 2.0 * m;
-    double aa = m * (b - m) * x / ((a + m2 - 1) * (a + m2));
-    d = 1 + aa * d;
-    c = 1 + aa / c;
-    if (std::fabs(d) < tiny) d = tiny;
-    if (std::fabs(c) < tiny) c = tiny;
-    d = 1 / d;
-    h *= d * c;
-    aa = -(a + m) * (a + b + m) * x / ((a + m2) * (a + m2 + 1));
-    d = 1 + aa * d;
-    c = 1 + aa / c;
-    if (std::fabs(d) < tiny) d = tiny;
-    if (std::fabs(c) < tiny) c = tiny;
-    d = 1 / d;
-    const double del = d * c;
-    h *= del;
-    if (std::fabs(del - 1) < 1e-16) break;
-  }
-  return h;
-}
-
-// Regularised incomplete beta I_x(a, b).
-double incomplete_beta(double a, double b, double x)
-{
-  if (x <= 0) return 0;
-  if (x >= 1) return 1;
-  const double lbt =
-      std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
-  if (x < (a + 1) / (a + b + 2)) return std::exp(lbt) * beta_fraction(a, b, x) / a;
-  return 1 - std::exp(lbt) * beta_fraction(b, a, 1 - x) / b;
-}
-
 double student_t_sf(double t, double nu)
 {
-  const double tail = 0.5 * incomplete_beta(nu / 2, 0.5, nu / (nu + t * t));
-  return t >= 0 ? tail : 1 - tail;
+  return boost::math::cdf(boost::math::complement(boost::math::students_t(nu), t));
 }
 
 // Anscombe-Glynn constants for n values: mean and variance of b2, and A.
@@ -128,18 +77,14 @@ double normal_sf(double z)
 double normal_isf(double p)
 {
   check_probability(p, "normal_isf");
-  return invert_decreasing(normal_sf, p, -40, 40);
+  return boost::math::quantile(boost::math::complement(boost::math::normal(), p));
 }
 
 double student_t_isf(double p, double nu)
 {
   check_probability(p, "student_t_isf");
   if (!(nu > 0)) throw Error("student_t_isf: degrees of freedom must be > 0");
-  auto sf = [nu](double t) { return student_t_sf(t, nu); };
-  double lo = -1, hi = 1;
-  while (sf(hi) > p && hi < 1e300) hi *= 2;
-  while (sf(lo) < p && lo > -1e300) lo *= 2;
-  return invert_decreasing(sf, p, lo, hi);
+  return boost::math::quantile(boost::math::complement(boost::math::students_t(nu), p));
 }
 
 double kurtosis_z(double b2, double n)
