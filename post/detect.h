@@ -9,34 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "detect_laws.h"
 #include "envelope.h"
 
 namespace ohmdem::post {
-
-// ---- the Gaussian law and its sampling distributions (each checked against scipy.stats)
-double normal_sf(double z);   // P(Z > z), Z ~ N(0, 1)
-double normal_isf(double p);  // z with P(Z > z) = p, 0 < p < 1
-double student_t_isf(double p, double nu);  // t with P(T_nu > t) = p
-
-// Anscombe-Glynn (1983) normal approximation of Pearson's sample kurtosis b2 = m4/m2^2 of n
-// independent normal values (scipy.stats.kurtosistest): its z, and the one-sided p-value
-// P(B2 >= b2). Where the cube-root transform is undefined (b2 far below 3) p is 1.
-double kurtosis_z(double b2, double n);
-double kurtosis_sf(double b2, double n);
-double kurtosis_threshold(double n, double p);  // b2 with kurtosis_sf = p
-
-// Crest factor max|x|/sigma of n normal values: P(crest > u) for independent values, and the
-// u with that probability p. By Sidak's inequality P(all |x_i| <= u) >= prod P(|x_i| <= u) for
-// any correlation, so these are bounds for any stationary Gaussian record of n samples.
-double crest_sf(double u, double n);
-double crest_threshold(double n, double p);
-
-// Spectral kurtosis SK = E|c|^4/(E|c|^2)^2 - 2 of m independent circular complex normal
-// values c: SK + 2 = m sum D_i^2 with D uniform on the simplex (Greenwood's statistic), whose
-// first three moments are exact; the tail is that of the shifted gamma law with those moments
-// (Wilson-Hilferty cube root). One-sided p-value and threshold.
-double spectral_kurtosis_sf(double sk, double m);
-double spectral_kurtosis_threshold(double m, double p);
 
 // Independent samples worth of a record for fourth-moment statistics: n / sum_k (1 - |k|/n)
 // rho_k^4 over all lags (the variance of the sample kurtosis of a stationary Gaussian record is
@@ -76,7 +52,7 @@ struct Detection {
 // The white noise floor of a record relative to its spread: the robust (median absolute) scale
 // of its second differences over disjoint triples, (x_3i - 2 x_3i+1 + x_3i+2)/sqrt(6), over its
 // standard deviation (a Donoho-Johnstone estimate with a filter blind to smooth content).
-// 1 for white noise, 0.16..0.96 for the measured CWRU records, 1e-9..2e-6 for the simulator's
+// 1 for white noise, 0.16..0.96 for the measured CWRU records, 7e-10..2e-6 for the simulator's
 // R(t) (flat between contact events: round-off).
 double white_floor_ratio(const std::vector<double> &x);
 // Below this ratio (the white floor holds < 1e-6 of the variance) a record is deterministic at
