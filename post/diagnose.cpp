@@ -191,7 +191,7 @@ AveragedPulse best_synchronous(const std::vector<double> &x, double rate, double
 SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeometry &g)
 {
   SizeEstimate e;
-  if (d.defect == "none" || d.defect == "cage") {
+  if (d.defect != "inner" && d.defect != "outer" && d.defect != "ball") {
     e.method = "not applicable";
     return e;
   }
@@ -263,12 +263,31 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // envelope band: given, or the kurtogram's best band wide enough for the combs
   d.band = opt.band;
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
+  std::size_t bands_searched = 1;
   if (!(d.band.hi > d.band.lo)) {
     const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
+    bands_searched = kg.cells.size();
   }
+
+  // stage 1: detection, on the record and the band the identification uses
+  DetectOptions dopt;
+  dopt.false_alarm = opt.false_alarm;
+  dopt.band = d.band;
+  dopt.bands_searched = bands_searched;
+  std::vector<double> base;
+  if (opt.baseline) {
+    if (std::fabs(opt.baseline->rate / s.rate - 1) > 1e-9)
+      throw Error("--baseline: sampling rate " + format_number(opt.baseline->rate, 10) +
+                  " Hz differs from the record's " + format_number(s.rate, 10) + " Hz");
+    base = opt.baseline->x;
+    detrend(base.data(), base.size(), Detrend::Mean);
+  }
+  d.detection = detect(x, s.rate, dopt, opt.baseline ? &base : nullptr);
+
+  // stage 2: identification
   const std::vector<double> env = envelope(x, s.rate, d.band);
   const Analysed es = analyse("envelope", env, s.rate);
   const Analysed rs = analyse("spectrum", x, s.rate);
@@ -290,7 +309,9 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.evidence = best->evidence;
   } else {
     d.score = best->score;  // the best (insufficient) family score
+    if (d.detection.fired) d.defect = "unidentified";
   }
+  d.detected = d.defect != "none";
   if (opt.estimate_size) d.size = estimate_size(s, d, opt.geometry);
   return d;
 }

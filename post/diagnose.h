@@ -1,4 +1,5 @@
-// Defect diagnosis: peaks of the spectrum and of the envelope spectrum matched against the
+// Defect diagnosis in two stages: detection (is the record unlike a healthy one: detect.h), then
+// identification: peaks of the spectrum and of the envelope spectrum matched against the
 // bearing's defect families (harmonic combs with shaft/cage sidebands, a tolerance for slip),
 // the most likely defect with a score and its evidence, and the defect size from pulse widths.
 #ifndef OHMDEM_POST_DIAGNOSE_H
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "bearing.h"
+#include "detect.h"
 #include "envelope.h"
 #include "sampled_signal.h"
 
@@ -22,6 +24,8 @@ struct DiagnoseOptions {
   Band band;                // envelope band; lo = hi = 0: chosen by the kurtogram
   int kurtogram_levels = 7;
   bool estimate_size = true;
+  double false_alarm = 1e-3;       // per detection test
+  const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
 };
 
 struct Evidence {
@@ -57,7 +61,11 @@ struct SizeEstimate {
 };
 
 struct Diagnosis {
-  std::string defect = "none";  // none, inner, outer, ball, cage
+  // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
+  // detection stage fired (a fault of unknown type); else "none"
+  std::string defect = "none";
+  bool detected = false;  // a family identified or a detection test fired
+  Detection detection;
   double score = 0;
   double frequency_hz = 0;  // matched fundamental of the reported family (0 for none)
   std::string label;        // what frequency_hz is: BPFI, BPFO, 2BSF, BSF or FTF
