@@ -269,8 +269,8 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
   }
-  const std::vector<double> env = envelope(x, s.rate, d.band);
-  const Analysed es = analyse("envelope", env, s.rate);
+  // the envelope (a temporary) is freed once its spectrum is analysed: lower peak memory
+  const Analysed es = analyse("envelope", envelope(x, s.rate, d.band), s.rate);
   const Analysed rs = analyse("spectrum", x, s.rate);
   auto fe = families(es, k, opt), fr = families(rs, k, opt);
   for (std::size_t i = 0; i < fe.size(); ++i)
