@@ -27,6 +27,7 @@ class RowLines {
   std::size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   std::size_t back() const { return last_; }
+  std::size_t runs() const { return runs_.size(); }  // storage used, in (row, line) pairs
   // The lines of rows [r0, r1).
   RowLines slice(std::size_t r0, std::size_t r1) const
   {
