@@ -49,6 +49,7 @@ struct Samples {
   double rate = 0;  // > 0: uniform by declaration (--rate), t is ignored
   RowLines lines;
   std::string where, name;
+  std::string column;  // as named in the file, for messages
   MetaList meta;
 };
 
@@ -125,6 +126,7 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader 
     }
   }
   s.name = t.has_header ? t.names[vc] : t.cols() == 1 ? "x" : "column " + t.names[vc];
+  s.column = t.names[vc];
   s.meta.insert(s.meta.begin(), {"column", t.names[vc]});
   describe(s, t.has_header ? "columns with header" : "plain columns", base);
   return s;
@@ -189,6 +191,7 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta, LineReader &i
   s.lines = std::move(lines);
   s.where = path;
   s.name = name;
+  s.column = name;
   s.meta.insert(s.meta.begin(), {"column", name});
   s.meta.emplace_back("thermo blocks used",
                       std::to_string(used) + " of " + std::to_string(blocks.size()));
@@ -207,6 +210,7 @@ Samples from_dump(const InputOptions &opt, const RunMetadata &meta, LineReader &
   s.x = std::move(d.values);
   s.where = opt.files.size() == 1 ? in.name() : "dump files";
   s.name = d.column;
+  s.column = d.column;
   s.meta.insert(s.meta.begin(), {"column", std::string(aggregate_name(opt.aggregate)) + " of " +
                                                d.column + " per frame"});
   s.meta.emplace_back("frames", std::to_string(d.frames) + " read, " +
@@ -283,7 +287,7 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
       throw Error((i < in.lines.size() ? in.where + ":" + std::to_string(in.lines[i])
                                        : in.where + " (sample " + std::to_string(i) + ")") +
                   ": non-finite value (" + (std::isnan(in.x[i]) ? "NaN" : "Inf") + ") in column " +
-                  in.name + " at t = " + format_number(time(i)) + " s" +
+                  in.column + " at t = " + format_number(time(i)) + " s" +
                   (windowed ? " (inside the window)" : ""));
   const double t_first = time(i0);
   keep_range(in.t, i0, i1);
