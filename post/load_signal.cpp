@@ -101,6 +101,8 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader 
   if (!t.first_text[vc].empty())
     throw Error(t.source + ":" + std::to_string(t.first_text_line[vc]) + ": column " +
                 t.names[vc] + " is not numeric ('" + t.first_text[vc] + "')");
+  // the time column must be usable throughout: it places the window
+  if (opt.rate <= 0 && tc != ColumnTable::npos) t.require_finite(tc);
   Samples s;
   s.where = t.source;
   s.lines = std::move(t.line_of_row);
@@ -113,7 +115,6 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader 
     throw Error(t.source + ": no time column (columns: " + t.column_list() +
                 "); pass --rate HZ for a uniformly sampled signal or --time-column NAME|N");
   } else {
-    t.require_finite(tc);
     s.t = std::move(t.columns[tc]);
     s.t_resolution = t.resolution(tc);
     if (is_step_name(t.names[tc])) {

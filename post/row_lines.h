@@ -17,8 +17,9 @@ class RowLines {
     last_ = line;
     ++size_;
   }
-  std::size_t operator[](std::size_t row) const
+  std::size_t operator[](std::size_t row) const  // row < size(); 0 (no line) otherwise
   {
+    if (row >= size_) return 0;
     auto it = std::upper_bound(runs_.begin(), runs_.end(), row,
                                [](std::size_t r, const Run &u) { return r < u.row; });
     --it;

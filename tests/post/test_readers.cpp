@@ -404,6 +404,14 @@ TEST(Readers, NonFiniteValuesCountOnlyInsideTheWindow)
   expect_error([&] { load_signal(t, {}); },
                "nan_late.txt:5: non-finite value (NaN) in column R at t = 0.003 s (inside the "
                "window)");
+  // the time column places the window: it must be finite throughout
+  const std::string nan_time =
+      write_temp("nan_time.txt", "# time R\n0 1\n0.001 2\nnan 3\n0.003 4\n");
+  InputOptions nt;
+  nt.files = {nan_time};
+  nt.to = 0.0015;
+  expect_error([&] { load_signal(nt, {}); },
+               "nan_time.txt:4: non-finite value (NaN) in column time");
   // with --rate, no time column: the sample's time is named
   const std::string plain = write_temp("inf_first.txt", "inf\n1\n2\n3\n");
   InputOptions r;
