@@ -287,9 +287,9 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   }
   d.detection = detect(x, s.rate, dopt, opt.baseline ? &base : nullptr);
 
-  // stage 2: identification
-  const std::vector<double> env = envelope(x, s.rate, d.band);
-  const Analysed es = analyse("envelope", env, s.rate);
+  // stage 2: identification; the envelope (a temporary) is freed once its spectrum is
+  // analysed: lower peak memory
+  const Analysed es = analyse("envelope", envelope(x, s.rate, d.band), s.rate);
   const Analysed rs = analyse("spectrum", x, s.rate);
   auto fe = families(es, k, opt), fr = families(rs, k, opt);
   for (std::size_t i = 0; i < fe.size(); ++i)

@@ -28,8 +28,8 @@ std::vector<double> envelope(const std::vector<double> &x, double rate, Band ban
   const std::size_t n = x.size();
   if (n < 4) throw Error("an envelope needs at least 4 samples, got " + std::to_string(n));
   check_band(band, rate);
-  // work arrays kept between calls (single-threaded tool): no page faults on repeated use
-  static std::vector<Complex> X, Y;
+  // work arrays of this call only: nothing of a long record's size stays allocated after it
+  std::vector<Complex> X, Y;
   rfft(x.data(), n, X);
   const double df = rate / static_cast<double>(n);
   const std::size_t nb = X.size();
@@ -49,7 +49,7 @@ std::vector<double> envelope(const std::vector<double> &x, double rate, Band ban
     throw Error("band [" + format_number(band.lo) + ", " + format_number(band.hi) +
                 "] Hz holds no frequency bin (resolution " + format_number(df) + " Hz)");
   const bool whole = k_lo == 0 && k_hi == nb - 1;
-  std::vector<double> re, env(n);
+  std::vector<double> re;
   const double inv = 1.0 / static_cast<double>(n);
   if (!whole) {
     Y.assign(nb, Complex(0, 0));
@@ -63,6 +63,8 @@ std::vector<double> envelope(const std::vector<double> &x, double rate, Band ban
   Y.assign(nb, Complex(0, 0));
   for (std::size_t k = std::max<std::size_t>(k_lo, 1); k <= k_hi; ++k)
     if (!(has_nyquist && k == nb - 1)) Y[k] = Complex(X[k].imag(), -X[k].real());
+  std::vector<Complex>().swap(X);  // freed before env is allocated: lower peak memory
+  std::vector<double> env(n);
   irfft(Y, n, env.data());
   const std::vector<double> &r = whole ? x : re;
   for (std::size_t j = 0; j < n; ++j) env[j] = std::hypot(r[j], env[j] * inv);
@@ -81,6 +83,7 @@ Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, do
   for (double &v : y) v -= mean;
   std::vector<Complex> X;
   rfft(y.data(), n, X);
+  std::vector<double>().swap(y);
   const double df = rate / static_cast<double>(n), nyq = rate / 2;
 
   std::vector<int> counts;

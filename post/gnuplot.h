@@ -31,7 +31,9 @@ struct Figure {
   int width = 1100, height = 600;
 };
 
-// Throws Error if gnuplot is missing or fails (its message is included).
+// Throws Error if gnuplot is missing or fails (its message is included); the image is written
+// beside png_path under a temporary name and renamed onto it on success, so a failure leaves
+// no file (and an existing png_path unchanged).
 void render_png(const Figure &fig, const std::string &png_path);
 
 // Finds the gnuplot executable; "" if none.

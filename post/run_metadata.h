@@ -20,12 +20,18 @@ struct RunMetadata {
   std::optional<double> dt;             // engine time step (s)
   std::optional<double> size_deg;       // the defect size set in the deck (for reference only)
   std::optional<double> t_sliding_end;  // end of the sliding phase (s)
+  // how the run ended: "finished", "interrupted" or "failed" (absent: a run older than the
+  // field, taken as finished), and the simulated time it reached (s)
+  std::optional<std::string> status;
+  std::optional<double> time_reached;
+  bool finished() const { return !status || *status == "finished"; }
 
   bool present() const { return !path.empty(); }
 };
 
 RunMetadata read_run_metadata(const std::string &path);  // throws Error on bad JSON or types
-// "<directory of signal_path>/run.json" if that file exists, else "".
+// "<directory of signal_path>/run.json" if that file exists, else "" (also for "-", standard
+// input, which has no folder).
 std::string find_run_metadata(const std::string &signal_path);
 
 }  // namespace ohmdem::post

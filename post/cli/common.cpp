@@ -1,5 +1,6 @@
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -53,6 +54,9 @@ InputOptions input_options(const Args &a, const std::string &rate_option)
   if (a.has("--dt") && !(o.dt > 0)) throw Error("option --dt expects a step > 0 s");
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
+    if (a.get("--log") == "-" &&
+        std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
+      throw Error("standard input ('-') can be read only once: give --log a file");
     o.dt = log_timestep(a.get("--log"));
   }
   o.aggregate = parse_aggregate(a.get("--aggregate"));
