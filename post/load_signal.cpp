@@ -5,6 +5,7 @@
 #include "error.h"
 #include "line_reader.h"
 #include "read_log.h"
+#include "read_mat.h"
 #include "read_table.h"
 #include "text_scan.h"
 
@@ -24,10 +25,13 @@ std::string first_line(const std::string &path)
 std::string detect(const InputOptions &opt)
 {
   if (opt.format != "auto") {
-    if (opt.format != "table" && opt.format != "log" && opt.format != "dump")
-      throw Error("option --input expects auto|table|log|dump, got '" + opt.format + "'");
+    if (opt.format != "table" && opt.format != "log" && opt.format != "dump" &&
+        opt.format != "mat")
+      throw Error("option --input expects auto|table|log|dump|mat, got '" + opt.format + "'");
     return opt.format;
   }
+  const std::string &f = opt.files.front();
+  if (has_mat_extension(f) || has_mat_header(f)) return "mat";
   const std::string l = first_line(opt.files.front());
   if (looks_like_dump(l)) return "dump";
   if (looks_like_log(l)) return "log";
@@ -196,6 +200,18 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta)
   return s;
 }
 
+Samples from_mat(const InputOptions &opt)
+{
+  MatSignal m = read_mat_signal(opt.files, opt.column, opt.rate, opt.rate_variable);
+  Samples s;
+  s.x = std::move(m.x);
+  s.rate = m.rate;
+  s.where = opt.files.front();
+  s.name = m.name;
+  s.meta = std::move(m.meta);
+  return s;
+}
+
 Samples from_dump(const InputOptions &opt, const RunMetadata &meta)
 {
   DumpSeries d = read_dump(opt.files, opt.column, opt.aggregate);
@@ -221,7 +237,8 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
   if (opt.files.empty()) throw Error("no input file given");
   if (opt.rate < 0 || opt.dt < 0) throw Error("--rate and --dt must be > 0");
   const std::string format = detect(opt);
-  Samples in = format == "dump"  ? from_dump(opt, meta)
+  Samples in = format == "mat"   ? from_mat(opt)
+               : format == "dump" ? from_dump(opt, meta)
                : format == "log" ? from_log(opt, meta)
                                  : from_table(opt, meta);
   if (in.rate > 0) {
