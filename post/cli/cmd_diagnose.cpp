@@ -4,9 +4,11 @@
 
 #include "../diagnose.h"
 #include "../error.h"
+#include "../order_diagnose.h"
 #include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
+#include "shaft_angle.h"
 
 namespace ohmdem::post::cli {
 
@@ -47,6 +49,7 @@ int run_diagnose(const std::vector<std::string> &argv)
          "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);
+  add_shaft_angle_options(a);
   a.section("Diagnosis");
   a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
   a.option("--harmonics", "N", "harmonics in each family's comb", "5");
@@ -66,13 +69,16 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error(
         "diagnose: give the bearing (--bearing 6208|6205 or --nb --db --dp) or a "
         "run.json with it");
-  if (!bc.fr)
+  // order tracking (issue 17): an angle/speed column whose speed varies by more than --tolerance
+  // switches the diagnosis to the angle domain
+  const std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
+  if (!bc.fr && !sa)
     throw Error(
         "diagnose: give the shaft speed (--rpm, --shaft-hz or --omega) or a run.json "
         "with omega_inner");
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
-  o.fr = *bc.fr;
+  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
   o.tolerance = a.number("--tolerance", 0.02);
   const long long h = a.integer("--harmonics", 5);
   if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
@@ -88,12 +94,21 @@ int run_diagnose(const std::vector<std::string> &argv)
       throw Error("option --band expects 0 <= F1 < F2");
   }
   o.estimate_size = !a.has("--no-size");
-  const Diagnosis d = diagnose(s, o);
+  const bool in_orders = sa && sa->speed.variation > o.tolerance;
+  const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
   Output out(a);
 
   MetaList m = s.meta;
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
-  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" + bc.fr_source + ")");
+  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" +
+                                             (in_orders ? "mean of " + sa->source : bc.fr_source) +
+                                             ")");
+  if (in_orders)
+    m.emplace_back("domain", "orders: speed varies by " +
+                                 format_number(100 * sa->speed.variation, 3) +
+                                 " % > --tolerance; resampled at constant shaft angle, "
+                                 "frequencies = orders x mean shaft frequency");
   m.emplace_back("envelope band (Hz)",
                  format_number(d.band.lo) + " to " + format_number(d.band.hi) +
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
@@ -139,6 +154,7 @@ int run_diagnose(const std::vector<std::string> &argv)
     j.set("band_hz", band);
     j.set("band_kurtosis", d.band_kurtosis);
     j.set("shaft_hz", o.fr);
+    j.set("domain", in_orders ? "orders" : "time");
     j.set("bearing", o.geometry.name);
     if (meta.defect) j.set("run_defect", *meta.defect);
     j.set("meta", meta_json(m));

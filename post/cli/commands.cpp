@@ -30,6 +30,8 @@ const std::vector<Command> &commands()
        run_plot},
       {"collect", "the indicators (and parameters, diagnosis) of many run folders in one table",
        run_collect},
+      {"orders", "order tracking: (envelope) order spectrum at constant shaft-angle increments",
+       run_orders},
   };
   return table;
 }
