@@ -268,6 +268,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
+    d.band_kurtosis_threshold = kg.threshold;
   }
   const std::vector<double> env = envelope(x, s.rate, d.band);
   const Analysed es = analyse("envelope", env, s.rate);

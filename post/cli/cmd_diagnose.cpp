@@ -114,6 +114,11 @@ int run_diagnose(const std::vector<std::string> &argv)
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
+  if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
+    m.emplace_back("band kurtosis significant",
+                   std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +
+                       "threshold " + format_number(d.band_kurtosis_threshold, 4) +
+                       " at alpha 0.01 over the bands searched)");
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
     if (f.defect == d.defect) chosen = &f;
@@ -153,6 +158,9 @@ int run_diagnose(const std::vector<std::string> &argv)
     band.push_back(d.band.hi);
     j.set("band_hz", band);
     j.set("band_kurtosis", d.band_kurtosis);
+    j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
+    j.set("band_kurtosis_significant",
+          std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
     j.set("shaft_hz", o.fr);
     j.set("domain", in_orders ? "orders" : "time");
     j.set("bearing", o.geometry.name);
@@ -165,7 +173,8 @@ int run_diagnose(const std::vector<std::string> &argv)
     Report r;
     r.meta = m;
     r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
-                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score",
+                 "band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"};
     std::vector<Cell> row{d.defect,
                           d.score,
                           d.defect == "none" ? NAN : d.frequency_hz,
@@ -173,6 +182,10 @@ int run_diagnose(const std::vector<std::string> &argv)
                           d.size.valid ? d.size.size_deg : NAN,
                           d.size.valid ? d.size.pulse_width_s : NAN};
     for (const auto &f : d.families) row.emplace_back(f.score);
+    row.emplace_back(d.band_kurtosis);
+    row.emplace_back(d.band_kurtosis_threshold);
+    row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
+                                                    : "");
     r.rows.push_back(row);
     write_report(out.stream(), r, out.format());
     return 0;
