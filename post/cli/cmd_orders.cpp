@@ -103,7 +103,13 @@ int run_orders(const std::vector<std::string> &argv)
     } else if (a.has("--kurtogram")) {
       const long long levels = a.integer("--levels", 7);
       if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
-      const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), 0);
+      // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
+      double min_bw = 0;
+      if (bc.geometry) {
+        const DefectFrequencies k = defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi));
+        min_bw = std::min(s.rate / 4, 1.1 * 5 * std::max({k.bpfi, k.bpfo, 2 * k.bsf}));
+      }
+      const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram, spectral kurtosis " + format_number(kg.best.kurtosis, 4);
     }
