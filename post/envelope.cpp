@@ -90,7 +90,8 @@ double normal_upper_quantile(double p)
 double sk_threshold(std::size_t m, double alpha)
 {
   if (m < 2) throw Error("spectral kurtosis threshold: a band needs at least 2 samples");
-  if (!(alpha > 0 && alpha < 1)) throw Error("spectral kurtosis threshold: alpha must be in (0, 1)");
+  if (!(alpha > 0 && alpha < 1))
+    throw Error("spectral kurtosis threshold: alpha must be in (0, 1)");
   const double M = static_cast<double>(m);
   // raw moments of Greenwood's statistic G = sum D_i^2 (D uniform spacings): sums over index
   // patterns of Dirichlet moments E prod D_i^(2 a_i) = Gamma(M) prod (2 a_i)! / Gamma(M + 2 sum a)

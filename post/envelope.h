@@ -21,7 +21,7 @@ std::vector<double> envelope(const std::vector<double> &x, double rate, Band ban
 struct KurtogramCell {
   int bands = 0;  // number of equal bands the level splits [0, fs/2] into
   double lo = 0, hi = 0;
-  double kurtosis = 0;  // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
+  double kurtosis = 0;      // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
   std::size_t samples = 0;  // M, samples of the complex envelope (= FFT bins in the band)
 };
 

@@ -66,9 +66,9 @@ void write_image(const PlotImage &im, const std::string &path)
   std::ofstream out(path);
   out.precision(9);
   const std::size_t nx = im.x.size(), ny = im.y.size();
-  if (im.z.size() != nx * ny) throw Error("plot: image of " + std::to_string(im.z.size()) +
-                                          " values for a " + std::to_string(nx) + " x " +
-                                          std::to_string(ny) + " grid");
+  if (im.z.size() != nx * ny)
+    throw Error("plot: image of " + std::to_string(im.z.size()) + " values for a " +
+                std::to_string(nx) + " x " + std::to_string(ny) + " grid");
   for (std::size_t ix = 0; ix < nx; ++ix) {
     for (std::size_t iy = 0; iy < ny; ++iy)
       out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';

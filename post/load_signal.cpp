@@ -25,8 +25,7 @@ std::string first_line(const std::string &path)
 std::string detect(const InputOptions &opt)
 {
   if (opt.format != "auto") {
-    if (opt.format != "table" && opt.format != "log" && opt.format != "dump" &&
-        opt.format != "mat")
+    if (opt.format != "table" && opt.format != "log" && opt.format != "dump" && opt.format != "mat")
       throw Error("option --input expects auto|table|log|dump|mat, got '" + opt.format + "'");
     return opt.format;
   }
@@ -237,10 +236,10 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
   if (opt.files.empty()) throw Error("no input file given");
   if (opt.rate < 0 || opt.dt < 0) throw Error("--rate and --dt must be > 0");
   const std::string format = detect(opt);
-  Samples in = format == "mat"   ? from_mat(opt)
+  Samples in = format == "mat"    ? from_mat(opt)
                : format == "dump" ? from_dump(opt, meta)
-               : format == "log" ? from_log(opt, meta)
-                                 : from_table(opt, meta);
+               : format == "log"  ? from_log(opt, meta)
+                                  : from_table(opt, meta);
   if (in.rate > 0) {
     in.t.resize(in.x.size());
     for (std::size_t i = 0; i < in.t.size(); ++i) in.t[i] = static_cast<double>(i) / in.rate;

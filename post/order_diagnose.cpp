@@ -4,8 +4,8 @@
 
 namespace ohmdem::post {
 
-Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta,
-                             DiagnoseOptions opt, double samples_per_rev)
+Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, DiagnoseOptions opt,
+                             double samples_per_rev)
 {
   constexpr double kTwoPi = 2 * 3.14159265358979323846;
   const SpeedSummary speed = speed_summary(theta, s.rate);

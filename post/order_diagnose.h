@@ -15,8 +15,8 @@ namespace ohmdem::post {
 
 // theta: shaft angle (rad) per sample of s. opt.fr is ignored (the mean speed is used);
 // opt.band (Hz) is taken at the mean speed. samples_per_rev <= 0: default_samples_per_rev.
-Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta,
-                             DiagnoseOptions opt, double samples_per_rev = 0);
+Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, DiagnoseOptions opt,
+                             double samples_per_rev = 0);
 
 }  // namespace ohmdem::post
 

@@ -13,7 +13,7 @@ namespace ohmdem::post {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kBeta = 10.0;        // Kaiser shape: ~100 dB stopband
+constexpr double kBeta = 10.0;         // Kaiser shape: ~100 dB stopband
 constexpr double kZeroCrossings = 16;  // kernel half-length in zero crossings of the sinc
 
 // Kaiser window w(u) = I0(beta sqrt(1 - u^2)) / I0(beta) on u in [0, 1], tabulated (linear
@@ -63,9 +63,12 @@ SpeedUnit parse_speed_unit(const std::string &name)
 const char *speed_unit_name(SpeedUnit u)
 {
   switch (u) {
-    case SpeedUnit::RadPerS: return "rad/s";
-    case SpeedUnit::Rpm: return "rpm";
-    case SpeedUnit::Hz: return "Hz (rev/s)";
+    case SpeedUnit::RadPerS:
+      return "rad/s";
+    case SpeedUnit::Rpm:
+      return "rpm";
+    case SpeedUnit::Hz:
+      return "Hz (rev/s)";
   }
   return "?";
 }
@@ -73,9 +76,12 @@ const char *speed_unit_name(SpeedUnit u)
 double to_rad_per_s(double v, SpeedUnit u)
 {
   switch (u) {
-    case SpeedUnit::RadPerS: return v;
-    case SpeedUnit::Rpm: return v * 2 * kPi / 60;
-    case SpeedUnit::Hz: return v * 2 * kPi;
+    case SpeedUnit::RadPerS:
+      return v;
+    case SpeedUnit::Rpm:
+      return v * 2 * kPi / 60;
+    case SpeedUnit::Hz:
+      return v * 2 * kPi;
   }
   return v;
 }
@@ -143,10 +149,11 @@ AngleResampled resample_by_angle(const std::vector<double> &x, double rate,
                 format_number(samples_per_rev));
   for (std::size_t j = 0; j + 1 < n; ++j)
     if (!(theta[j + 1] > theta[j]))
-      throw Error("order tracking: the shaft angle must increase strictly (the shaft turns one "
-                  "way, speed > 0); it does not between samples " +
-                  std::to_string(j + 1) + " and " + std::to_string(j + 2) + " (t = " +
-                  format_number(static_cast<double>(j) / rate) + " s)");
+      throw Error(
+          "order tracking: the shaft angle must increase strictly (the shaft turns one "
+          "way, speed > 0); it does not between samples " +
+          std::to_string(j + 1) + " and " + std::to_string(j + 2) +
+          " (t = " + format_number(static_cast<double>(j) / rate) + " s)");
   static const KaiserTable kaiser;
   const double dtheta = 2 * kPi / samples_per_rev;
   AngleResampled r;

@@ -32,12 +32,12 @@ struct SpeedSummary {
 SpeedSummary speed_summary(const std::vector<double> &theta, double rate, std::size_t blocks = 16);
 
 struct AngleResampled {
-  std::vector<double> x;        // the signal at theta0 + k dtheta, k = 0..n-1
-  double samples_per_rev = 0;   // the "sampling rate" of x in orders
-  double theta0 = 0;            // angle of x[0] (rad, the angle column's origin)
-  double t0 = 0;                // time of x[0] (s, from the start of the input)
-  double flat_order = 0;        // orders below this are passed unchanged (kernel passband)
-  double revolutions() const;   // x.size() / samples_per_rev
+  std::vector<double> x;       // the signal at theta0 + k dtheta, k = 0..n-1
+  double samples_per_rev = 0;  // the "sampling rate" of x in orders
+  double theta0 = 0;           // angle of x[0] (rad, the angle column's origin)
+  double t0 = 0;               // time of x[0] (s, from the start of the input)
+  double flat_order = 0;       // orders below this are passed unchanged (kernel passband)
+  double revolutions() const;  // x.size() / samples_per_rev
 };
 
 // Band-limited resampling at constant angle increments 2 pi / samples_per_rev. Each output

@@ -65,24 +65,42 @@ MatFile open_mat(const std::string &path)
 const char *class_name(matio_classes c)
 {
   switch (c) {
-    case MAT_C_EMPTY: return "empty";
-    case MAT_C_CELL: return "cell";
-    case MAT_C_STRUCT: return "struct";
-    case MAT_C_OBJECT: return "object";
-    case MAT_C_CHAR: return "char";
-    case MAT_C_SPARSE: return "sparse";
-    case MAT_C_DOUBLE: return "double";
-    case MAT_C_SINGLE: return "single";
-    case MAT_C_INT8: return "int8";
-    case MAT_C_UINT8: return "uint8";
-    case MAT_C_INT16: return "int16";
-    case MAT_C_UINT16: return "uint16";
-    case MAT_C_INT32: return "int32";
-    case MAT_C_UINT32: return "uint32";
-    case MAT_C_INT64: return "int64";
-    case MAT_C_UINT64: return "uint64";
-    case MAT_C_FUNCTION: return "function";
-    case MAT_C_OPAQUE: return "opaque";
+    case MAT_C_EMPTY:
+      return "empty";
+    case MAT_C_CELL:
+      return "cell";
+    case MAT_C_STRUCT:
+      return "struct";
+    case MAT_C_OBJECT:
+      return "object";
+    case MAT_C_CHAR:
+      return "char";
+    case MAT_C_SPARSE:
+      return "sparse";
+    case MAT_C_DOUBLE:
+      return "double";
+    case MAT_C_SINGLE:
+      return "single";
+    case MAT_C_INT8:
+      return "int8";
+    case MAT_C_UINT8:
+      return "uint8";
+    case MAT_C_INT16:
+      return "int16";
+    case MAT_C_UINT16:
+      return "uint16";
+    case MAT_C_INT32:
+      return "int32";
+    case MAT_C_UINT32:
+      return "uint32";
+    case MAT_C_INT64:
+      return "int64";
+    case MAT_C_UINT64:
+      return "uint64";
+    case MAT_C_FUNCTION:
+      return "function";
+    case MAT_C_OPAQUE:
+      return "opaque";
   }
   return "unknown";
 }
@@ -110,10 +128,10 @@ void convert(const void *data, std::size_t n, std::vector<double> &out)
 
 bool MatVariableInfo::numeric() const
 {
-  static const char *kinds[] = {"double", "single", "int8",  "uint8",  "int16", "uint16",
+  static const char *kinds[] = {"double", "single", "int8",  "uint8",  "int16",  "uint16",
                                 "int32",  "uint32", "int64", "uint64", "logical"};
-  return !complex && std::any_of(std::begin(kinds), std::end(kinds),
-                                 [&](const char *k) { return kind == k; });
+  return !complex &&
+         std::any_of(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; });
 }
 
 std::string MatVariableInfo::shape() const
@@ -182,17 +200,38 @@ std::vector<double> read_mat_vector(const std::string &path, const std::string &
                 (last_matio_message().empty() ? "" : " (" + last_matio_message() + ")"));
   std::vector<double> out;
   switch (v->class_type) {
-    case MAT_C_DOUBLE: convert<double>(v->data, n, out); break;
-    case MAT_C_SINGLE: convert<float>(v->data, n, out); break;
-    case MAT_C_INT8: convert<std::int8_t>(v->data, n, out); break;
-    case MAT_C_UINT8: convert<std::uint8_t>(v->data, n, out); break;
-    case MAT_C_INT16: convert<std::int16_t>(v->data, n, out); break;
-    case MAT_C_UINT16: convert<std::uint16_t>(v->data, n, out); break;
-    case MAT_C_INT32: convert<std::int32_t>(v->data, n, out); break;
-    case MAT_C_UINT32: convert<std::uint32_t>(v->data, n, out); break;
-    case MAT_C_INT64: convert<std::int64_t>(v->data, n, out); break;
-    case MAT_C_UINT64: convert<std::uint64_t>(v->data, n, out); break;
-    default: throw Error(where + " is " + i.shape() + "; expected a real numeric vector");
+    case MAT_C_DOUBLE:
+      convert<double>(v->data, n, out);
+      break;
+    case MAT_C_SINGLE:
+      convert<float>(v->data, n, out);
+      break;
+    case MAT_C_INT8:
+      convert<std::int8_t>(v->data, n, out);
+      break;
+    case MAT_C_UINT8:
+      convert<std::uint8_t>(v->data, n, out);
+      break;
+    case MAT_C_INT16:
+      convert<std::int16_t>(v->data, n, out);
+      break;
+    case MAT_C_UINT16:
+      convert<std::uint16_t>(v->data, n, out);
+      break;
+    case MAT_C_INT32:
+      convert<std::int32_t>(v->data, n, out);
+      break;
+    case MAT_C_UINT32:
+      convert<std::uint32_t>(v->data, n, out);
+      break;
+    case MAT_C_INT64:
+      convert<std::int64_t>(v->data, n, out);
+      break;
+    case MAT_C_UINT64:
+      convert<std::uint64_t>(v->data, n, out);
+      break;
+    default:
+      throw Error(where + " is " + i.shape() + "; expected a real numeric vector");
   }
   if (static_cast<std::size_t>(v->data_size) * n > v->nbytes && v->nbytes > 0)
     throw Error(where + ": truncated data");
@@ -235,8 +274,7 @@ MatSignal read_mat_signal(const std::vector<std::string> &files, const std::stri
                           double rate, const std::string &rate_variable)
 {
   if (files.size() != 1)
-    throw Error("MAT files are read one at a time, got " + std::to_string(files.size()) +
-                " files");
+    throw Error("MAT files are read one at a time, got " + std::to_string(files.size()) + " files");
   const std::string &path = files.front();
   MatSignal s;
   s.name = variable.empty() ? default_mat_variable(path) : variable;
@@ -253,7 +291,8 @@ MatSignal read_mat_signal(const std::vector<std::string> &files, const std::stri
   } else {
     throw Error(path + ": a MAT file has no time base; pass --rate HZ (or --rate-variable NAME)");
   }
-  s.meta = {{"format", "MATLAB MAT-file (libmatio)"}, {"column", "variable " + s.name},
+  s.meta = {{"format", "MATLAB MAT-file (libmatio)"},
+            {"column", "variable " + s.name},
             {"time base", base}};
   return s;
 }

@@ -19,10 +19,10 @@ bool has_mat_extension(const std::string &path);
 
 struct MatVariableInfo {
   std::string name;
-  std::string kind;       // "double", "single", "int16", ..., "char", "struct", "cell", ...
+  std::string kind;  // "double", "single", "int16", ..., "char", "struct", "cell", ...
   std::vector<std::size_t> dims;
   bool complex = false;
-  bool numeric() const;   // a real double/single/integer array
+  bool numeric() const;       // a real double/single/integer array
   std::string shape() const;  // "122136x1 double"
 };
 

@@ -101,9 +101,9 @@ int run_diagnose(const std::vector<std::string> &argv)
 
   MetaList m = s.meta;
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
-  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" +
-                                             (in_orders ? "mean of " + sa->source : bc.fr_source) +
-                                             ")");
+  m.emplace_back(
+      "shaft frequency (Hz)",
+      format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
   if (in_orders)
     m.emplace_back("domain", "orders: speed varies by " +
                                  format_number(100 * sa->speed.variation, 3) +
@@ -173,8 +173,9 @@ int run_diagnose(const std::vector<std::string> &argv)
     Report r;
     r.meta = m;
     r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
-                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score",
-                 "band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"};
+                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+    r.columns.insert(r.columns.end(),
+                     {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
     std::vector<Cell> row{d.defect,
                           d.score,
                           d.defect == "none" ? NAN : d.frequency_hz,

@@ -25,11 +25,10 @@ MetaList speed_meta(const ShaftAngle &sa)
 {
   const double hz = 1 / (2 * kPi);
   return {{"shaft angle", sa.source},
-          {"shaft speed (Hz)", "mean " + format_number(sa.speed.mean * hz, 6) + ", " +
-                                   format_number(sa.speed.min * hz, 6) + " to " +
-                                   format_number(sa.speed.max * hz, 6) +
-                                   " over 16 blocks (variation " +
-                                   format_number(100 * sa.speed.variation, 3) + " %)"}};
+          {"shaft speed (Hz)",
+           "mean " + format_number(sa.speed.mean * hz, 6) + ", " +
+               format_number(sa.speed.min * hz, 6) + " to " + format_number(sa.speed.max * hz, 6) +
+               " over 16 blocks (variation " + format_number(100 * sa.speed.variation, 3) + " %)"}};
 }
 
 }  // namespace
@@ -65,8 +64,7 @@ int run_orders(const std::vector<std::string> &argv)
   a.option("--min-prominence", "DB", "peaks stand this far above the local median floor", "6");
   a.option("--order-min", "O", "lowest order reported", "0");
   a.option("--order-max", "O", "highest order reported (default: the flat band, 0.4 S)");
-  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect orders",
-           "0.02");
+  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect orders", "0.02");
   a.option("--harmonics", "N", "harmonics of each defect order used for labels", "5");
   a.flag("--keep-sliding", "analyse our runs' sliding phase too (default: from t_sliding_end)");
   add_spectrum_options(a, "amplitude");
@@ -129,8 +127,8 @@ int run_orders(const std::vector<std::string> &argv)
                  "at the local speed (or fs/2): flat to 1e-4 up to order " +
                      format_number(r.flat_order, 6) + ", >= 100 dB down above order " +
                      format_number(1.2 * spr / 2, 6));
-  m.emplace_back("revolutions", format_number(r.revolutions(), 8) + " from t = " +
-                                    format_number(s.t0 + r.t0, 8) + " s");
+  m.emplace_back("revolutions", format_number(r.revolutions(), 8) +
+                                    " from t = " + format_number(s.t0 + r.t0, 8) + " s");
   const std::string unit = unit_of(a, s.name);
   Output out(a);
   if (show == "resampled") {
@@ -180,9 +178,9 @@ int run_orders(const std::vector<std::string> &argv)
         rep.rows.push_back({sp.frequency(k), sp.value[k]});
     rep.table_digits = 8;
   } else {
-    rep.meta.emplace_back("peaks", what + ", largest first, prominence >= " +
-                                       format_number(po.min_prominence_db) +
-                                       " dB over the local median, interpolated");
+    rep.meta.emplace_back(
+        "peaks", what + ", largest first, prominence >= " + format_number(po.min_prominence_db) +
+                     " dB over the local median, interpolated");
     rep.columns = {"rank", "order", vname, "prominence_dB"};
     if (orders) rep.columns.push_back("label");
     int rank = 0;

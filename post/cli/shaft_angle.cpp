@@ -55,8 +55,8 @@ std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata 
     std::vector<double> w = c.x;
     for (double &v : w) v = to_rad_per_s(v, unit);
     sa.theta = angle_from_speed(w, s.rate);
-    sa.source = "column " + c.name + " (" + speed_unit_name(unit) +
-                "), integrated (cumulative trapezoid)";
+    sa.source =
+        "column " + c.name + " (" + speed_unit_name(unit) + "), integrated (cumulative trapezoid)";
   } else {
     std::string name = a.get("--angle-column");
     if (name.empty()) {

@@ -18,7 +18,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::string mat(const std::string &name) { return test::data("mat/" + name); }
+std::string mat(const std::string &name)
+{
+  return test::data("mat/" + name);
+}
 
 std::string error_of(const std::function<void()> &f)
 {
@@ -30,7 +33,10 @@ std::string error_of(const std::function<void()> &f)
   return "(no error)";
 }
 
-double expected_x(int k) { return 0.5 * std::sin(2 * kPi * 50 * k / 1000.0) + 0.01 * k; }
+double expected_x(int k)
+{
+  return 0.5 * std::sin(2 * kPi * 50 * k / 1000.0) + 0.01 * k;
+}
 
 TEST(Mat, ReadsDoubleSingleAndIntegerVectors)
 {
@@ -79,8 +85,7 @@ TEST(Mat, ClearErrors)
   const std::string missing = error_of([&] { read_mat_vector(bad, "DE_time"); });
   EXPECT_NE(missing.find("'DE_time' not found"), std::string::npos) << missing;
   EXPECT_NE(missing.find("m (3x4 double)"), std::string::npos) << missing;  // lists variables
-  EXPECT_NE(error_of([&] { read_mat_vector(bad, "c"); }).find("complex double"),
-            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mat_vector(bad, "c"); }).find("complex double"), std::string::npos);
   EXPECT_NE(error_of([&] { read_mat_vector(bad, "m"); }).find("3x4 double matrix"),
             std::string::npos);
   EXPECT_NE(error_of([&] { read_mat_vector(bad, "s"); }).find("struct"), std::string::npos);
@@ -116,8 +121,11 @@ TEST(Mat, CwruMatGivesTheStatisticsOfTheText)
     ASSERT_EQ(sm.size(), st2.size()) << rec;
     const Indicators a = indicators(sm.x), b = indicators(st2.x);
     // the text holds the same values printed with 8 significant digits (README of the data)
-    for (auto [u, v] : {std::pair{a.rms, b.rms}, {a.peak, b.peak}, {a.kurtosis, b.kurtosis},
-                        {a.skewness, b.skewness}, {a.crest, b.crest}})
+    for (auto [u, v] : {std::pair{a.rms, b.rms},
+                        {a.peak, b.peak},
+                        {a.kurtosis, b.kurtosis},
+                        {a.skewness, b.skewness},
+                        {a.crest, b.crest}})
       EXPECT_NEAR(u, v, 1e-6 * std::fabs(v)) << rec;
     EXPECT_NEAR(a.mean, b.mean, 1e-8) << rec;
     double worst = 0;

@@ -18,9 +18,18 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kFs = 2000, kS = 32;
 
 // fr(t) = 10 + 10 t Hz: theta(t) = 2 pi (10 t + 5 t^2), 40 revolutions in 2 s
-double theta_of(double t) { return 2 * kPi * (10 * t + 5 * t * t); }
-double omega_of(double t) { return 2 * kPi * (10 + 10 * t); }
-double shaft_part(double phi) { return std::cos(5.3 * phi) + 0.4 * std::cos(11.2 * phi + 0.5); }
+double theta_of(double t)
+{
+  return 2 * kPi * (10 * t + 5 * t * t);
+}
+double omega_of(double t)
+{
+  return 2 * kPi * (10 + 10 * t);
+}
+double shaft_part(double phi)
+{
+  return std::cos(5.3 * phi) + 0.4 * std::cos(11.2 * phi + 0.5);
+}
 
 struct Record {
   std::vector<double> t, theta, omega, x;

@@ -38,7 +38,10 @@ CliRun run(const std::string &args)
   return r;
 }
 
-double bpfi_order() { return defect_frequencies(bearing_preset("6205"), 1.0).bpfi; }
+double bpfi_order()
+{
+  return defect_frequencies(bearing_preset("6205"), 1.0).bpfi;
+}
 
 // fs 4 kHz, 3 s, shaft 15 -> 25 Hz; columns time angle_inner speed_rpm x
 std::string run_up_file()
@@ -165,8 +168,8 @@ TEST(OrdersCli, SpectrogramPng)
 
 TEST(OrdersCli, MatStatsEqualTheTextOnesForTheFixture)
 {
-  const CliRun r = run("stats " + test::data("mat/good.mat") +
-                       " --variable x --rate 1000 --format json");
+  const CliRun r =
+      run("stats " + test::data("mat/good.mat") + " --variable x --rate 1000 --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   const Json j = Json::parse(r.out);
   EXPECT_EQ(get(j, "n").number(), 300);

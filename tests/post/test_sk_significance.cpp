@@ -49,7 +49,9 @@ TEST(SpectralKurtosis, ThresholdMomentsMatchTheAsymptoticStandardDeviation)
   // (numpy default_rng(17); M sum P^2 / (sum P)^2 - 2): 1 % and 0.1 % points 1.2234 and 2.1901
   // at M = 16, 0.6926 and 1.1686 at M = 64. The normal 2/sqrt(M) z gives 1.16/1.55, 0.58/0.77.
   // The threshold may be a little high (conservative: at most 20 % here), never much low.
-  for (auto [m, a, q] : {std::tuple{16, 0.01, 1.2234}, {16, 0.001, 2.1901}, {64, 0.01, 0.6926},
+  for (auto [m, a, q] : {std::tuple{16, 0.01, 1.2234},
+                         {16, 0.001, 2.1901},
+                         {64, 0.01, 0.6926},
                          {64, 0.001, 1.1686}}) {
     EXPECT_GE(sk_threshold(m, a), 0.98 * q) << "M " << m << " alpha " << a;
     EXPECT_LE(sk_threshold(m, a), 1.2 * q) << "M " << m << " alpha " << a;
@@ -99,9 +101,10 @@ TEST(SpectralKurtosis, BestBandOfNoiseIsRarelySignificant)
     naive += kg.best.kurtosis > 2.326348 * 2 / std::sqrt(static_cast<double>(kg.best.samples));
   }
   const int bound = binomial_upper_bound(records, 0.01, 0.001);
-  std::printf("[ SK         ] best band significant in %d of %d Gaussian records (alpha 0.01, "
-              "binomial 99.9 %% bound %d); naive 2.33 x 2/sqrt(M): %d\n",
-              flagged, records, bound, naive);
+  std::printf(
+      "[ SK         ] best band significant in %d of %d Gaussian records (alpha 0.01, "
+      "binomial 99.9 %% bound %d); naive 2.33 x 2/sqrt(M): %d\n",
+      flagged, records, bound, naive);
   EXPECT_LE(flagged, bound);
   EXPECT_GT(naive, records / 2);  // why the selection over the bands must be accounted for
 }
