@@ -2,9 +2,11 @@
 // and the CWRU records of ../shared/data/bearing-real, whose .mat and .txt give the same
 // statistics.
 #include <gtest/gtest.h>
+#include <matio.h>
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include "error.h"
@@ -77,6 +79,26 @@ TEST(Mat, LoadSignalDetectsMatAndTakesTheRateFromAVariable)
   o.from = 0.1;
   o.to = 0.2;
   EXPECT_EQ(load_signal(o, {}).size(), 101u);
+}
+
+TEST(Mat, ReadsHdf5BasedV73)
+{
+  // Debian's libmatio is built with HDF5: write a v7.3 file with it and read it back
+  const std::string path = std::string(OHMDEM_POST_TEST_TMP) + "/v73.mat";
+  std::remove(path.c_str());
+  mat_t *f = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT73);
+  if (!f) GTEST_SKIP() << "this libmatio cannot write MAT v7.3 (built without HDF5)";
+  double v[5] = {1.5, -2, 3.25, 4, 5e-3};
+  size_t dims[2] = {5, 1};
+  matvar_t *var = Mat_VarCreate("sig", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, dims, v, 0);
+  ASSERT_NE(var, nullptr);
+  ASSERT_EQ(Mat_VarWrite(f, var, MAT_COMPRESSION_NONE), 0);
+  Mat_VarFree(var);
+  Mat_Close(f);
+  EXPECT_TRUE(has_mat_header(path));
+  const auto x = read_mat_vector(path, "sig");
+  ASSERT_EQ(x.size(), 5u);
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(x[i], v[i]);
 }
 
 TEST(Mat, ClearErrors)
