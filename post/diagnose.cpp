@@ -270,6 +270,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
     bands_searched = kg.cells.size();
+    d.band_kurtosis_threshold = kg.threshold;
   }
 
   // stage 1: detection, on the record and the band the identification uses

@@ -5,6 +5,7 @@
 #ifndef OHMDEM_POST_DIAGNOSE_H
 #define OHMDEM_POST_DIAGNOSE_H
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,10 @@ struct Diagnosis {
   DefectFrequencies kinematics;
   Band band;                 // envelope band used
   double band_kurtosis = 0;  // spectral kurtosis of that band (kurtogram), NaN if given
+  // Gaussian-noise level of the kurtogram's best band at alpha = 0.01 over the bands searched
+  // (Kurtogram::threshold), NaN if the band was given
+  double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
+  bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
   SizeEstimate size;
 };
 

@@ -101,6 +101,22 @@ class PendingFile {
   }
   std::string target_, path_;
 };
+// The image as "x y z" rows, one blank line between x columns (gnuplot grid data).
+void write_image(const PlotImage &im, const std::string &path)
+{
+  std::ofstream out(path);
+  out.precision(9);
+  const std::size_t nx = im.x.size(), ny = im.y.size();
+  if (im.z.size() != nx * ny)
+    throw Error("plot: image of " + std::to_string(im.z.size()) + " values for a " +
+                std::to_string(nx) + " x " + std::to_string(ny) + " grid");
+  for (std::size_t ix = 0; ix < nx; ++ix) {
+    for (std::size_t iy = 0; iy < ny; ++iy)
+      out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';
+    out << '\n';
+  }
+  if (!out) throw Error("cannot write plot data to " + path);
+}
 
 }  // namespace
 
@@ -153,7 +169,7 @@ void render_png(const Figure &fig, const std::string &png_path)
     throw Error(
         "plot needs gnuplot (Debian package gnuplot-nox); none found in PATH "
         "(or set OHMDEM_GNUPLOT)");
-  if (fig.series.empty()) throw Error("plot: nothing to draw");
+  if (fig.series.empty() && fig.image.empty()) throw Error("plot: nothing to draw");
   TempDir dir;
   PendingFile png(png_path);
   std::ostringstream script;
@@ -178,7 +194,17 @@ void render_png(const Figure &fig, const std::string &png_path)
            << " font 'Sans,8'\n";
     ++tag;
   }
+  if (!fig.image.empty())
+    script << "set cblabel " << quote(fig.image.zlabel) << "\nset palette rgb 33,13,10\n";
+  if (std::isfinite(fig.ymin) || std::isfinite(fig.ymax))
+    script << "set yrange [" << (std::isfinite(fig.ymin) ? std::to_string(fig.ymin) : "*") << ":"
+           << (std::isfinite(fig.ymax) ? std::to_string(fig.ymax) : "*") << "]\n";
   script << "plot ";
+  if (!fig.image.empty()) {
+    const std::string data = dir.file("image.dat");
+    write_image(fig.image, data);
+    script << quote(data) << " using 1:2:3 with image notitle" << (fig.series.empty() ? "" : ", ");
+  }
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const PlotSeries &s = fig.series[k];
     const std::string data = dir.file("series" + std::to_string(k) + ".dat");

@@ -22,12 +22,22 @@ struct PlotMarker {
   std::string color = "#c0392b";
 };
 
+// A map drawn as an image under the series (e.g. a spectrogram): z[iy * x.size() + ix] at
+// (x[ix], y[iy]) on a regular grid, colour scale labelled `zlabel`.
+struct PlotImage {
+  std::vector<double> x, y, z;
+  std::string zlabel;
+  bool empty() const { return z.empty(); }
+};
+
 struct Figure {
   std::string title, xlabel, ylabel;
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;  // vertical dashed lines with rotated labels
   bool logy = false;
   double xmin = NAN, xmax = NAN;
+  double ymin = NAN, ymax = NAN;  // vertical range (default: automatic)
+  PlotImage image;                // optional, drawn first
   int width = 1100, height = 600;
 };
 

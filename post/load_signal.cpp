@@ -1,11 +1,13 @@
 #include "load_signal.h"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "error.h"
 #include "line_reader.h"
 #include "read_dump.h"
 #include "read_log.h"
+#include "read_mat.h"
 #include "read_table.h"
 #include "text_scan.h"
 
@@ -13,11 +15,23 @@ namespace ohmdem::post {
 
 namespace {
 
+// MAT files are binary: recognised by --input mat, the .mat extension, or their header (probed
+// on regular files only: a pipe cannot be read twice) before any text reader opens them.
+bool is_mat_input(const InputOptions &opt)
+{
+  if (opt.format == "mat") return true;
+  if (opt.format != "auto") return false;
+  const std::string &f = opt.files.front();
+  if (f == "-") return false;
+  std::error_code ec;
+  return has_mat_extension(f) || (std::filesystem::is_regular_file(f, ec) && has_mat_header(f));
+}
+
 std::string detect(const InputOptions &opt, LineReader &in)
 {
   if (opt.format != "auto") {
-    if (opt.format != "table" && opt.format != "log" && opt.format != "dump")
-      throw Error("option --input expects auto|table|log|dump, got '" + opt.format + "'");
+    if (opt.format != "table" && opt.format != "log" && opt.format != "dump" && opt.format != "mat")
+      throw Error("option --input expects auto|table|log|dump|mat, got '" + opt.format + "'");
     return opt.format;
   }
   const std::string &l = in.peek_first_content();
@@ -201,6 +215,18 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta, LineReader &i
   return s;
 }
 
+Samples from_mat(const InputOptions &opt)
+{
+  MatSignal m = read_mat_signal(opt.files, opt.column, opt.rate, opt.rate_variable);
+  Samples s;
+  s.x = std::move(m.x);
+  s.rate = m.rate;
+  s.where = opt.files.front();
+  s.name = m.name;
+  s.meta = std::move(m.meta);
+  return s;
+}
+
 Samples from_dump(const InputOptions &opt, const RunMetadata &meta, LineReader &in)
 {
   DumpSeries d = read_dump(opt.files, opt.column, opt.aggregate, &in);
@@ -252,11 +278,16 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
   if (opt.rate < 0 || opt.dt < 0) throw Error("--rate and --dt must be > 0");
   if (std::count(opt.files.begin(), opt.files.end(), "-") > 1)
     throw Error("standard input ('-') can be read only once");
-  LineReader first(opt.files.front());
-  const std::string format = detect(opt, first);
-  Samples in = format == "dump"  ? from_dump(opt, meta, first)
-               : format == "log" ? from_log(opt, meta, first)
-                                 : from_table(opt, meta, first);
+  Samples in;
+  if (is_mat_input(opt)) {
+    in = from_mat(opt);
+  } else {
+    LineReader first(opt.files.front());
+    const std::string format = detect(opt, first);
+    in = format == "dump"  ? from_dump(opt, meta, first)
+         : format == "log" ? from_log(opt, meta, first)
+                           : from_table(opt, meta, first);
+  }
   const std::size_t n = in.x.size();
   auto time = [&](std::size_t i) {
     return in.rate > 0 ? static_cast<double>(i) / in.rate : in.t[i];

@@ -11,6 +11,7 @@ packages=(
   ngspice                                   # independent circuit solver for network tests
   python3 python3-numpy python3-scipy       # independent references for signal statistics
   gnuplot-nox                               # plots (PNG through pngcairo)
+  libmatio-dev                              # MATLAB .mat records (ohmdem-post --input mat)
 )
 missing=()
 for p in "${packages[@]}"; do

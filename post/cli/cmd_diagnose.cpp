@@ -5,9 +5,11 @@
 
 #include "../diagnose.h"
 #include "../error.h"
+#include "../order_diagnose.h"
 #include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
+#include "shaft_angle.h"
 
 namespace ohmdem::post::cli {
 
@@ -89,6 +91,7 @@ int run_diagnose(const std::vector<std::string> &argv)
          "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);
+  add_shaft_angle_options(a);
   a.section("Diagnosis");
   a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
   a.option("--harmonics", "N", "harmonics in each family's comb", "5");
@@ -113,13 +116,16 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error(
         "diagnose: give the bearing (--bearing 6208|6205 or --nb --db --dp) or a "
         "run.json with it");
-  if (!bc.fr)
+  // order tracking (issue 17): an angle/speed column whose speed varies by more than --tolerance
+  // switches the diagnosis to the angle domain
+  const std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
+  if (!bc.fr && !sa)
     throw Error(
         "diagnose: give the shaft speed (--rpm, --shaft-hz or --omega) or a run.json "
         "with omega_inner");
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
-  o.fr = *bc.fr;
+  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
   o.tolerance = a.number("--tolerance", 0.02);
   const long long h = a.integer("--harmonics", 5);
   if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
@@ -149,18 +155,35 @@ int run_diagnose(const std::vector<std::string> &argv)
     base = load_signal(io, meta);
     o.baseline = &base;
   }
-  const Diagnosis d = diagnose(s, o);
+  const bool in_orders = sa && sa->speed.variation > o.tolerance;
+  if (in_orders && o.baseline)
+    throw Error("diagnose: --baseline is not supported when the speed varies (the record is "
+                "diagnosed in the angle domain); give a record at constant speed");
+  const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
   Output out(a);
 
   MetaList m = s.meta;
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
-  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" + bc.fr_source + ")");
+  m.emplace_back(
+      "shaft frequency (Hz)",
+      format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  if (in_orders)
+    m.emplace_back("domain", "orders: speed varies by " +
+                                 format_number(100 * sa->speed.variation, 3) +
+                                 " % > --tolerance; resampled at constant shaft angle, "
+                                 "frequencies = orders x mean shaft frequency");
   m.emplace_back("envelope band (Hz)",
                  format_number(d.band.lo) + " to " + format_number(d.band.hi) +
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
   if (o.baseline) m.emplace_back("baseline", a.get("--baseline"));
+  if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
+    m.emplace_back("band kurtosis significant",
+                   std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +
+                       "threshold " + format_number(d.band_kurtosis_threshold, 4) +
+                       " at alpha 0.01 over the bands searched)");
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
     if (f.defect == d.defect) chosen = &f;
@@ -202,7 +225,11 @@ int run_diagnose(const std::vector<std::string> &argv)
     band.push_back(d.band.hi);
     j.set("band_hz", band);
     j.set("band_kurtosis", d.band_kurtosis);
+    j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
+    j.set("band_kurtosis_significant",
+          std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
     j.set("shaft_hz", o.fr);
+    j.set("domain", in_orders ? "orders" : "time");
     j.set("bearing", o.geometry.name);
     if (meta.defect) j.set("run_defect", *meta.defect);
     j.set("meta", meta_json(m));
@@ -214,6 +241,8 @@ int run_diagnose(const std::vector<std::string> &argv)
     r.meta = m;
     r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
                  "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+    r.columns.insert(r.columns.end(),
+                     {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
     std::vector<Cell> row{d.defect,
                           d.score,
                           chosen ? d.frequency_hz : NAN,
@@ -221,6 +250,10 @@ int run_diagnose(const std::vector<std::string> &argv)
                           d.size.valid ? d.size.size_deg : NAN,
                           d.size.valid ? d.size.pulse_width_s : NAN};
     for (const auto &f : d.families) row.emplace_back(f.score);
+    row.emplace_back(d.band_kurtosis);
+    row.emplace_back(d.band_kurtosis_threshold);
+    row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
+                                                    : "");
     // detection columns, appended (scripts reading the columns above keep working)
     r.columns.push_back("detected");
     row.emplace_back(d.detected ? "yes" : "no");

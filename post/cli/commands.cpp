@@ -32,6 +32,8 @@ const std::vector<Command> &commands()
        run_collect},
       {"acquire", "what an instrument records: sensitivity, anti-alias filter, rate, noise, ADC",
        run_acquire},
+      {"orders", "order tracking: (envelope) order spectrum at constant shaft-angle increments",
+       run_orders},
   };
   return table;
 }

@@ -6,6 +6,7 @@
 
 #include "../error.h"
 #include "../read_log.h"
+#include "../read_mat.h"
 #include "../text_scan.h"
 
 namespace ohmdem::post::cli {
@@ -17,7 +18,8 @@ constexpr double kPi = 3.14159265358979323846;
 void add_input_options(Args &a, const std::string &rate_option)
 {
   a.section("Input");
-  a.option("--input", "KIND", "input format: auto|table|log|dump", "auto");
+  a.option("--input", "KIND", "input format: auto|table|log|dump|mat (auto: .mat files are MAT)",
+           "auto");
   a.option("--column", "NAME|N",
            "signal column: header name (R, c_x[2], f_ID[1], v_name) or 1-based number; "
            "default: the only non-time column, else R");
@@ -25,6 +27,8 @@ void add_input_options(Args &a, const std::string &rate_option)
            "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use " +
                rate_option + "; default: time, t, TimeStep or Step");
   a.option(rate_option, "HZ", "sampling rate of a signal without time stamps (overrides any time)");
+  a.option("--variable", "NAME", "MAT files: the signal variable (e.g. DE_time); as --column");
+  a.option("--rate-variable", "NAME", "MAT files: the variable holding the sampling rate (Hz)");
   a.option("--dt", "S", "time step length for step-stamped data (dumps, logs, fix ave/time)");
   a.option("--log", "FILE",
            "take the time step length from this LIGGGHTS log (its last "
@@ -46,6 +50,11 @@ InputOptions input_options(const Args &a, const std::string &rate_option)
     throw Error(a.command() + ": no input file (see ohmdem-post " + a.command() + " --help)");
   o.format = a.get("--input");
   o.column = a.get("--column");
+  if (a.has("--variable")) {
+    if (a.has("--column")) throw Error("give the signal once: --column or --variable");
+    o.column = a.get("--variable");
+  }
+  o.rate_variable = a.get("--rate-variable");
   o.time_column = a.get("--time-column");
   o.rate = a.number(rate_option, 0);
   o.dt = a.number("--dt", 0);
@@ -124,6 +133,7 @@ void add_bearing_options(Args &a)
   a.option("--shaft-hz", "HZ", "shaft frequency (Hz); --fr is the same");
   a.option("--fr", "HZ", "shaft frequency (Hz), as in MATLAB's bearing tools");
   a.option("--omega", "RAD/S", "shaft angular speed (rad/s), as omega_inner in our decks");
+  a.option("--rpm-variable", "NAME", "MAT files: the variable holding the shaft speed (rpm)");
 }
 
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
@@ -175,17 +185,24 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     validate(g);
     c.geometry = g;
   }
-  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega");
-  if (speeds > 1) throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr or --omega");
+  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega") +
+               a.has("--rpm-variable");
+  if (speeds > 1)
+    throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr, --omega or --rpm-variable");
   double fr = NAN;
   if (a.has("--rpm")) fr = a.number("--rpm") / 60;
   if (a.has("--shaft-hz")) fr = a.number("--shaft-hz");
   if (a.has("--fr")) fr = a.number("--fr");
   if (a.has("--omega")) fr = a.number("--omega") / (2 * kPi);
+  if (a.has("--rpm-variable")) {
+    if (a.positional().empty()) throw Error("option --rpm-variable needs a MAT input file");
+    fr = read_mat_scalar(a.positional().front(), a.get("--rpm-variable")) / 60;
+  }
   if (speeds) {
     if (!(fr > 0)) throw Error("the shaft speed must be > 0");
     c.fr = fr;
-    c.fr_source = "command line";
+    c.fr_source = a.has("--rpm-variable") ? "MAT variable " + a.get("--rpm-variable") + " (rpm)"
+                                          : "command line";
   } else if (meta.omega_inner) {
     if (!(*meta.omega_inner > 0)) throw Error(meta.path + ": \"omega_inner\" must be > 0");
     c.fr = *meta.omega_inner / (2 * kPi);

@@ -480,7 +480,8 @@ TEST(Detect, CommandLineReportsDetection)
   r = run_cli("diagnose " + bursts + opts + " --baseline " + base + " --format csv");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("\ndefect,score,frequency_Hz,kinematic_Hz,size_deg,pulse_width_s,"
-                       "inner_score,outer_score,ball_score,cage_score,detected,fired,kurtosis,"
+                       "inner_score,outer_score,ball_score,cage_score,band_kurtosis,"
+                       "band_kurtosis_threshold,band_kurtosis_significant,detected,fired,kurtosis,"
                        "kurtosis_threshold,crest,crest_threshold,band_sk,band_sk_threshold,"
                        "baseline_rms,baseline_rms_threshold,"),
             std::string::npos)
