@@ -163,6 +163,25 @@ FamilyScore family(const Analysed &a, const char *defect, const char *label, dou
   return fs;
 }
 
+// The record's families against a healthy baseline analysed the same way: each family is
+// credited only with how far its lines stand above the baseline's spectrum at the same
+// frequencies (a line the baseline has as strongly adds nothing).
+void relative_to_baseline(std::vector<FamilyScore> &record, const Analysed &base)
+{
+  for (FamilyScore &f : record) {
+    double sum = 0;
+    for (const Evidence &e : f.evidence) {
+      const std::size_t k = best_near(base, e.frequency_hz, 2.0);
+      const double b = k == static_cast<std::size_t>(-1) ? 0.0 : amplitude_of(base.s, k);
+      const double ratio_db = 20 * std::log10(std::max(e.amplitude, 1e-300) / std::max(b, 1e-300));
+      sum += std::clamp(ratio_db, 0.0, kProminenceCap - kProminenceLow);
+    }
+    f.baseline_excess = f.evidence.empty() ? 0.0 : sum / f.evidence.size();
+    f.margin = std::min(f.margin, f.baseline_excess);
+    f.score = std::clamp(f.margin / kMarginFull, 0.0, 1.0);
+  }
+}
+
 std::vector<FamilyScore> families(const Analysed &a, const DefectFrequencies &k,
                                   const DiagnoseOptions &opt)
 {
@@ -293,6 +312,15 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   const Analysed es = analyse("envelope", envelope(x, s.rate, d.band), s.rate);
   const Analysed rs = analyse("spectrum", x, s.rate);
   auto fe = families(es, k, opt), fr = families(rs, k, opt);
+  if (opt.baseline) {
+    // Lines a healthy bearing has too (the ball-pass comb of a radially loaded bearing, whose
+    // stiffness varies as the balls pass through the load zone) identify nothing: with a
+    // baseline, a family is credited only with what its lines add to the baseline's.
+    const Analysed bes = analyse("envelope", envelope(base, s.rate, d.band), s.rate);
+    const Analysed brs = analyse("spectrum", base, s.rate);
+    relative_to_baseline(fe, bes);
+    relative_to_baseline(fr, brs);
+  }
   for (std::size_t i = 0; i < fe.size(); ++i)
     d.families.push_back(fe[i].margin >= fr[i].margin ? fe[i] : fr[i]);
 

@@ -47,7 +47,10 @@ struct FamilyScore {
   double comb = 0;          // mean prominence credit of the harmonics (dB over 6 dB, capped
                             // at 34) + a quarter of the sidebands' mean credit
   double chance = 0;        // upper quartile of the same comb at decoy fundamentals (dB)
-  double margin = 0;        // comb - chance (dB)
+  double margin = 0;        // comb - chance (dB); with a baseline, at most baseline_excess
+  // With a baseline: the mean over the evidence lines of how far (dB, 0..34) each stands
+  // above the baseline's spectrum at the same frequency; NaN without a baseline.
+  double baseline_excess = std::numeric_limits<double>::quiet_NaN();
   std::string spectrum;     // which spectrum gave the score
   std::vector<Evidence> evidence;
 };

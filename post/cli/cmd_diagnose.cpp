@@ -208,6 +208,7 @@ int run_diagnose(const std::vector<std::string> &argv)
       o2.set("comb", f.comb);
       o2.set("chance", f.chance);
       o2.set("margin_db", f.margin);
+      if (std::isfinite(f.baseline_excess)) o2.set("baseline_excess_db", f.baseline_excess);
       o2.set("spectrum", f.spectrum);
       fams.set(f.defect, o2);
     }
@@ -305,9 +306,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   Report fr;
   fr.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
                 "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
-  for (const auto &f : d.families)
+  if (o.baseline) fr.columns.push_back("over_baseline_dB");
+  for (const auto &f : d.families) {
     fr.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
                        f.frequency_hz, f.spectrum});
+    if (o.baseline) fr.rows.back().emplace_back(f.baseline_excess);
+  }
   write_table(os, fr);
   if (!d.evidence.empty()) {
     os << '\n';

@@ -312,6 +312,49 @@ TEST(Detect, DeterministicRecordsAreJudgedAgainstTheBaseline)
               alone.defect.c_str(), self.defect.c_str(), vs.defect.c_str());
 }
 
+TEST(Detect, LinesTheBaselineHasTooIdentifyNothing)
+{
+  // A radially loaded healthy bearing has a ball-pass (BPFO) comb of its own: its stiffness
+  // varies as the balls pass through the load zone. Against a baseline with that comb, the
+  // same record is healthy, and an outer defect is identified by what it adds to the comb.
+  const BearingGeometry g = bearing_preset("6208");
+  const double fr = 500 / (2 * kPi);
+  const DefectFrequencies k = defect_frequencies(g, fr);
+  auto with_comb = [&](std::uint64_t seed, double comb_amplitude) {
+    test::DefectSpec spec;
+    spec.kind = "none";
+    spec.duration = 0.1;
+    spec.rate = 1e5;
+    auto h = test::defect_signal(g, spec);
+    test::Gaussian noise(seed);
+    for (int harmonic = 1; harmonic <= 5; ++harmonic) {
+      const auto c = test::sine(h.signal.size(), h.signal.rate, harmonic * k.bpfo,
+                                comb_amplitude / harmonic, 0.1 * harmonic);
+      for (std::size_t i = 0; i < c.size(); ++i) h.signal.x[i] += c[i];
+    }
+    for (double &v : h.signal.x) v += 2e-6 * noise();
+    return h.signal;
+  };
+  const Signal base = with_comb(11, 1e-4), healthy = with_comb(12, 1e-4),
+               defective = with_comb(13, 1e-3);
+  DiagnoseOptions o;
+  o.geometry = g;
+  o.fr = fr;
+  o.estimate_size = false;
+  EXPECT_EQ(diagnose(healthy, o).defect, "outer");  // without a baseline: the comb alone
+  o.baseline = &base;
+  const Diagnosis h = diagnose(healthy, o);
+  EXPECT_EQ(h.defect, "none");
+  EXPECT_LT(h.families[1].baseline_excess, 3.0);  // the same lines: about 0 dB over the baseline
+  const Diagnosis d = diagnose(defective, o);
+  EXPECT_EQ(d.defect, "outer");
+  EXPECT_NEAR(d.families[1].baseline_excess, 20.0, 3.0);  // lines 10x (20 dB) the baseline's
+  std::printf("[ baseline   ] BPFO comb in the baseline: healthy %s (%.1f dB over it), "
+              "10x comb %s (%.1f dB over it)\n",
+              h.defect.c_str(), h.families[1].baseline_excess, d.defect.c_str(),
+              d.families[1].baseline_excess);
+}
+
 TEST(Detect, BaselineWindowsGiveTheStatedFalseAlarmRate)
 {
   // A record against a healthy baseline of the same Gaussian process: the baseline tests fire
