@@ -227,9 +227,30 @@ std::vector<DetectionTest> baseline_tests(const std::vector<double> &x, double r
 {
   const std::size_t W0 = std::max<std::size_t>(opt.baseline_windows, 3);
   const std::size_t len = std::min(base.size() / W0, x.size());
-  if (len < 256)
-    throw Error("--baseline: " + std::to_string(base.size()) + " samples make " +
-                std::to_string(W0) + " windows of fewer than 256 samples; give a longer record");
+  const struct {
+    const char *name;
+    double WindowStats::*field;
+  } stats[] = {{"baseline_rms", &WindowStats::log_rms},
+               {"baseline_kurtosis", &WindowStats::log_kurtosis},
+               {"baseline_crest", &WindowStats::log_crest},
+               {"baseline_band_energy", &WindowStats::log_band}};
+  std::vector<DetectionTest> out;
+  if (len < 256) {
+    // Too short to estimate the healthy scatter (a slow instrument over a short record): the
+    // tests are not applicable, as the Gaussian ones are without a noise floor.
+    for (const auto &st : stats) {
+      DetectionTest t;
+      t.name = st.name;
+      t.reference = "baseline";
+      t.value = t.threshold = t.p_value = std::numeric_limits<double>::quiet_NaN();
+      t.applicable = false;
+      t.note = "record or baseline too short: " + std::to_string(base.size()) + " and " +
+               std::to_string(x.size()) + " samples give windows of " + std::to_string(len) +
+               " < 256 samples (" + std::to_string(W0) + " baseline windows)";
+      out.push_back(t);
+    }
+    return out;
+  }
   const std::size_t W = base.size() / len, M = x.size() / len;
   std::vector<WindowStats> b, r;
   for (std::size_t i = 0; i < W; ++i)
@@ -240,14 +261,6 @@ std::vector<DetectionTest> baseline_tests(const std::vector<double> &x, double r
   // variance): mean_b + t_{W-1, 1-p} sd_b sqrt(1/W + 1/M)
   const double tq = student_t_isf(opt.false_alarm, static_cast<double>(W - 1));
   const double spread = std::sqrt(1.0 / static_cast<double>(W) + 1.0 / static_cast<double>(M));
-  const struct {
-    const char *name;
-    double WindowStats::*field;
-  } stats[] = {{"baseline_rms", &WindowStats::log_rms},
-               {"baseline_kurtosis", &WindowStats::log_kurtosis},
-               {"baseline_crest", &WindowStats::log_crest},
-               {"baseline_band_energy", &WindowStats::log_band}};
-  std::vector<DetectionTest> out;
   for (const auto &st : stats) {
     double mb = 0, mr = 0;
     for (const auto &w : b) mb += w.*st.field / static_cast<double>(W);
@@ -294,6 +307,13 @@ Detection detect(const std::vector<double> &x, double rate, const DetectOptions 
     if (!d.gaussian_applicable && t.applicable) {
       t.applicable = false;
       t.note = "no noise floor";
+    }
+    // A healthy machine need not be Gaussian (a loaded bearing's vibration has its own
+    // impulsive ball passes): with a baseline, the healthy record is the reference and the
+    // Gaussian statistics are shown for information only.
+    if (baseline && t.applicable) {
+      t.applicable = false;
+      t.note = "for information: with --baseline the healthy record is the reference";
     }
     if (!t.applicable) t.fired = false;
     d.tests.push_back(t);
