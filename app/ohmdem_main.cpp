@@ -3,13 +3,17 @@
 // Identical to LIGGGHTS' own main(): same command line (-in, -var, -log, -screen, -echo,
 // -partition, -help, ...), same signal handling. Our styles are registered by the start-up
 // hook in ohmdem_styles.cpp, which LIGGGHTS calls on creation and after every `clear`.
+// Unlike LIGGGHTS, a run stopped by SIGINT/SIGTERM exits with status 3, and a run that did
+// not finish says so in its run.json (run_status.h, doc/run_status.md).
 #include <mpi.h>
 
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 
 #include "input.h"
 #include "lammps.h"
+#include "run_status.h"
 #include "signal_handling.h"
 
 using LAMMPS_NS::LAMMPS;
@@ -17,6 +21,9 @@ namespace SignalHandler = LAMMPS_NS::SignalHandler;
 
 int main(int argc, char **argv)
 {
+  // Line-buffered screen output: an error written just before an abort reaches a redirected
+  // stdout (see also MPI_Abort in run_status.cpp).
+  std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
   // SIGTERM as SIGINT: Open MPI turns a SIGINT to mpirun into SIGTERM for its children.
   struct sigaction int_action;
   struct sigaction usr1_action;
@@ -29,10 +36,15 @@ int main(int argc, char **argv)
   sigaction(SIGUSR1, &usr1_action, nullptr);
 
   MPI_Init(&argc, &argv);
+  ohmdem::RunEnd end = ohmdem::RunEnd::Finished;
   {
     LAMMPS lammps(argc, argv, MPI_COMM_WORLD);
+    ohmdem::record_failure_at_exit(&lammps);
     lammps.input->file();
+    if (SignalHandler::request_quit) end = ohmdem::RunEnd::Interrupted;
+    ohmdem::record_unfinished_run(&lammps, end);
+    ohmdem::disarm_failure_at_exit();
   }
   MPI_Finalize();
-  return 0;
+  return ohmdem::exit_status(end);
 }

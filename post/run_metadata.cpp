@@ -60,9 +60,11 @@ RunMetadata read_run_metadata(const std::string &path)
   m.size_deg = number(j, "size_deg", path);
   m.t_sliding_end = number(j, "t_sliding_end", path);
   m.status = text(j, "status", path);
-  if (m.status && *m.status != "finished" && *m.status != "interrupted" && *m.status != "failed")
-    throw Error(path + ": \"status\" must be \"finished\", \"interrupted\" or \"failed\", got \"" +
-                *m.status + "\"");
+  // running: written before the run; a run killed outright (SIGKILL, an MPI abort) keeps it
+  if (m.status && *m.status != "finished" && *m.status != "interrupted" &&
+      *m.status != "failed" && *m.status != "running")
+    throw Error(path + ": \"status\" must be \"running\", \"finished\", \"interrupted\" or " +
+                "\"failed\", got \"" + *m.status + "\"");
   m.time_reached = number(j, "time_reached", path);
   return m;
 }

@@ -13,7 +13,8 @@ acceleration along the load, through an accelerometer). Every channel is acquire
 level, ADC bits) and diagnosed by `ohmdem-post diagnose` against the healthy run acquired by the
 same instrument (--baseline). Writes into OUT:
   detectability.csv  one row per case: size_deg, defect, channel, rate_hz, bits, noise, diagnosis,
-                     score, detected, identified
+                     score, detected, identified, size_est_deg (the pulse-width size estimate of
+                     an identified race defect), note (why a case could not be analysed)
   detectability.md   the instruments, the map, and the answer to the paper's two claims
   map_*.png          smallest detected / identified size against the sampling rate
 """
@@ -57,9 +58,9 @@ def grid(quick):
     WINDOW = 0.5 if quick else 1.0
     DECK_VARS = {**DECK_VARS, "tend": T_FROM + WINDOW + 0.001}
     if quick:
-        return {"sizes": [0.1, 0.3, 1.0, 3.0], "rates": [1e3, 1e4, 1e5, 1e6],
+        return {"sizes": [0.03, 0.1, 0.3, 1.0, 3.0], "rates": [1e3, 1e4, 1e5, 1e6],
                 "noise": ["low", "high"], "bits": [16]}
-    return {"sizes": [0.1, 0.2, 0.3, 0.5, 1.0, 2.0, 3.0],
+    return {"sizes": [0.03, 0.05, 0.1, 0.2, 0.3, 0.5, 1.0, 2.0, 3.0],
             "rates": [1e3, 2e3, 5e3, 1e4, 2e4, 5e4, 1e5, 2e5, 5e5, 1e6],
             "noise": ["low", "mid", "high"], "bits": [12, 16]}
 
@@ -137,18 +138,23 @@ def case(out, sims, key, channel, rate, noise, bits, baselines):
     tag = instrument_tag(channel, rate, noise, bits)
     acq = os.path.join(out, "acq", f"{defect}_{size:g}_{tag}.txt")
     acquire(sims[key], channel, rate, noise, bits, 1, acq)
-    r = post(["diagnose", "--format", "json", "--no-size", "--metadata",
+    r = post(["diagnose", "--format", "json", "--metadata",
               os.path.join(sims[key], "run.json"), "--from", repr(T_FROM), "--to",
               repr(T_FROM + WINDOW), "--baseline", baselines[tag], acq], allow_fail=True)
-    if r.returncode != 0:  # e.g. a record too short for the cage period at the lowest rates
-        d = {"defect": "error", "score": 0.0, "detected": False, "error": r.stderr.strip()}
+    if r.returncode != 0:  # a rate below every defect line: nothing can be said
+        d = {"defect": "not_analysable", "score": 0.0, "detected": False,
+             "error": r.stderr.strip().replace("ERROR: ", "").replace(",", ";")}
     else:
         d = json.loads(r.stdout)
     detected = bool(d.get("detected", d["defect"] != "none"))
+    identified = detected and d["defect"] == defect
+    size_est = d.get("size", {})
     return {"size_deg": size, "defect": defect, "channel": channel, "rate_hz": rate, "bits": bits,
             "noise": noise, "noise_density": CHANNELS[channel]["noise"][noise],
             "diagnosis": d["defect"], "score": d.get("score", 0.0), "detected": detected,
-            "identified": detected and d["defect"] == defect, "error": d.get("error", "")}
+            "identified": identified,
+            "size_est_deg": size_est["size_deg"] if identified and size_est.get("valid") else "",
+            "note": d.get("error", "")}
 
 
 def write_map(out, rows, g):
@@ -186,6 +192,32 @@ def write_map(out, rows, g):
     return pngs
 
 
+def write_example(out, sims, rate=1e4, noise="high", bits=16, size=1.0):
+    """What an instrument sees: the simulated R and ring acceleration of the 1 deg inner defect
+    against what a 10 kHz, noisy instrument records (back in ohm and m/s^2)."""
+    sim = os.path.join(sims[("inner", size)], "signal.txt")
+    with open(sim) as f:
+        names = f.readline().lstrip("#").split()
+    t0, t1 = T_FROM + 0.05, T_FROM + 0.07
+    panels = []
+    for channel, unit in (("R", "R (ohm)"), ("acc", "acceleration along the load (m/s^2)")):
+        ch = CHANNELS[channel]
+        acq = os.path.join(out, "acq", f"inner_{size:g}_{instrument_tag(channel, rate, noise, bits)}.txt")
+        col = names.index(ch["column"]) + 1
+        panels.append(
+            f"set ylabel '{unit}'; plot '{sim}' every 4 using ($1>{t0} && $1<{t1} ? $1 : 1/0):{col} "
+            f"with lines lc rgb '#999999' title 'simulated (1 MHz)', "
+            f"'{acq}' using ($1>{t0} && $1<{t1} ? $1 : 1/0):($2/{ch['scale']!r}) with linespoints "
+            f"pt 7 ps 0.4 lc rgb '#cc2222' title 'acquired: {rate:g} Hz, {noise} noise, {bits} bits'")
+    png = os.path.join(out, "acquired_example.png")
+    script = (f"set terminal pngcairo size 1000,700; set output '{png}'; set multiplot layout 2,1 "
+              f"title '1 deg inner-race defect, radial load, 500 rad/s: simulated and acquired'; "
+              f"set xlabel 'time (s)'; set xrange [{t0}:{t1}]; set key top right; "
+              + "; ".join(panels) + "; unset multiplot")
+    subprocess.run(["gnuplot", "-e", script], check=True)
+    return png
+
+
 def smallest(rows, **where):
     ok = [r["size_deg"] for r in rows if r["defect"] != "none" and
           all(r[k] == v for k, v in where.items())]
@@ -194,7 +226,7 @@ def smallest(rows, **where):
 
 def write_report(out, rows, g, quick, pngs):
     cols = ["size_deg", "defect", "channel", "rate_hz", "bits", "noise", "noise_density",
-            "diagnosis", "score", "detected", "identified"]
+            "diagnosis", "score", "detected", "identified", "size_est_deg", "note"]
     with open(os.path.join(out, "detectability.csv"), "w") as f:
         f.write(",".join(cols) + "\n")
         for r in rows:
@@ -245,42 +277,127 @@ def write_report(out, rows, g, quick, pngs):
     print("\n".join(lines))
 
 
+def size_error(rows, channel, defect, size, rate, noise, bits):
+    """Relative error of the size estimate, or None when not identified or not sized."""
+    for r in rows:
+        if (r["channel"], r["defect"], r["size_deg"], r["rate_hz"], r["noise"], r["bits"]) == \
+                (channel, defect, size, rate, noise, bits) and r["size_est_deg"] != "":
+            return r["size_est_deg"] / size - 1
+    return None
+
+
+def lowest_rate(rows, g, channel, defect, size, noise, bits, ok):
+    rates = sorted(r["rate_hz"] for r in rows if r["channel"] == channel and
+                   r["defect"] == defect and r["size_deg"] == size and r["bits"] == bits and
+                   r["noise"] == noise and ok(r))
+    return rates[0] if rates else None
+
+
 def answer(rows, g):
     """The paper's two claims, in numbers from the map."""
     bits = max(g["bits"])
-    lo_rate, hi_rate = min(g["rates"]), max(g["rates"])
-    out = ["## The paper's two claims", ""]
-    for defect in ("inner", "outer"):
-        for noise in g["noise"]:
-            r_lo = smallest(rows, defect=defect, channel="R", noise=noise, bits=bits,
-                            rate_hz=lo_rate, identified=True)
-            r_hi = smallest(rows, defect=defect, channel="R", noise=noise, bits=bits,
-                            rate_hz=hi_rate, identified=True)
-            a_hi = smallest(rows, defect=defect, channel="acc", noise=noise, bits=bits,
-                            rate_hz=hi_rate, identified=True)
-            fmt = lambda v: "none of the sizes" if v is None else f"{v:g} deg"
-            out.append(f"- {defect} race, {noise} noise: electrically, the smallest identified "
-                       f"defect is {fmt(r_hi)} at {hi_rate:g} Hz and {fmt(r_lo)} at {lo_rate:g} Hz; "
-                       f"by vibration, {fmt(a_hi)} at {hi_rate:g} Hz.")
-    rates_needed = {}
+    hz = lambda v: "-" if v is None else f"{v:g} Hz"
+    out = ["## Lowest sampling rate that identifies each size", "",
+           f"{bits}-bit ADC; '-': not at any rate of the grid.", "",
+           "| channel | defect | noise | " + " | ".join(f"{s:g} deg" for s in g["sizes"]) + " |",
+           "|---|---|---|" + "---|" * len(g["sizes"])]
+    for channel in CHANNELS:
+        for defect in ("inner", "outer"):
+            for noise in g["noise"]:
+                out.append(f"| {channel} | {defect} | {noise} | " + " | ".join(
+                    hz(lowest_rate(rows, g, channel, defect, s, noise, bits,
+                                   lambda r: r["identified"])) for s in g["sizes"]) + " |")
+    out += ["", "## Size estimate against the sampling rate", "",
+            "Relative error of the pulse-width size estimate of `diagnose` (lowest noise, "
+            f"{bits} bits; '-': not identified or no pulse found).", "",
+            "| channel | defect | size | " + " | ".join(f"{r:g} Hz" for r in g["rates"]) + " |",
+            "|---|---|---|" + "---|" * len(g["rates"])]
+    noise0 = g["noise"][0]
     for channel in CHANNELS:
         for defect in ("inner", "outer"):
             for size in g["sizes"]:
-                ok = sorted(r["rate_hz"] for r in rows if r["channel"] == channel and
-                            r["defect"] == defect and r["size_deg"] == size and r["bits"] == bits
-                            and r["noise"] == g["noise"][0] and r["identified"])
-                rates_needed[(channel, defect, size)] = ok[0] if ok else None
-    out += ["", "Lowest sampling rate that identifies each size (lowest noise, "
-            f"{bits} bits):", "", "| channel | defect | " +
-            " | ".join(f"{s:g} deg" for s in g["sizes"]) + " |",
-            "|---|---|" + "---|" * len(g["sizes"])]
-    for channel in CHANNELS:
-        for defect in ("inner", "outer"):
-            out.append(f"| {channel} | {defect} | " + " | ".join(
-                "-" if rates_needed[(channel, defect, s)] is None else
-                f"{rates_needed[(channel, defect, s)]:g} Hz" for s in g["sizes"]) + " |")
-    out.append("")
+                cells = []
+                for rate in g["rates"]:
+                    e = size_error(rows, channel, defect, size, rate, noise0, bits)
+                    cells.append("-" if e is None else f"{100 * e:+.0f} %")
+                out.append(f"| {channel} | {defect} | {size:g} deg | " + " | ".join(cells) + " |")
+
+    # the answers, computed from the rows
+    within = lambda r: r["size_est_deg"] != "" and abs(r["size_est_deg"] / r["size_deg"] - 1) <= 0.25
+    smallest_size = min(g["sizes"])
+    id_rate = {c: lowest_rate(rows, g, c, "inner", smallest_size, noise0, bits,
+                              lambda r: r["identified"]) for c in CHANNELS}
+    size_rate = {c: lowest_rate(rows, g, c, "inner", smallest_size, noise0, bits, within)
+                 for c in CHANNELS}
+    sized = {size: lowest_rate(rows, g, "R", "inner", size, noise0, bits, within)
+             for size in g["sizes"]}
+    not_analysable = sorted({r["rate_hz"] for r in rows if r["diagnosis"] == "not_analysable"})
+    unidentified_slow = sorted({r["rate_hz"] for r in rows if r["defect"] != "none" and
+                                r["diagnosis"] == "unidentified" and r["rate_hz"] < 1300})
+    acc_best = min((r["size_deg"] for r in rows if r["channel"] == "acc" and
+                    r["defect"] == "inner" and r["noise"] == noise0 and r["bits"] == bits and
+                    r["identified"]), default=None)
+    at = lambda v: "at no rate of the grid" if v is None else f"from {v:g} Hz"
+    out += ["", "## The paper's two claims", "",
+            "*\"Due to the limited sampling frequency of measuring devices, it will not be possible "
+            "to identify defects with a small size.\"* Identification does not need the pulse "
+            "resolved, only the defect lines below the instrument's Nyquist frequency: at 500 rad/s "
+            "BPFO is 410 Hz and BPFI 625 Hz"
+            + (f"; at {', '.join(f'{r:g}' for r in not_analysable)} Hz no race defect can be "
+               "analysed at all" if not_analysable else "")
+            + (f"; at {', '.join(f'{r:g}' for r in unidentified_slow)} Hz the defects are "
+               "detected but stay unidentified (the race families lie above Nyquist)"
+               if unidentified_slow else "")
+            + f". The smallest defect of the grid ({smallest_size:g} deg) is identified "
+            f"electrically {at(id_rate['R'])}; by vibration "
+            + (f"{at(id_rate['acc'])}" if id_rate["acc"] is not None else
+               f"the smallest identified inner defect is {acc_best:g} deg" if acc_best else
+               "no inner defect is identified")
+            + " (inner race, lowest noise). What the sampling rate does limit is the *size*: the "
+            "pulse-width estimate of an inner defect is within 25 % "
+            + ", ".join(f"{at(sized[sz])} for {sz:g} deg" for sz in g["sizes"])
+            + " (electrical channel). The claim holds for sizing, not for detection or "
+            "identification. The simulation itself samples at 1 MHz (dt = 1e-6 s): a "
+            f"{smallest_size:g} deg inner defect is crossed in "
+            f"{smallest_size * math.pi / 180 / (500 - 198.02) * 1e6:.1f} us, so its size is "
+            "not resolved even in the simulated signal.", ""]
+    comparisons = []
+    for defect in ("inner", "outer"):
+        for noise in g["noise"]:
+            for rate in g["rates"]:
+                r = smallest(rows, defect=defect, channel="R", noise=noise, bits=bits,
+                             rate_hz=rate, identified=True)
+                a = smallest(rows, defect=defect, channel="acc", noise=noise, bits=bits,
+                             rate_hz=rate, identified=True)
+                comparisons.append((defect, noise, rate, r, a))
+    better = sum(1 for *_, r, a in comparisons if r is not None and (a is None or r < a))
+    equal = sum(1 for *_, r, a in comparisons if r == a)
+    worse = len(comparisons) - better - equal
+    out += ["*\"The expected resolution will be better than vibrational measurements.\"* Over the "
+            f"{len(comparisons)} instrument settings (defect x noise x rate, {bits} bits), the "
+            f"electrical channel identifies a smaller defect than the accelerometer in {better}, "
+            f"the same in {equal} and a larger one in {worse}. "
+            "The vibration channel here is the ideal one (the ring's own acceleration, no housing, "
+            "no transmission path, no other machine); the difference shows at the higher "
+            "accelerometer noise levels. The size estimate is the electrical channel's clearer "
+            "advantage: the contact breaks give rectangular pulses whose width is the defect's "
+            "angular size, where the ring's acceleration rings at its contact resonance.", ""]
     return out
+
+
+def read_rows(path):
+    """The rows of a detectability.csv, typed as the study made them."""
+    import csv
+    rows = []
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            for k in ("size_deg", "rate_hz", "score", "noise_density"):
+                r[k] = float(r[k])
+            r["bits"] = int(r["bits"])
+            r["detected"], r["identified"] = r["detected"] == "yes", r["identified"] == "yes"
+            r["size_est_deg"] = float(r["size_est_deg"]) if r["size_est_deg"] else ""
+            rows.append(r)
+    return rows
 
 
 def main():
@@ -288,9 +405,20 @@ def main():
     p.add_argument("out", help="output folder")
     p.add_argument("--quick", action="store_true", help="reduced grid (under 5 minutes)")
     p.add_argument("--jobs", type=int, default=2, help="acquisitions in parallel [2]")
+    p.add_argument("--report-only", action="store_true",
+                   help="rewrite the report and figures from OUT/detectability.csv")
     a = p.parse_args()
     out = os.path.abspath(a.out)
     g = grid(a.quick)
+    if a.report_only:
+        rows = read_rows(os.path.join(out, "detectability.csv"))
+        sims = {("inner", 1.0): os.path.join(out, "sim", "inner", "size_1")}
+        example = os.path.join(out, "acquired_example.png")
+        if os.path.isdir(sims[("inner", 1.0)]):
+            example = write_example(out, sims)
+        pngs = write_map(out, rows, g) + ([example] if os.path.exists(example) else [])
+        write_report(out, rows, g, a.quick, pngs)
+        return
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)
     sims = simulate(out, g["sizes"])
     instruments = [(c, r, n, b) for c in CHANNELS for r in g["rates"] for n in g["noise"]
@@ -306,7 +434,7 @@ def main():
         rows = list(ex.map(lambda j: case(out, sims, j[0], *j[1:], baselines), jobs))
     rows.sort(key=lambda r: (r["defect"], r["channel"], r["size_deg"], r["rate_hz"], r["noise"],
                              r["bits"]))
-    pngs = write_map(out, rows, g)
+    pngs = write_map(out, rows, g) + [write_example(out, sims)]
     write_report(out, rows, g, a.quick, pngs)
 
 

@@ -406,7 +406,9 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
   make_run(root + "/crashed", R"({"size_deg": 4, "status": "failed", "time_reached": 0.004})",
            400);
   make_run(root + "/done", R"({"size_deg": 5, "status": "finished", "time_reached": 0.02})");
-  const Outcome r = post("collect --format json done stopped crashed fixed_2", root);
+  // killed outright (SIGKILL, an MPI abort): the deck's "running" stays
+  make_run(root + "/killed", R"({"size_deg": 6, "status": "running", "time_reached": 0})", 300);
+  const Outcome r = post("collect --format json done stopped crashed fixed_2 killed", root);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("WARNING: collect: run stopped did not finish (run.json status "
                        "\"interrupted\", time reached 0.0105 s)"),
@@ -418,7 +420,7 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
   EXPECT_EQ(r.err.find("run done"), std::string::npos) << r.err;
   const Json j = Json::parse(r.out, "collect output");
   const Json &rows = *j.find("rows");
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 5u);
   std::map<std::string, std::string> status;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     status[rows[i].find("run")->string()] = rows[i].find("status")->string();
@@ -429,7 +431,8 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
   EXPECT_EQ(status["crashed"], "failed");
   EXPECT_EQ(status["done"], "finished");
   EXPECT_EQ(status["fixed_2"], "finished");  // no "status": an older run, taken as finished
-  EXPECT_NE(r.out.find("2 run(s) did not finish"), std::string::npos) << r.out;
+  EXPECT_EQ(status["killed"], "running");
+  EXPECT_NE(r.out.find("3 run(s) did not finish"), std::string::npos) << r.out;
 
   const Outcome s = post("collect --skip-bad --format csv done stopped crashed fixed_2", root);
   ASSERT_EQ(s.status, 0) << s.err;
@@ -446,7 +449,7 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
   std::ofstream(root + "/done/run.json") << R"({"status": "paused"})" << "\n";
   const Outcome bad = post("collect done", root);
   EXPECT_EQ(bad.status, 1);
-  EXPECT_NE(bad.err.find("\"status\" must be \"finished\", \"interrupted\" or \"failed\""),
+  EXPECT_NE(bad.err.find("\"status\" must be \"running\", \"finished\", \"interrupted\" or \"failed\""),
             std::string::npos)
       << bad.err;
 }

@@ -1,0 +1,156 @@
+// How a run ended, recorded in ${out}/run.json; standard streams flushed before an abort.
+#include "run_status.h"
+
+#include <mpi.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <system_error>
+
+#include "fix.h"
+#include "input.h"
+#include "lammps.h"
+#include "modify.h"
+#include "update.h"
+#include "variable.h"
+
+namespace fs = std::filesystem;
+
+namespace ohmdem {
+namespace {
+
+LAMMPS_NS::LAMMPS *g_lmp = nullptr;  // for the exit() hook
+int g_rank = -1;  // rank in the world, read while MPI runs (error->all finalizes it first)
+
+const char *status_name(RunEnd end)
+{
+  switch (end) {
+    case RunEnd::Finished: return "finished";
+    case RunEnd::Interrupted: return "interrupted";
+    case RunEnd::Failed: return "failed";
+  }
+  return "failed";
+}
+
+std::string read_all(const fs::path &p)
+{
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The simulated time reached: fix signal/table keeps it across dt changes and restarts; else
+// the step count times the current step.
+double time_reached(LAMMPS_NS::LAMMPS *lmp)
+{
+  if (lmp->modify) {
+    LAMMPS_NS::Fix *f = lmp->modify->find_fix_style("signal/table", 0);
+    if (f) return f->compute_scalar();
+  }
+  if (lmp->update) return static_cast<double>(lmp->update->ntimestep) * lmp->update->dt;
+  return std::nan("");
+}
+
+void move_forced_restart(LAMMPS_NS::LAMMPS *lmp, const fs::path &out)
+{
+  if (!lmp->update) return;
+  const fs::path name =
+      "restart_forced_liggghts_" + std::to_string(lmp->update->ntimestep) + ".data";
+  std::error_code ec;
+  if (!fs::is_regular_file(name, ec) || fs::equivalent(name, out / name, ec)) return;
+  fs::rename(name, out / name, ec);
+  if (ec) {  // another file system: copy, then remove
+    ec.clear();
+    fs::copy_file(name, out / name, fs::copy_options::overwrite_existing, ec);
+    if (!ec) fs::remove(name, ec);
+  }
+  if (!ec && lmp->screen)
+    std::fprintf(lmp->screen, "ohmdem: forced restart file moved to %s\n",
+                 (out / name).string().c_str());
+}
+
+}  // namespace
+
+int exit_status(RunEnd end)
+{
+  switch (end) {
+    case RunEnd::Finished: return 0;
+    case RunEnd::Interrupted: return 3;
+    case RunEnd::Failed: return 1;
+  }
+  return 1;
+}
+
+void record_unfinished_run(LAMMPS_NS::LAMMPS *lmp, RunEnd end)
+{
+  if (!lmp || !lmp->input || !lmp->input->variable || end == RunEnd::Finished) return;
+  // exit() skips the fixes' end of run: the rows fix signal/table still buffers would be lost
+  if (end == RunEnd::Failed && lmp->modify)
+    for (int i = 0; i < lmp->modify->nfix; ++i)
+      if (std::string(lmp->modify->fix[i]->style) == "signal/table") lmp->modify->fix[i]->post_run();
+  if (g_rank < 0) MPI_Comm_rank(lmp->world, &g_rank);
+  if (g_rank != 0) return;
+  char name[] = "out";
+  const char *out = lmp->input->variable->retrieve(name);
+  if (!out) return;
+  const fs::path dir(out), meta = dir / "run.json";
+  std::error_code ec;
+  if (!fs::is_regular_file(meta, ec)) return;
+  if (end == RunEnd::Interrupted) move_forced_restart(lmp, dir);
+  std::string text = read_all(meta);
+  const std::size_t status = text.rfind("\"status\": \"running\"");
+  const std::size_t reached = text.rfind("\"time_reached\": ", status);
+  if (status == std::string::npos || reached == std::string::npos) return;
+  const double t = time_reached(lmp);
+  char when[40] = "null";
+  if (std::isfinite(t)) *std::to_chars(when, when + sizeof when - 1, t).ptr = '\0';
+  char tail[128];
+  std::snprintf(tail, sizeof tail, "\"time_reached\": %s, \"status\": \"%s\"}\n", when,
+                status_name(end));
+  text.replace(reached, std::string::npos, tail);
+  const fs::path tmp = dir / "run.json.tmp";
+  {
+    std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
+    o << text;
+    if (!o) return;
+  }
+  fs::rename(tmp, meta, ec);
+}
+
+void record_failure_at_exit(LAMMPS_NS::LAMMPS *lmp)
+{
+  static bool registered = false;
+  g_lmp = lmp;
+  MPI_Comm_rank(lmp->world, &g_rank);
+  if (registered) return;
+  registered = true;
+  std::atexit([] {
+    LAMMPS_NS::LAMMPS *lmp = g_lmp;
+    g_lmp = nullptr;
+    record_unfinished_run(lmp, RunEnd::Failed);
+  });
+}
+
+void disarm_failure_at_exit()
+{
+  g_lmp = nullptr;
+}
+
+}  // namespace ohmdem
+
+// Errors raised on one process (LIGGGHTS' error->one) write to the screen stream and call
+// MPI_Abort, which ends the processes without flushing: a message sent to a file (stdout
+// redirected, a partition's screen file) would be lost. The MPI profiling interface lets the
+// executable flush every stream first.
+extern "C" int MPI_Abort(MPI_Comm comm, int errorcode)
+{
+  std::fflush(nullptr);
+  return PMPI_Abort(comm, errorcode);
+}

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Deck-level tests of how a run ends (doc/run_status.md).
+
+  finished     exit 0; run.json "status": "finished", "time_reached" = tend
+  interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
+               (the last row of signal.txt); the forced restart file in the run's folder, none
+               in the working folder
+  failed       an unstable step (dt 2e-5, the deck says it is): the lost balls stop the run
+               (exit 1); run.json "failed" with the time reached; the rows written before the
+               failure are kept in signal.txt
+  deck_errors  impossible deck variables stop before the run with a message naming the
+               variable (exit 1)
+
+Usage: run_status_tests.py TEST --exe OHMDEM --src SOURCE_DIR
+"""
+import argparse
+import json
+import os
+import signal
+import subprocess
+import tempfile
+import time
+
+from deck_checks import check, finish, read_signal
+
+
+def command(a, out, **var):
+    os.makedirs(out, exist_ok=True)
+    cmd = [a.exe, "-in", os.path.join(a.src, "inputs", "bearing_6208", "in.bearing"),
+           "-log", os.path.join(out, "log.txt"), "-screen", "none", "-var", "out", out]
+    for k, v in var.items():
+        cmd += ["-var", k, str(v)]
+    return cmd
+
+
+def meta(out):
+    with open(os.path.join(out, "run.json")) as f:
+        return json.load(f)
+
+
+def test_finished(a, work):
+    out = os.path.join(work, "finished")
+    r = subprocess.run(command(a, out, tend=0.002), cwd=work)
+    m = meta(out)
+    check(r.returncode == 0, f"finished: exit status {r.returncode} (0)")
+    check(m["status"] == "finished", f"finished: run.json status {m['status']}")
+    check(abs(m["time_reached"] - 0.002) < 1e-12, f"finished: time reached {m['time_reached']}")
+
+
+def test_interrupted(a, work):
+    out = os.path.join(work, "interrupted")
+    p = subprocess.Popen(command(a, out, tend=50), cwd=work)
+    # wait until the run writes rows, then interrupt it as a batch system would
+    sig = os.path.join(out, "signal.txt")
+    for _ in range(600):
+        if os.path.exists(sig) and os.path.getsize(sig) > 100000:
+            break
+        time.sleep(0.1)
+    p.send_signal(signal.SIGTERM)
+    rc = p.wait(timeout=120)
+    m = meta(out)
+    t_last = read_signal(sig)["time"][-1]
+    check(rc == 3, f"interrupted: exit status {rc} (3)")
+    check(m["status"] == "interrupted", f"interrupted: run.json status {m['status']}")
+    check(0 < m["time_reached"] < 50 and abs(m["time_reached"] - t_last) < 1e-12,
+          f"interrupted: time reached {m['time_reached']} = last row {t_last}")
+    forced_out = [f for f in os.listdir(out) if f.startswith("restart_forced_")]
+    forced_cwd = [f for f in os.listdir(work) if f.startswith("restart_forced_")]
+    check(len(forced_out) == 1 and not forced_cwd,
+          f"interrupted: forced restart in the run's folder {forced_out}, none in the working "
+          f"folder {forced_cwd}")
+
+
+def test_failed(a, work):
+    out = os.path.join(work, "failed")
+    r = subprocess.run(command(a, out, tend=0.05, dt=2e-5), cwd=work, capture_output=True,
+                       text=True)
+    m = meta(out)
+    log = open(os.path.join(out, "log.txt"), errors="replace").read()
+    rows = read_signal(os.path.join(out, "signal.txt"))["time"]
+    check(r.returncode == 1, f"failed: exit status {r.returncode} (1)")
+    check("Lost atoms" in log, "failed: the lost balls stop the run (log: Lost atoms)")
+    check(m["status"] == "failed", f"failed: run.json status {m['status']}")
+    check(0 < m["time_reached"] < 0.05 and abs(rows[-1] - m["time_reached"]) < 1e-12,
+          f"failed: time reached {m['time_reached']}, signal.txt kept up to {rows[-1]} "
+          f"({len(rows)} rows)")
+
+
+def test_deck_errors(a, work):
+    cases = [({"dt": 0}, "deck variable dt: the time step must be > 0 s, got 0"),
+             ({"tend": -1}, "deck variable tend: the simulated time must be > 0 s, got -1"),
+             ({"nout": 0}, "deck variable nout: signal.txt every nout steps needs a whole "
+                           "number >= 1, got 0"),
+             ({"nout": 2.5}, "deck variable nout"),
+             ({"Nb": 12.5}, "deck variable Nb: the number of balls must be a whole number >= 1"),
+             ({"Db": 0.013}, "deck variable Db: the balls (0.013 m) do not fit between the races"),
+             ({"Dext": 0.04}, "deck variables Dext and Dinn: the outer race diameter must exceed "
+                              "the inner one"),
+             ({"nthermo": 0}, "deck variable nthermo")]
+    for var, msg in cases:
+        out = os.path.join(work, "err_" + "_".join(f"{k}{v}" for k, v in var.items()))
+        r = subprocess.run(command(a, out, **var), cwd=work, capture_output=True, text=True)
+        log = open(os.path.join(out, "log.txt"), errors="replace").read()
+        check(r.returncode == 1 and f"ERROR: {msg}" in log,
+              f"deck_errors: {var} -> exit {r.returncode}, '{msg}' in the log")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("test")
+    p.add_argument("--exe", required=True)
+    p.add_argument("--src", required=True)
+    a = p.parse_args()
+    os.environ.setdefault("OHMDEM_CATALOG", os.path.join(a.src, "inputs", "bearings"))
+    with tempfile.TemporaryDirectory(prefix=f"run_status_{a.test}_") as work:
+        globals()[f"test_{a.test}"](a, work)
+    finish()
+
+
+if __name__ == "__main__":
+    main()
