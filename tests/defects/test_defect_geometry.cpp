@@ -1,20 +1,23 @@
-// Unit tests of the defect (pit) geometry kernel, src_fix/defect_geometry.*.
+// Unit tests of the defect (pit) geometry kernel, src_fix/contact/defect_geometry.*.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "defect_geometry.h"
+#include "common/constants.h"
+#include "contact/defect_geometry.h"
+
+using ohmdem::kPi;
 
 using ohmdem::Pit;
 
 TEST(DefectGeometry, WrapAngle)
 {
   EXPECT_DOUBLE_EQ(ohmdem::wrap_angle(0.0), 0.0);
-  EXPECT_DOUBLE_EQ(ohmdem::wrap_angle(M_PI), M_PI);
-  EXPECT_DOUBLE_EQ(ohmdem::wrap_angle(-M_PI), M_PI);
-  EXPECT_NEAR(ohmdem::wrap_angle(3 * M_PI / 2), -M_PI / 2, 1e-15);
-  EXPECT_NEAR(ohmdem::wrap_angle(-7 * M_PI / 2), M_PI / 2, 1e-14);
-  EXPECT_NEAR(ohmdem::wrap_angle(1e3), std::remainder(1e3, 2 * M_PI), 1e-12);
+  EXPECT_DOUBLE_EQ(ohmdem::wrap_angle(kPi), kPi);
+  EXPECT_DOUBLE_EQ(ohmdem::wrap_angle(-kPi), kPi);
+  EXPECT_NEAR(ohmdem::wrap_angle(3 * kPi / 2), -kPi / 2, 1e-15);
+  EXPECT_NEAR(ohmdem::wrap_angle(-7 * kPi / 2), kPi / 2, 1e-14);
+  EXPECT_NEAR(ohmdem::wrap_angle(1e3), std::remainder(1e3, 2 * kPi), 1e-12);
 }
 
 TEST(DefectGeometry, NoRecessOutsideAndContinuousAtTheEdges)

@@ -1,4 +1,4 @@
-// The inline cube root of the hot loops (src_fix/fast_cbrt.h) against libm's std::cbrt,
+// The inline cube root of the hot loops (src_fix/common/fast_cbrt.h) against libm's std::cbrt,
 // which is the reference (correctly rounded to within 1 ulp in glibc).
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-#include "fast_cbrt.h"
+#include "common/fast_cbrt.h"
 
 namespace {
 

@@ -8,7 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "hertz_contact.h"
+#include "common/constants.h"
+#include "contact/hertz_contact.h"
 
 namespace {
 
@@ -23,9 +24,9 @@ struct Ref6208 {
 
 using namespace ohmdem;
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::kPi;
 
-// SKF 6208 (design.md, paper Tables 1-2).
+// SKF 6208 (paper Tables 1-2, doc/hertz_contact.md "SKF 6208").
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 const double kEstar = effective_modulus(200e9, 0.3, 200e9, 0.3);
 
@@ -146,7 +147,7 @@ TEST(HertzForceLaw, RoundTripAndStiffness)
   }
 }
 
-// design.md: inner kappa 9.42, outer 5.97; K_inner 3.10e10, K_outer 2.94e10 N/m^1.5.
+// doc/hertz_contact.md "SKF 6208": inner kappa 9.42, outer 5.97; K_inner 3.10e10, K_outer 2.94e10 N/m^1.5.
 TEST(Hertz6208, EllipticityAndStiffnessConstant)
 {
   const HertzContact in(ball_inner_race(kRb, kRinn, kRcInn), kEstar);
@@ -163,7 +164,7 @@ TEST(Hertz6208, EllipticityAndStiffnessConstant)
               out.stiffness_constant());
 }
 
-// Greenwood (paper eqs 2-5) vs exact for the 6208. design.md: S +2.5 % (inner), +1.2 %
+// Greenwood (paper eqs 2-5) vs exact for the 6208. doc/hertz_contact.md "SKF 6208": S +2.5 % (inner), +1.2 %
 // (outer); ellipticity +9 % and +5 %; rolling-direction half-width b about -3 %.
 TEST(Hertz6208, GreenwoodVsExactTable)
 {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "conductance_models.h"
+#include "electric/conductance_models.h"
 
 using namespace ohmdem;
 

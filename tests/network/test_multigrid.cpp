@@ -1,4 +1,4 @@
-// CG preconditioned by algebraic multigrid (src_fix/multigrid_cg.*, hypre's BoomerAMG) and its
+// CG preconditioned by algebraic multigrid (src_fix/network/multigrid_cg.*, hypre's BoomerAMG) and its
 // use by the network solver. References: a dense long-double solve (test utils), the sparse
 // direct solve, ngspice, and the analytic solution of a 1D Laplacian. A separate executable:
 // hypre brings MPI up, which the leak-checked (ASan) run of test_network must not see.
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
-#include "multigrid_cg.h"
+#include "network/conduction_network.h"
+#include "network/multigrid_cg.h"
 #include "network_test_utils.h"
 
 using namespace ohmdem;

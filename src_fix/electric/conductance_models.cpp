@@ -1,6 +1,6 @@
 // Paper eq. 1 conductance with the small-angle bound; see conductance_models.h and
 // doc/conduction_network.md.
-#include "conductance_models.h"
+#include "electric/conductance_models.h"
 
 #include <algorithm>
 #include <cmath>

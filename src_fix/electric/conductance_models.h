@@ -13,11 +13,12 @@
 #include <cstddef>
 #include <functional>
 
-#include "conduction_network.h"
+#include "common/constants.h"
+#include "network/conduction_network.h"
 
 namespace ohmdem {
 
-constexpr double kPi = 3.14159265358979323846;
+
 
 double sphere_volume(double radius);
 // Radius of the circle of area S (the equivalent radius of an elliptic spot).

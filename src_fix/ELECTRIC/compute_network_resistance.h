@@ -18,7 +18,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include <vector>
 
 #include "compute.h"
-#include "ordered_reduce.h"
+#include "common/ordered_reduce.h"
 
 namespace ohmdem {
 class ConductionNetwork;

@@ -4,7 +4,7 @@
    reactions in tag order (ordered_reduce.h) and handles restart.
 ------------------------------------------------------------------------- */
 
-#include "fix_bearing_cage.h"
+#include "BEARING/fix_bearing_cage.h"
 
 #include <mpi.h>
 
@@ -13,16 +13,17 @@
 #include <vector>
 
 #include "atom.h"
-#include "cage_contact.h"
+#include "common/constants.h"
+#include "contact/cage_contact.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_bearing_defect.h"
+#include "BEARING/fix_bearing_defect.h"
 #include "fix_property_atom.h"
-#include "material_table.h"
+#include "support/material_table.h"
 #include "modify.h"
-#include "style_args.h"
-#include "style_global_restart.h"
-#include "style_peratom_state.h"
+#include "support/args.h"
+#include "support/global_restart.h"
+#include "support/peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -82,7 +83,7 @@ void FixBearingCage::parse(int narg, char **arg)
       cx_ = a.number(kw, "two coordinates x y (m)");
       cy_ = a.number(kw, "two coordinates x y (m)");
     } else if (kw == "angle") {
-      angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * M_PI / 180.0;
+      angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * ohmdem::kPi / 180.0;
     } else {
       a.unknown(kw.c_str(), "pockets radius clearance type mass inertia drag centre angle");
     }
@@ -96,8 +97,8 @@ void FixBearingCage::parse(int narg, char **arg)
   // A thin ring at the pitch radius unless given.
   if (inertia_ <= 0.0) inertia_ = mass_ * pitch_radius_ * pitch_radius_;
   for (int k = 0; k < npockets_; ++k) {
-    pocket_cos_.push_back(std::cos(2.0 * M_PI * k / npockets_));
-    pocket_sin_.push_back(std::sin(2.0 * M_PI * k / npockets_));
+    pocket_cos_.push_back(std::cos(2.0 * ohmdem::kPi * k / npockets_));
+    pocket_sin_.push_back(std::sin(2.0 * ohmdem::kPi * k / npockets_));
   }
 }
 
@@ -147,7 +148,7 @@ void FixBearingCage::build_model()
   } catch (const std::exception &ex) {
     error->fix_error(FLERR, this, ex.what());
   }
-  const double spacing = 2.0 * M_PI * pitch_radius_ / npockets_;
+  const double spacing = 2.0 * ohmdem::kPi * pitch_radius_ / npockets_;
   if (2.0 * (rg + clearance_) >= spacing)
     error->fix_error(FLERR, this,
                      "pockets overlap: ball diameter + 2*clearance must be smaller than the "
@@ -164,7 +165,7 @@ void FixBearingCage::assign_pockets()
     double &pocket = state[i][POCKET];
     if (pocket < 0.0) {
       const double phi = std::atan2(atom->x[i][1] - cy_, atom->x[i][0] - cx_) - angle_ - angle0_;
-      long k = std::lround(phi * npockets_ / (2.0 * M_PI));
+      long k = std::lround(phi * npockets_ / (2.0 * ohmdem::kPi));
       k = ((k % npockets_) + npockets_) % npockets_;
       pocket = static_cast<double>(k);
     }

@@ -101,6 +101,6 @@ std::array<double, N> ordered_sum(const Records &all)
 
 }  // namespace ohmdem
 
-#include "ordered_reduce_impl.h"
+#include "common/ordered_reduce_impl.h"
 
 #endif

@@ -1,10 +1,10 @@
 /* ----------------------------------------------------------------------
-   ohmdem - compute network/resistance. The contacts come from contact_set.*,
-   conductances from conductance_models.*, the solve from conduction_network.*;
+   ohmdem - compute network/resistance. The contacts come from support/contact_set.*,
+   conductances from electric/, the solve from network/;
    this file parses, gathers the network from all processes and reports.
 ------------------------------------------------------------------------- */
 
-#include "compute_network_resistance.h"
+#include "ELECTRIC/compute_network_resistance.h"
 
 #include <mpi.h>
 
@@ -17,19 +17,20 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "conductance_models.h"
-#include "conduction_network.h"
-#include "style_contact_set.h"
+#include "common/constants.h"
+#include "electric/conductance_models.h"
+#include "network/conduction_network.h"
+#include "support/contact_set.h"
 #include "error.h"
-#include "fast_cbrt.h"
-#include "fix_bearing_race.h"
+#include "common/fast_cbrt.h"
+#include "BEARING/fix_bearing_race.h"
 #include "fix_property_global.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
-#include "network_export.h"
-#include "ordered_reduce.h"
-#include "style_args.h"
+#include "network/network_export.h"
+#include "common/ordered_reduce.h"
+#include "support/args.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -213,8 +214,8 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
 // A bearing: every conducting ball touches the high race, the low race, or both, and nothing
 // else conducts. A ball with both contacts is one resistor between the electrodes (eq. 1 with
 // its two spots, plus the two Holm constrictions if asked), and R is their parallel sum: no
-// network, no gathering of contacts (design.md: "a network of two-contact particles needs no
-// big solve"). Returns false, on every process alike, when the scene is anything else.
+// network, no gathering of contacts (doc/compute_network_resistance.md, Solve: a particle with
+// two contacts is one resistor). Returns false, on every process alike, when the scene is anything else.
 bool ComputeNetworkResistance::evaluate_between_races()
 {
   if (!closed_form_ || !netlist_.empty() || !vtk_.empty() || high_.kind != ElectrodeKind::Race ||
@@ -249,7 +250,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
   const double g_lo = gamma_type_[races[low_.index]->race_type()];
   const bool races_conduct = g_hi > 0.0 && g_lo > 0.0;
   // eq. 1 with S_k = area_k(1 N) * fn_k^(2/3) and 1/(2V) = 3/(8 pi r^3).
-  const double eq1_coef = area_hi_ * area_lo_ * 3.0 / (8.0 * M_PI);
+  const double eq1_coef = area_hi_ * area_lo_ * 3.0 / (8.0 * ohmdem::kPi);
   const double inf = std::numeric_limits<double>::infinity();
 
   // Local copies of LIGGGHTS' arrays: the loop stays in registers (this runs every step).
@@ -403,7 +404,7 @@ void ComputeNetworkResistance::build_and_solve()
     const ParticleRec *p = find(c.tag);
     if (!p) continue;
     const double a = c.v[6], b = c.v[7];
-    const double area = M_PI * a * b;
+    const double area = ohmdem::kPi * a * b;
     const int race = static_cast<int>(c.v[1]);
     const double gp = gamma_of(static_cast<int>(p->v[4]));
     double go = 0.0;
@@ -432,7 +433,7 @@ void ComputeNetworkResistance::build_and_solve()
     spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}});
     if (q) spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}});
     if (model_ != Model::Eq1) {
-      // Holm constriction of the spot, in series between the two bodies (design.md).
+      // Holm constriction of the spot, in series between the two bodies (doc/compute_network_resistance.md).
       const double rho = 0.5 * (1.0 / gp + 1.0 / go);
       const double rc = ohmdem::holm_resistance(rho, a, b);
       if (std::isfinite(rc) && rc > 0.0) {

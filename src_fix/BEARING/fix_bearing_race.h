@@ -16,7 +16,7 @@ FixStyle(bearing/race,FixBearingRace)
 #include <vector>
 
 #include "fix.h"
-#include "ordered_reduce.h"
+#include "common/ordered_reduce.h"
 
 namespace ohmdem {
 struct RaceContactModel;

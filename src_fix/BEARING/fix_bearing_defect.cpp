@@ -3,7 +3,7 @@
    and the cage ask this fix about each contact (recess(), breaks_wall()).
 ------------------------------------------------------------------------- */
 
-#include "fix_bearing_defect.h"
+#include "BEARING/fix_bearing_defect.h"
 
 #include <mpi.h>
 
@@ -12,20 +12,21 @@
 
 #include "atom.h"
 #include "comm.h"
-#include "defect_geometry.h"
+#include "common/constants.h"
+#include "contact/defect_geometry.h"
 #include "error.h"
-#include "fix_bearing_cage.h"
-#include "fix_bearing_race.h"
+#include "BEARING/fix_bearing_cage.h"
+#include "BEARING/fix_bearing_race.h"
 #include "modify.h"
-#include "race_contact.h"
-#include "style_args.h"
+#include "contact/race_contact.h"
+#include "support/args.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-constexpr double kDeg = M_PI / 180.0;
+constexpr double kDeg = ohmdem::kDegree;
 }
 
 FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)

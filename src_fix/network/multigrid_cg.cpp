@@ -1,5 +1,5 @@
 // CG + BoomerAMG through hypre's IJ interface (see multigrid_cg.h).
-#include "multigrid_cg.h"
+#include "network/multigrid_cg.h"
 
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>

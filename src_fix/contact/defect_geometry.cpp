@@ -1,14 +1,16 @@
-#include "defect_geometry.h"
+#include "contact/defect_geometry.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "common/constants.h"
 
 namespace ohmdem {
 
 double wrap_angle(double a)
 {
-  a = std::remainder(a, 2.0 * M_PI);  // in [-pi, pi]
-  return a == -M_PI ? M_PI : a;
+  a = std::remainder(a, 2.0 * kPi);  // in [-pi, pi]
+  return a == -kPi ? kPi : a;
 }
 
 double pit_recess(const Pit &pit, double s)

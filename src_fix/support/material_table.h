@@ -5,7 +5,7 @@
 
 #include "atom.h"
 #include "fix_property_global.h"
-#include "hertz_contact.h"
+#include "contact/hertz_contact.h"
 #include "modify.h"
 
 namespace ohmdem {

@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hertz_contact.h"
+#include "contact/hertz_contact.h"
 
 namespace ohmdem {
 

@@ -1,5 +1,5 @@
 // SPICE and legacy-VTK writers; see network_export.h for the conventions.
-#include "network_export.h"
+#include "network/network_export.h"
 
 #include <algorithm>
 #include <cmath>

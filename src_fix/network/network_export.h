@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 
 namespace ohmdem {
 

@@ -1,6 +1,8 @@
-#include "race_contact.h"
+#include "contact/race_contact.h"
 
 #include <cmath>
+
+#include "common/constants.h"
 #include <stdexcept>
 
 namespace ohmdem {
@@ -10,7 +12,7 @@ double restitution_beta(double restitution)
   if (!(restitution > 0.0 && restitution <= 1.0))
     throw std::invalid_argument("coefficient of restitution must be in (0, 1]");
   const double l = std::log(restitution);
-  return l / std::sqrt(l * l + M_PI * M_PI);
+  return l / std::sqrt(l * l + kPi * kPi);
 }
 
 static CurvatureSums race_curvatures(RaceSide side, double rb, double R, double Rg)

@@ -1,16 +1,16 @@
 /* ----------------------------------------------------------------------
    ohmdem - compute contact/area. The contacts and their areas come from
-   style_contact_set.*; this file parses and fills the local array.
+   support/contact_set.*; this file parses and fills the local array.
 ------------------------------------------------------------------------- */
 
-#include "compute_contact_area.h"
+#include "ELECTRIC/compute_contact_area.h"
 
 #include <string>
 #include <vector>
 
 #include "memory.h"
-#include "style_args.h"
-#include "style_contact_set.h"
+#include "support/args.h"
+#include "support/contact_set.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;

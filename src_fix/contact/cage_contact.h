@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hertz_contact.h"
-#include "race_contact.h"
+#include "contact/hertz_contact.h"
+#include "contact/race_contact.h"
 
 namespace ohmdem {
 

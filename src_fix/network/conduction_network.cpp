@@ -1,8 +1,8 @@
 // Assembly, exact reduction and sparse solve of the conduction network.
 // Numerics (why each step is there): doc/conduction_network.md.
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 
-#include "multigrid_cg.h"
+#include "network/multigrid_cg.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "hertz_contact.h"
+#include "contact/hertz_contact.h"
 #include "lmptype.h"
 #include "pointers.h"
 

@@ -4,7 +4,7 @@
    ring's own degrees of freedom, reduces reactions and handles restart.
 ------------------------------------------------------------------------- */
 
-#include "fix_bearing_race.h"
+#include "BEARING/fix_bearing_race.h"
 
 #include <mpi.h>
 
@@ -17,15 +17,15 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_bearing_defect.h"
+#include "BEARING/fix_bearing_defect.h"
 #include "fix_property_atom.h"
 #include "force.h"
-#include "material_table.h"
+#include "support/material_table.h"
 #include "modify.h"
-#include "race_contact.h"
-#include "style_args.h"
-#include "style_global_restart.h"
-#include "style_peratom_state.h"
+#include "contact/race_contact.h"
+#include "support/args.h"
+#include "support/global_restart.h"
+#include "support/peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;

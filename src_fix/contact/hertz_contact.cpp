@@ -1,5 +1,5 @@
 // Hertz elliptic contact kernel. Equations and sources: doc/hertz_contact.md.
-#include "hertz_contact.h"
+#include "contact/hertz_contact.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,13 +8,13 @@
 #include <string>
 #include <utility>
 
-#include "fast_cbrt.h"
+#include "common/constants.h"
+#include "common/fast_cbrt.h"
 
 namespace ohmdem {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 std::string format_error(const char *what, double value, const char *why)

@@ -1,4 +1,4 @@
-#include "cage_contact.h"
+#include "contact/cage_contact.h"
 
 #include <stdexcept>
 

@@ -1,16 +1,16 @@
-#include "style_contact_set.h"
+#include "support/contact_set.h"
 
 #include <cmath>
 
 #include "atom.h"
 #include "compute_pair_gran_local.h"
 #include "error.h"
-#include "fix_bearing_race.h"
+#include "BEARING/fix_bearing_race.h"
 #include "force.h"
-#include "material_table.h"
+#include "support/material_table.h"
 #include "modify.h"
 #include "pair.h"
-#include "race_contact.h"
+#include "contact/race_contact.h"
 
 using namespace LAMMPS_NS;
 
