@@ -18,11 +18,11 @@
 #include "atom.h"
 #include "comm.h"
 #include "common/constants.h"
-#include "electric/conductance_models.h"
+#include "electric/conductance_laws.h"
+#include "electric/network_builder.h"
 #include "network/conduction_network.h"
 #include "support/contact_set.h"
 #include "error.h"
-#include "common/fast_cbrt.h"
 #include "BEARING/fix_bearing_race.h"
 #include "fix_property_global.h"
 #include "group.h"
@@ -34,20 +34,9 @@
 #include "update.h"
 
 using namespace LAMMPS_NS;
-using ohmdem::NodeKey;
 
 namespace {
 constexpr int kVectorSize = 7;
-// Node keys below 2^32 are free for electrodes (conduction_network.h); tags stay below these.
-constexpr std::uint32_t kRaceId0 = 0xFFFFFF00u;  // race k: kRaceId0 + k
-constexpr std::uint32_t kGroupHighId = 0xFFFFFFF0u;
-constexpr std::uint32_t kGroupLowId = 0xFFFFFFF1u;
-enum Member { NONE = 0, HIGH = 1, LOW = 2 };
-
-// Particle records gathered from all processes: x, y, z, radius, type, electrode membership.
-using ParticleRec = ohmdem::TaggedValues<6>;
-// Contact records: other tag (0 for a race), race index, fn, point x y z, semi-axes a b.
-using ContactRec = ohmdem::TaggedValues<8>;
 }  // namespace
 
 ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int narg, char **arg)
@@ -101,11 +90,9 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       else if (m == "exact") area_exact_ = true;
       else a.fail(kw, "greenwood or exact", m.c_str());
     } else if (kw == "model") {
-      const std::string m = a.word(kw, "eq1, holm or eq1+holm");
-      if (m == "eq1") model_ = Model::Eq1;
-      else if (m == "holm") model_ = Model::Holm;
-      else if (m == "eq1+holm") model_ = Model::Eq1Holm;
-      else a.fail(kw, "eq1, holm or eq1+holm", m.c_str());
+      const std::string names = ohmdem::model_names();
+      const std::string m = a.word(kw, names.c_str());
+      if (!ohmdem::find_model(m, model_)) a.fail(kw, names.c_str(), m.c_str());
     } else if (kw == "solver") {
       const std::string m = a.word(kw, "auto, direct, cg or amg");
       multigrid_ = m == "amg";
@@ -214,8 +201,10 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
 // A bearing: every conducting ball touches the high race, the low race, or both, and nothing
 // else conducts. A ball with both contacts is one resistor between the electrodes (eq. 1 with
 // its two spots, plus the two Holm constrictions if asked), and R is their parallel sum: no
-// network, no gathering of contacts (doc/compute_network_resistance.md, Solve: a particle with
-// two contacts is one resistor). Returns false, on every process alike, when the scene is anything else.
+// network, no gathering of contacts (doc/compute_network_resistance.md, "Solve": a particle
+// with two contacts is one resistor). Both this and the general network evaluate the same
+// model (electric/conduction_model.h). Returns false, on every process alike, when the scene
+// is anything else.
 bool ComputeNetworkResistance::evaluate_between_races()
 {
   if (!closed_form_ || !netlist_.empty() || !vtk_.empty() || high_.kind != ElectrodeKind::Race ||
@@ -223,34 +212,16 @@ bool ComputeNetworkResistance::evaluate_between_races()
     return false;
   const auto &races = contacts_->races();
   if (!geometry_ready_) {
-    // Geometry only, once per run: S = S(1 N) * fn^(2/3), and for Holm b/a is fixed, so
-    // R_c = rho * holm(1, 1, b/a) / a (no elliptic integral per contact).
-    geo_hi_ = &contacts_->race_geometry(high_.index);
-    geo_lo_ = &contacts_->race_geometry(low_.index);
-    area_hi_ = geo_hi_->ellipse(1.0).area;
-    area_lo_ = geo_lo_->ellipse(1.0).area;
-    holm_hi_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_hi_->ellipticity());
-    holm_lo_ = ohmdem::holm_resistance(1.0, 1.0, 1.0 / geo_lo_->ellipticity());
-    // Holm constriction of each spot at 1 N, per ball type: rho = (1/gamma_ball + 1/gamma_race)/2.
-    const double g_hi = gamma_type_[races[high_.index]->race_type()];
-    const double g_lo = gamma_type_[races[low_.index]->race_type()];
-    const double a_hi = geo_hi_->ellipse(1.0).a, a_lo = geo_lo_->ellipse(1.0).a;
-    holm_per_type_.assign(2 * gamma_type_.size(), 0.0);
-    for (std::size_t t = 1; t < gamma_type_.size(); ++t) {
-      holm_per_type_[2 * t] = 0.5 * (1.0 / gamma_type_[t] + 1.0 / g_hi) * holm_hi_ / a_hi;
-      holm_per_type_[2 * t + 1] = 0.5 * (1.0 / gamma_type_[t] + 1.0 / g_lo) * holm_lo_ / a_lo;
-    }
+    between_races_ = ohmdem::BallBetweenRaces(
+        model_, contacts_->race_geometry(high_.index), contacts_->race_geometry(low_.index),
+        gamma_type_[races[high_.index]->race_type()], gamma_type_[races[low_.index]->race_type()],
+        gamma_type_);
     other_races_.clear();
     for (int k = 0; k < static_cast<int>(races.size()); ++k)
       if (k != high_.index && k != low_.index) other_races_.push_back(races[k]);
     geometry_ready_ = true;
   }
-  const ohmdem::HertzContact &geo_hi = *geo_hi_, &geo_lo = *geo_lo_;
-  const double g_hi = gamma_type_[races[high_.index]->race_type()];
-  const double g_lo = gamma_type_[races[low_.index]->race_type()];
-  const bool races_conduct = g_hi > 0.0 && g_lo > 0.0;
-  // eq. 1 with S_k = area_k(1 N) * fn_k^(2/3) and 1/(2V) = 3/(8 pi r^3).
-  const double eq1_coef = area_hi_ * area_lo_ * 3.0 / (8.0 * ohmdem::kPi);
+  const ohmdem::BallBetweenRaces &model = between_races_;
   const double inf = std::numeric_limits<double>::infinity();
 
   // Local copies of LIGGGHTS' arrays: the loop stays in registers (this runs every step).
@@ -264,7 +235,6 @@ bool ComputeNetworkResistance::evaluate_between_races()
   const FixBearingRace &race_lo = *races[low_.index];
   const double *const gamma_type = gamma_type_.data();
   const int bit = groupbit;
-  const Model model = model_;
   double *const phi = vector_atom;  // potential / V_high, scaled once R is known
 
   balls_.resize(nlocal);
@@ -290,41 +260,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
     }
     const double u[3] = {ch[3] - x[i][0], ch[4] - x[i][1], 0.0};
     const double w[3] = {cl[3] - x[i][0], cl[4] - x[i][1], 0.0};
-    const double dot = u[0] * w[0] + u[1] * w[1];
-    const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1]));
-    const double r = radius[i];
-    double conductance;
-    const bool facing = dot <= 0.0 && norms > 0.0;
-    if (model == Model::Eq1 && facing) {
-      // Spots facing each other (the bearing): S_hi*S_lo needs one cube root; for an obtuse
-      // angle 1 - cos(theta) >= 1 and the small-angle clamp cannot apply.
-      const double p = ohmdem::cbrt_fast(ch[0] * cl[0]);
-      conductance = gamma * eq1_coef * p * p / (r * r * r * (1.0 - dot / norms));
-    } else if (races_conduct && (facing || model == Model::Holm)) {
-      // Holm's constrictions go as 1/a ∝ fn^(-1/3): one cube root per spot.
-      const double qh = ohmdem::cbrt_fast(ch[0]), ql = ohmdem::cbrt_fast(cl[0]);
-      const int t = type[i];
-      double resistance = holm_per_type_[2 * t] / qh + holm_per_type_[2 * t + 1] / ql;
-      if (model != Model::Holm) {
-        const double p = qh * ql;
-        resistance += r * r * r * (1.0 - dot / norms) / (gamma * eq1_coef * p * p);
-      }
-      conductance = 1.0 / resistance;
-    } else {
-      const auto eh = geo_hi.ellipse(ch[0]), el = geo_lo.ellipse(cl[0]);
-      double resistance = 0.0;
-      if (model != Model::Holm) {
-        const double g = ohmdem::eq1_conductance_between(gamma, eh.area, el.area,
-                                                         ohmdem::sphere_volume(r), u, w, r);
-        resistance += g > 0.0 ? 1.0 / g : inf;
-      }
-      if (model != Model::Eq1 && races_conduct) {
-        resistance += 0.5 * (1.0 / gamma + 1.0 / g_hi) * holm_hi_ / eh.a;
-        resistance += 0.5 * (1.0 / gamma + 1.0 / g_lo) * holm_lo_ / el.a;
-      }
-      conductance = 1.0 / resistance;
-    }
-    if (!races_conduct) conductance = 0.0;
+    const double conductance = model.conductance(type[i], gamma, radius[i], ch[0], cl[0], u, w);
     phi[i] = 0.5;
     out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
   }
@@ -352,130 +288,56 @@ void ComputeNetworkResistance::build_and_solve()
   contacts_->collect(local);
   const int high_bit = high_.kind == ElectrodeKind::Group ? high_.index : 0;
   const int low_bit = low_.kind == ElectrodeKind::Group ? low_.index : 0;
-  std::vector<ParticleRec> my_particles;
+  std::vector<ohmdem::ParticleRecord::Packed> my_particles;
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & groupbit)) continue;
-    const int m = (atom->mask[i] & high_bit) ? HIGH : (atom->mask[i] & low_bit) ? LOW : NONE;
-    my_particles.push_back({static_cast<std::int64_t>(atom->tag[i]),
-                            {atom->x[i][0], atom->x[i][1], atom->x[i][2], atom->radius[i],
-                             static_cast<double>(atom->type[i]), static_cast<double>(m)}});
+    const int m = atom->mask[i];
+    const auto member = (m & high_bit)  ? ohmdem::Membership::High
+                        : (m & low_bit) ? ohmdem::Membership::Low
+                                        : ohmdem::Membership::None;
+    my_particles.push_back(
+        ohmdem::ParticleRecord{static_cast<std::int64_t>(atom->tag[i]),
+                               {atom->x[i][0], atom->x[i][1], atom->x[i][2]},
+                               atom->radius[i],
+                               atom->type[i],
+                               member}
+            .pack());
   }
-  std::vector<ContactRec> my_contacts;
+  std::vector<ohmdem::ContactRecord::Packed> my_contacts;
   for (const auto &c : local)
-    my_contacts.push_back({static_cast<std::int64_t>(c.tag1),
-                           {static_cast<double>(c.tag2), static_cast<double>(c.race), c.fn,
-                            c.point[0], c.point[1], c.point[2], c.ellipse.a, c.ellipse.b}});
+    my_contacts.push_back(ohmdem::ContactRecord{static_cast<std::int64_t>(c.tag1),
+                                                static_cast<std::int64_t>(c.tag2),
+                                                c.race,
+                                                c.fn,
+                                                {c.point[0], c.point[1], c.point[2]},
+                                                c.ellipse.a,
+                                                c.ellipse.b}
+                              .pack());
 
   // 2. The whole network on every process, in tag order: same numbers for any process count.
-  const auto particles = ohmdem::gather_by_tag<6>(my_particles, world);
-  const auto contacts = ohmdem::gather_by_tag<8>(my_contacts, world);
-  auto find = [&](std::int64_t tag) -> const ParticleRec * {
-    auto it = std::lower_bound(particles.begin(), particles.end(), tag,
-                               [](const ParticleRec &p, std::int64_t t) { return p.tag < t; });
-    return it != particles.end() && it->tag == tag ? &*it : nullptr;
-  };
+  std::vector<ohmdem::ParticleRecord> particles;
+  for (const auto &p : ohmdem::gather_by_tag<6>(my_particles, world))
+    particles.push_back(ohmdem::ParticleRecord::unpack(p));
+  std::vector<ohmdem::ContactRecord> contacts;
+  for (const auto &c : ohmdem::gather_by_tag<8>(my_contacts, world))
+    contacts.push_back(ohmdem::ContactRecord::unpack(c));
   const auto &races = contacts_->races();
-  auto race_key = [](int k) { return ohmdem::electrode_key(kRaceId0 + static_cast<std::uint32_t>(k)); };
-  auto member_key = [](int m) {
-    return ohmdem::electrode_key(m == HIGH ? kGroupHighId : kGroupLowId);
-  };
-  auto gamma_of = [&](int type) { return conductivity_->compute_vector(type - 1); };
-  auto particle_node = [](std::int64_t tag) { return NodeKey(static_cast<std::uint32_t>(tag)) << 32; };
+  std::vector<double> gamma_race;
+  for (const FixBearingRace *r : races) gamma_race.push_back(gamma_type_[r->race_type()]);
 
-  // Node of particle p's side of a contact with `other` (a tag, or kRaceId0 + race).
-  auto side_node = [&](const ParticleRec &p, std::uint32_t other, NodeKey shared) -> NodeKey {
-    const int m = static_cast<int>(p.v[5]);
-    if (m != NONE) return member_key(m);
-    if (model_ == Model::Holm) return particle_node(p.tag);
-    if (model_ == Model::Eq1Holm) return ohmdem::contact_side_key(static_cast<std::uint32_t>(p.tag), other);
-    return shared;
-  };
-
-  struct Spot {
-    std::int64_t tag;
-    ohmdem::ContactSpot spot;
-  };
-  std::vector<Spot> spots;
-  std::vector<ohmdem::VtkEdge> drawn;  // only with `vtk FILE`
+  // 3. The model's conductances: constrictions across contacts, the bulk law inside particles.
   ohmdem::ConductionNetwork &net = *network_;
-  net.clear();
-  int conducting_contacts = 0;
-  for (const auto &c : contacts) {
-    const ParticleRec *p = find(c.tag);
-    if (!p) continue;
-    const double a = c.v[6], b = c.v[7];
-    const double area = ohmdem::kPi * a * b;
-    const int race = static_cast<int>(c.v[1]);
-    const double gp = gamma_of(static_cast<int>(p->v[4]));
-    double go = 0.0;
-    NodeKey shared, other_side;
-    std::uint32_t other_id;
-    const ParticleRec *q = nullptr;
-    if (race >= 0) {
-      other_id = kRaceId0 + static_cast<std::uint32_t>(race);
-      shared = other_side = race_key(race);
-      go = gamma_of(races[race]->race_type());
-    } else {
-      q = find(static_cast<std::int64_t>(c.v[0]));
-      if (!q) continue;  // the other particle is outside the group
-      other_id = static_cast<std::uint32_t>(q->tag);
-      const int mp = static_cast<int>(p->v[5]), mq = static_cast<int>(q->v[5]);
-      shared = mp != NONE ? member_key(mp)
-               : mq != NONE ? member_key(mq)
-                            : ohmdem::contact_key(static_cast<std::uint32_t>(p->tag), other_id);
-      go = gamma_of(static_cast<int>(q->v[4]));
-      other_side = side_node(*q, static_cast<std::uint32_t>(p->tag), shared);
-    }
-    if (!(gp > 0.0) || !(go > 0.0)) continue;  // an insulator on either side: no current
-    ++conducting_contacts;
-    const NodeKey mine = side_node(*p, other_id, shared);
-    const double pt[3] = {c.v[3], c.v[4], c.v[5]};
-    spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}});
-    if (q) spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}});
-    if (model_ != Model::Eq1) {
-      // Holm constriction of the spot, in series between the two bodies (doc/compute_network_resistance.md).
-      const double rho = 0.5 * (1.0 / gp + 1.0 / go);
-      const double rc = ohmdem::holm_resistance(rho, a, b);
-      if (std::isfinite(rc) && rc > 0.0) {
-        net.add_conductance(mine, other_side, 1.0 / rc);
-        if (!vtk_.empty())
-          drawn.push_back({mine, other_side, 1.0 / rc, {pt[0], pt[1], pt[2]},
-                           {pt[0], pt[1], pt[2]}, {area, area, 1.0}});
-      }
-    }
-  }
-
-  // 3. Paper eq. 1 inside every conducting particle that is not part of an electrode.
-  std::stable_sort(spots.begin(), spots.end(),
-                   [](const Spot &x, const Spot &y) { return x.tag < y.tag; });
-  if (model_ != Model::Holm) {
-    std::vector<ohmdem::ContactSpot> mine;
-    for (std::size_t s = 0; s < spots.size();) {
-      std::size_t e = s;
-      while (e < spots.size() && spots[e].tag == spots[s].tag) ++e;
-      const ParticleRec *p = find(spots[s].tag);
-      if (p && static_cast<int>(p->v[5]) == NONE) {
-        mine.clear();
-        for (std::size_t k = s; k < e; ++k) mine.push_back(spots[k].spot);
-        ohmdem::ConductingParticle cp{{p->v[0], p->v[1], p->v[2]}, p->v[3],
-                                      ohmdem::sphere_volume(p->v[3]), gamma_of(static_cast<int>(p->v[4]))};
-        ohmdem::EdgeVisitor draw;
-        if (!vtk_.empty())
-          draw = [&](const ohmdem::ContactSpot &x, const ohmdem::ContactSpot &y, double g) {
-            drawn.push_back({x.node, y.node, g, {x.point[0], x.point[1], x.point[2]},
-                             {y.point[0], y.point[1], y.point[2]}, {x.area, y.area, 0.0}});
-          };
-        ohmdem::add_particle_conductances(net, cp, mine.data(), mine.size(), draw);
-      }
-      s = e;
-    }
-  }
+  const ohmdem::NetworkScene scene{&particles, &contacts, &gamma_type_, &gamma_race, !vtk_.empty()};
+  ohmdem::NetworkBuild built = ohmdem::build_network(model_, scene, net);
+  const auto &spots = built.spots;
+  const int conducting_contacts = built.conducting_contacts;
 
   // 4. Solve: current into `high`, `low` at 0 V.
-  auto electrode_node = [&](const Electrode &e, int member) {
-    return e.kind == ElectrodeKind::Race ? race_key(e.index) : member_key(member);
+  auto electrode_node = [&](const Electrode &e, ohmdem::Membership member) {
+    return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
   };
-  net.set_electrodes(electrode_node(high_, HIGH), electrode_node(low_, LOW));
+  net.set_electrodes(electrode_node(high_, ohmdem::Membership::High),
+                     electrode_node(low_, ohmdem::Membership::Low));
   const ohmdem::NetworkSolution sol = net.solve(current_);
   report(sol.resistance, conducting_contacts, sol.floating_nodes_dropped, sol.iterations,
          sol.relative_residual);
@@ -485,8 +347,9 @@ void ComputeNetworkResistance::build_and_solve()
     vector_atom[i] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
     const std::int64_t tag = atom->tag[i];
-    auto lo = std::lower_bound(spots.begin(), spots.end(), tag,
-                               [](const Spot &x, std::int64_t t) { return x.tag < t; });
+    auto lo = std::lower_bound(
+        spots.begin(), spots.end(), tag,
+        [](const ohmdem::NetworkBuild::Spot &x, std::int64_t t) { return x.tag < t; });
     double sum = 0.0;
     int n = 0;
     for (; lo != spots.end() && lo->tag == tag; ++lo, ++n) sum += net.potential(lo->spot.node);
@@ -513,7 +376,7 @@ void ComputeNetworkResistance::build_and_solve()
     // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
     ohmdem::VtkOptions opt;
     opt.edge_scalar_names = {"area_a", "area_b", "holm"};
-    ohmdem::write_vtk_network(os, net, std::move(drawn), opt);
+    ohmdem::write_vtk_network(os, net, std::move(built.drawn), opt);
   }
 }
 

@@ -17,12 +17,12 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 
 #include <vector>
 
-#include "compute.h"
 #include "common/ordered_reduce.h"
+#include "compute.h"
+#include "electric/conduction_model.h"
 
 namespace ohmdem {
 class ConductionNetwork;
-class HertzContact;
 }
 
 namespace LAMMPS_NS {
@@ -41,7 +41,6 @@ class ComputeNetworkResistance : public Compute {
   double memory_usage() override;
 
  private:
-  enum class Model { Eq1, Holm, Eq1Holm };
   enum class ElectrodeKind { Race, Group };
   struct Electrode {
     ElectrodeKind kind = ElectrodeKind::Race;
@@ -57,7 +56,7 @@ class ComputeNetworkResistance : public Compute {
 
   double current_ = 0;
   Electrode high_, low_;
-  Model model_ = Model::Eq1;
+  ohmdem::ConductionModel model_;  // from the keyword `model` (conduction_model.h's table)
   int solver_ = 0;  // ohmdem::SolverKind
   bool multigrid_ = false;  // solver amg: CG preconditioned by algebraic multigrid
   bool area_exact_ = false;
@@ -74,14 +73,12 @@ class ComputeNetworkResistance : public Compute {
   // closed form, per local ball: conductance, 1 if it joins the races, 1 if a dead end
   std::vector<ohmdem::TaggedValues<3>> balls_;
   ohmdem::OrderedGather<3> balls_gather_;
-  // Closed form, geometry only (set at the first evaluation of a run): contact area at 1 N
-  // on each electrode race (m^2) and Holm's factor K(e^2)/pi of its ellipse.
+  // Closed form: the model between the two electrode races, set at the first evaluation of
+  // a run (the races' geometry is known then).
   bool geometry_ready_ = false;
-  const ohmdem::HertzContact *geo_hi_ = nullptr, *geo_lo_ = nullptr;  // in contacts_
+  ohmdem::BallBetweenRaces between_races_;
   std::vector<const FixBearingRace *> other_races_;  // neither electrode: any contact -> network
-  double area_hi_ = 0, area_lo_ = 0, holm_hi_ = 0, holm_lo_ = 0;
   std::vector<double> gamma_type_;  // conductivity of each atom type (S/m), 1-based
-  std::vector<double> holm_per_type_;  // [2t], [2t+1]: Holm resistance at 1 N, high / low spot
   int nmax_ = 0;
 };
 

@@ -173,12 +173,4 @@ ContactEllipse HertzContact::ellipse(double fn) const
   return e;
 }
 
-// Holm, Electric Contacts (4th ed. 1967), sect. 4: both half-spaces, elliptic spot.
-double holm_resistance(double rho_e, double a, double b)
-{
-  if (b > a) std::swap(a, b);
-  if (!(a > 0) || !(b > 0)) return kInf;
-  return rho_e * complete_elliptic(b / a).K / (kPi * a);
-}
-
 }  // namespace ohmdem

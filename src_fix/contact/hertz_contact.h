@@ -97,12 +97,6 @@ class HertzContact {
   double b_coef_;
 };
 
-// Holm constriction resistance (Ohm) of one elliptic spot with semi-axes a >= b (m) (the
-// arguments are swapped if b > a), resistivity rho_e = 1/gamma (Ohm m):
-// R_c = rho_e K(e^2) / (pi a), e^2 = 1 - b^2/a^2; rho_e/(2a) for a circle.
-// +infinity for a zero-size spot (a <= 0 or b <= 0): the caller treats that as "no contact".
-double holm_resistance(double rho_e, double a, double b);
-
 }  // namespace ohmdem
 
 #endif

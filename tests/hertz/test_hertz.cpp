@@ -10,6 +10,7 @@
 
 #include "common/constants.h"
 #include "contact/hertz_contact.h"
+#include "electric/conductance_laws.h"
 
 namespace {
 

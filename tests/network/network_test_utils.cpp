@@ -13,7 +13,7 @@
 #include <random>
 #include <sstream>
 
-#include "electric/conductance_models.h"
+#include "electric/conductance_laws.h"
 #include "network/network_export.h"
 
 namespace ohmdem_test {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "electric/conductance_models.h"
+#include "electric/conductance_laws.h"
 #include "network/conduction_network.h"
 
 using namespace ohmdem;

@@ -1,4 +1,6 @@
-// Conductances of the network edges, plain C++ (no LIGGGHTS types).
+// The conduction laws, each written once, plain C++ (no LIGGGHTS types): the bulk law (paper
+// eq. 1, inside a particle), the constriction law (Holm, across a contact spot) and the mixing
+// rule of two bodies' resistivities. electric/conduction_model.h composes them.
 //
 // Paper eq. 1: inside a conducting particle k, two of its contact spots i, j (areas S_i, S_j,
 // angle theta_ij between them seen from the particle centre) are joined by
@@ -14,6 +16,7 @@
 #include <functional>
 
 #include "common/constants.h"
+#include "contact/hertz_contact.h"
 #include "network/conduction_network.h"
 
 namespace ohmdem {
@@ -41,6 +44,23 @@ struct Eq1Result {
 // angles). Zero (never NaN) if an area is zero, or gamma, volume or radius are not > 0.
 Eq1Result eq1_conductance(double gamma, double area_i, double area_j, double volume, double theta,
                           double radius);
+
+// Holm constriction resistance (Ohm) of one elliptic spot with semi-axes a >= b (m) (the
+// arguments are swapped if b > a), resistivity rho_e = 1/gamma (Ohm m):
+// R_c = rho_e K(e^2) / (pi a), e^2 = 1 - b^2/a^2; rho_e/(2a) for a circle.
+// +infinity for a zero-size spot (a <= 0 or b <= 0): the caller treats that as "no contact".
+double holm_resistance(double rho_e, double a, double b);
+
+// Holm's factor K(e^2)/pi of an ellipse of axis ratio b/a = 1/ellipticity: the constriction
+// is rho * holm_factor / a (what holm_resistance(1, 1, b/a) gives).
+double holm_factor(double ellipticity);
+
+// The resistivity of a spot between two bodies of conductivities gamma_1, gamma_2 (S/m): the
+// mean of their resistivities, (1/gamma_1 + 1/gamma_2) / 2 (Ohm m).
+inline double mixed_resistivity(double gamma_1, double gamma_2)
+{
+  return 0.5 * (1.0 / gamma_1 + 1.0 / gamma_2);
+}
 
 // Two conductances in series (a split contact: Holm constriction + particle path).
 double series_conductance(double g1, double g2);

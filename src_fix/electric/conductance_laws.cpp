@@ -1,9 +1,11 @@
-// Paper eq. 1 conductance with the small-angle bound; see conductance_models.h and
-// doc/conduction_network.md.
-#include "electric/conductance_models.h"
+// The conduction laws: paper eq. 1 with the small-angle bound, Holm's constriction; see
+// conductance_laws.h, doc/conduction_network.md and doc/compute_network_resistance.md.
+#include "electric/conductance_laws.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace ohmdem {
 
@@ -64,6 +66,19 @@ double eq1_conductance_between(double gamma, double area_i, double area_j, doubl
       volume > 0.0)
     return gamma * area_i * area_j / (2.0 * volume * (1.0 - dot / norms));
   return eq1_conductance(gamma, area_i, area_j, volume, angle_between(u, v), radius).conductance;
+}
+
+// Holm, Electric Contacts (4th ed. 1967), sect. 4: both half-spaces, elliptic spot.
+double holm_resistance(double rho_e, double a, double b)
+{
+  if (b > a) std::swap(a, b);
+  if (!(a > 0) || !(b > 0)) return std::numeric_limits<double>::infinity();
+  return rho_e * complete_elliptic(b / a).K / (kPi * a);
+}
+
+double holm_factor(double ellipticity)
+{
+  return holm_resistance(1.0, 1.0, 1.0 / ellipticity);
 }
 
 double series_conductance(double g1, double g2)
