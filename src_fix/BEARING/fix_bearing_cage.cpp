@@ -17,13 +17,11 @@
 #include "contact/cage_contact.h"
 #include "comm.h"
 #include "error.h"
-#include "BEARING/fix_bearing_defect.h"
 #include "fix_property_atom.h"
 #include "support/material_table.h"
 #include "modify.h"
 #include "support/args.h"
 #include "support/global_restart.h"
-#include "support/peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -38,18 +36,10 @@ constexpr int kPeratomCols = 2;  // pocket index, pocket force on the ball (sign
 constexpr int kRestartSize = 8;
 }  // namespace
 
-FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg)
+    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingCage_")
 {
   parse(narg, arg);
-  vector_flag = 1;
-  size_vector = kVectorSize;
-  global_freq = 1;
-  extvector = 0;
-  peratom_flag = 1;
-  size_peratom_cols = kPeratomCols;
-  peratom_freq = 1;
-  restart_global = 1;
-  array_atom = nullptr;
 }
 
 FixBearingCage::~FixBearingCage() = default;
@@ -102,17 +92,11 @@ void FixBearingCage::parse(int narg, char **arg)
   }
 }
 
-int FixBearingCage::setmask()
-{
-  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE;
-}
-
 void FixBearingCage::post_create()
 {
   // Which pocket each ball sits in (fixed at the first run; -1 = not yet) and the last
-  // pocket force, in a fix property/atom: migrates with the atom, written to restart files.
-  ohmdem::create_peratom_state(modify, std::string("bearingCage_") + id,
-                               {"-1.", "0.", "0.", "0."}, style);  // POCKET, FORCE, FX, FY
+  // pocket force.
+  create_state({"-1.", "0.", "0.", "0."});  // POCKET, FORCE, FX, FY
   init();
 }
 
@@ -120,27 +104,16 @@ void FixBearingCage::init()
 {
   if (!atom->sphere_flag || !atom->rmass_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere");
-  state_ = ohmdem::find_peratom_state(modify, std::string("bearingCage_") + id, style);
-  defects_.clear();
-  for (int k = 0; k < modify->nfix; ++k)
-    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))
-      if (d->kind() == FixBearingDefect::Kind::Cage) defects_.push_back(d);
+  find_state();
+  find_defects(true);
 }
 
 void FixBearingCage::build_model()
 {
-  double rmax = 0.0;
-  int type = -1;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    rmax = std::max(rmax, atom->radius[i]);
-    type = std::max(type, atom->type[i]);
-  }
-  double rg;
-  int tg;
-  MPI_Allreduce(&rmax, &rg, 1, MPI_DOUBLE, MPI_MAX, world);
-  MPI_Allreduce(&type, &tg, 1, MPI_INT, MPI_MAX, world);
-  if (tg < 1) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  const GroupBalls g = scan_group();
+  if (g.empty) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  const double rg = g.rmax;
+  const int tg = g.tmax;
   const ohmdem::MaterialTable mat(lmp, style, true, false);
   try {
     model_ = std::make_unique<ohmdem::CageContactModel>(
@@ -190,18 +163,7 @@ void FixBearingCage::setup(int vflag)
 {
   build_model();
   assign_pockets();
-  if (restored_) {
-    // Right after read_restart: reuse the forces of the step the restart was written at
-    // (see FixBearingRace::setup).
-    restored_ = false;
-    array_atom = state_->array_atom;
-    for (int i = 0; i < atom->nlocal; ++i) {
-      if (!(atom->mask[i] & groupbit)) continue;
-      atom->f[i][0] += array_atom[i][FX];
-      atom->f[i][1] += array_atom[i][FY];
-    }
-    return;
-  }
+  if (reapply_restored_forces(FX, FY, -1)) return;
   post_force(vflag);
 }
 
@@ -227,6 +189,7 @@ void FixBearingCage::post_force(int)
   const double cos_cage = std::cos(angle_ + angle0_), sin_cage = std::sin(angle_ + angle0_);
   mine_.clear();
   int masked = 0;
+  const ohmdem::BearingSurface surf = surface();  // what the defects need, once per step
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -246,7 +209,7 @@ void FixBearingCage::post_force(int)
     rec.tag = atom->tag[i];
     rec.v = {0.0, 0.0, orbit};
     if (!c.touching) continue;
-    if (!defects_.empty() && wall_broken(k, c.offset > 0.0 ? 1 : -1)) {
+    if (!defects_.empty() && wall_broken(surf, k, c.offset > 0.0 ? 1 : -1)) {
       ++masked;  // a broken bar: nothing to push on
       continue;
     }
@@ -274,11 +237,25 @@ void FixBearingCage::post_force(int)
   }
 }
 
-bool FixBearingCage::wall_broken(int pocket, int side) const
+bool FixBearingCage::wall_broken(const ohmdem::BearingSurface &surface, int pocket,
+                                 int side) const
 {
   for (const auto *d : defects_)
-    if (d->breaks_wall(this, pocket, side)) return true;
+    if (d->breaks_wall(surface, pocket, side)) return true;
   return false;
+}
+
+ohmdem::BearingSurface FixBearingCage::surface() const
+{
+  ohmdem::BearingSurface s;
+  s.body = static_cast<const ohmdem::BearingBody *>(this);
+  s.kind = ohmdem::BodyKind::Cage;
+  s.centre[0] = cx_;
+  s.centre[1] = cy_;
+  s.radius = pitch_radius_;
+  s.angle = angle_;
+  s.pockets = npockets_;
+  return s;
 }
 
 double FixBearingCage::compute_vector(int n)

@@ -15,7 +15,7 @@ FixStyle(bearing/cage,FixBearingCage)
 #include <memory>
 #include <vector>
 
-#include "fix.h"
+#include "BEARING/fix_bearing_body.h"
 #include "common/ordered_reduce.h"
 
 namespace ohmdem {
@@ -24,11 +24,10 @@ struct CageContactModel;
 
 namespace LAMMPS_NS {
 
-class FixBearingCage : public Fix {
+class FixBearingCage : public FixBearingBody {
  public:
   FixBearingCage(class LAMMPS *, int, char **);
   ~FixBearingCage() override;
-  int setmask() override;
   void post_create() override;
   void init() override;
   void setup(int) override;
@@ -43,6 +42,7 @@ class FixBearingCage : public Fix {
   double angle() const { return angle_; }
   double omega() const { return omega_; }
   int pockets() const { return npockets_; }
+  ohmdem::BearingSurface surface() const override;
 
  private:
   void parse(int narg, char **arg);
@@ -64,10 +64,9 @@ class FixBearingCage : public Fix {
 
   // last force evaluation
   double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
-  double ball_orbit_ = 0;
   int nmasked_ = 0;  // ball contacts with a broken cage bar (fix bearing/defect cage)
-  std::vector<class FixBearingDefect *> defects_;
-  bool wall_broken(int pocket, int side) const;  // mean orbital angular speed of the balls about the axis
+  double ball_orbit_ = 0;  // mean orbital angular speed of the balls about the axis
+  bool wall_broken(const ohmdem::BearingSurface &surface, int pocket, int side) const;
   int ncontacts_ = 0;
   // Per ball: pocket force, torque on the cage, orbital angular speed about the axis.
   // Members so that their memory is reused from step to step.
@@ -75,8 +74,6 @@ class FixBearingCage : public Fix {
   ohmdem::OrderedGather<3> gather_;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;
-  class FixPropertyAtom *state_ = nullptr;  // pocket index and last force of each ball
-  bool restored_ = false;  // state was just read from a restart file
 };
 
 }  // namespace LAMMPS_NS

@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
-   ohmdem - fix bearing/defect. Pit geometry in defect_geometry.*; the races
-   and the cage ask this fix about each contact (recess(), breaks_wall()).
+   ohmdem - fix bearing/defect. Pit geometry in contact/defect_geometry.*; the
+   races and the cage ask this fix about each contact (recess(), breaks_wall()),
+   passing their surface as a value (support/bearing_surface.h).
 ------------------------------------------------------------------------- */
 
 #include "BEARING/fix_bearing_defect.h"
@@ -15,10 +16,7 @@
 #include "common/constants.h"
 #include "contact/defect_geometry.h"
 #include "error.h"
-#include "BEARING/fix_bearing_cage.h"
-#include "BEARING/fix_bearing_race.h"
 #include "modify.h"
-#include "contact/race_contact.h"
 #include "support/args.h"
 #include "update.h"
 
@@ -99,6 +97,15 @@ int FixBearingDefect::setmask()
   return kind_ == Kind::Ball ? POST_INTEGRATE : 0;
 }
 
+// The fix `id` if it is a race (cage = false) or a cage (cage = true), else null.
+const ohmdem::BearingBody *FixBearingDefect::find_body(const std::string &id, bool cage) const
+{
+  const int k = modify->find_fix(id.c_str());
+  const auto *body = k >= 0 ? dynamic_cast<const ohmdem::BearingBody *>(modify->fix[k]) : nullptr;
+  if (!body || body->surface().is_race() == cage) return nullptr;
+  return body;
+}
+
 void FixBearingDefect::init()
 {
   race_ = nullptr;
@@ -107,20 +114,19 @@ void FixBearingDefect::init()
   if (kind_ == Kind::Inner || kind_ == Kind::Outer) {
     const bool want_inner = kind_ == Kind::Inner;
     for (const auto &name : races_) {
-      const int k = modify->find_fix(name.c_str());
-      auto *race = k >= 0 ? dynamic_cast<FixBearingRace *>(modify->fix[k]) : nullptr;
+      const ohmdem::BearingBody *race = find_body(name, false);
       if (!race) fail("keyword 'race' expects the ID of a fix bearing/race, got '" + name + "'");
-      if (race->is_inner() == want_inner) race_ = race;
+      if (race->surface().inner() == want_inner) race_ = race;
     }
     if (!race_)
       fail(std::string("an ") + (want_inner ? "inner" : "outer") + " defect needs an " +
            (want_inner ? "inner" : "outer") + " race among the 'race' IDs");
   } else if (kind_ == Kind::Cage) {
-    const int k = modify->find_fix(target_.c_str());
-    cage_ = k >= 0 ? dynamic_cast<FixBearingCage *>(modify->fix[k]) : nullptr;
+    cage_ = find_body(target_, true);
     if (!cage_) fail("keyword 'cage' expects the ID of a fix bearing/cage, got '" + target_ + "'");
-    if (pocket_ >= cage_->pockets())
-      fail("keyword 'pocket' expects a pocket index 0.." + std::to_string(cage_->pockets() - 1) +
+    const int pockets = cage_->surface().pockets;
+    if (pocket_ >= pockets)
+      fail("keyword 'pocket' expects a pocket index 0.." + std::to_string(pockets - 1) +
            ", got " + std::to_string(pocket_));
   }
 }
@@ -163,9 +169,19 @@ double FixBearingDefect::zone_centre() const
 {
   switch (kind_) {
     case Kind::Inner:
-    case Kind::Outer: return position_ + (race_ ? race_->angle() : 0.0);
+    case Kind::Outer: return zone_centre(race_ ? race_->surface().angle : 0.0);
+    case Kind::Cage: return zone_centre(cage_ ? cage_->surface().angle : 0.0);
+    default: return zone_centre(0.0);
+  }
+}
+
+double FixBearingDefect::zone_centre(double body_angle) const
+{
+  switch (kind_) {
+    case Kind::Inner:
+    case Kind::Outer: return position_ + body_angle;
     case Kind::Ball: return position_ + spin_;
-    case Kind::Cage: return cage_ ? cage_->angle() : 0.0;
+    case Kind::Cage: return body_angle;
     case Kind::None: return 0.0;
   }
   return 0.0;
@@ -176,22 +192,22 @@ bool FixBearingDefect::active() const
   return update->ntimestep * update->dt >= start_;  // the deck's clock: step*dt
 }
 
-double FixBearingDefect::recess(const FixBearingRace *race, tagint tag, double dx, double dy,
-                                bool &masked) const
+double FixBearingDefect::recess(const ohmdem::BearingSurface &race, std::int64_t tag, double dx,
+                                double dy, bool &masked) const
 {
   if (!active()) return 0.0;
   double s = 0.0;
   ohmdem::Pit pit;
   pit.depth = depth_;
-  if ((kind_ == Kind::Inner || kind_ == Kind::Outer) && race == race_) {
-    const double R = race->current_radius();
-    s = R * ohmdem::wrap_angle(std::atan2(dy, dx) - zone_centre());
+  if ((kind_ == Kind::Inner || kind_ == Kind::Outer) && race.body == race_) {
+    const double R = race.radius;
+    s = R * ohmdem::wrap_angle(std::atan2(dy, dx) - zone_centre(race.angle));
     pit.width = arc_ > 0.0 ? arc_ : R * size_;
-    pit.ball_radius = race->contact_model().ball_radius;
+    pit.ball_radius = race.ball_radius;
   } else if (kind_ == Kind::Ball && tag == ball_) {
     // Direction from the ball centre to the contact: toward the axis on an inner race.
-    const double direction = race->is_inner() ? std::atan2(-dy, -dx) : std::atan2(dy, dx);
-    s = ball_radius_ * ohmdem::wrap_angle(direction - zone_centre());
+    const double direction = race.inner() ? std::atan2(-dy, -dx) : std::atan2(dy, dx);
+    s = ball_radius_ * ohmdem::wrap_angle(direction - zone_centre(0.0));
     pit.width = arc_ > 0.0 ? arc_ : ball_radius_ * size_;
     pit.ball_radius = ball_radius_;
   } else {
@@ -203,10 +219,10 @@ double FixBearingDefect::recess(const FixBearingRace *race, tagint tag, double d
 
 // The broken bar separates pocket K from its neighbour on `side`: it is the wall on that side
 // of pocket K and the opposite wall of the neighbour.
-bool FixBearingDefect::breaks_wall(const FixBearingCage *cage, int pocket, int side) const
+bool FixBearingDefect::breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const
 {
-  if (kind_ != Kind::Cage || cage != cage_ || !active()) return false;
-  const int n = cage->pockets();
+  if (kind_ != Kind::Cage || cage.body != cage_ || !active()) return false;
+  const int n = cage.pockets;
   const int neighbour = ((pocket_ + side_) % n + n) % n;
   return (pocket == pocket_ && side == side_) || (pocket == neighbour && side == -side_);
 }

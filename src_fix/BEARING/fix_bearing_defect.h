@@ -17,13 +17,13 @@ FixStyle(bearing/defect,FixBearingDefect)
 #include <vector>
 
 #include "fix.h"
+#include "support/bearing_surface.h"
 
 namespace LAMMPS_NS {
 
-class FixBearingRace;
-class FixBearingCage;
-
-class FixBearingDefect : public Fix {
+// Knows the races and the cage only as BearingBody (support/bearing_surface.h): it reads
+// their surface as a value and answers their queries; it includes neither of their headers.
+class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
  public:
   enum class Kind { None, Inner, Outer, Ball, Cage };
 
@@ -37,24 +37,26 @@ class FixBearingDefect : public Fix {
   double compute_vector(int) override;
 
   Kind kind() const { return kind_; }
-  // For fix bearing/race: how far the surface falls away under the contact of ball `tag`
-  // with `race` (m); (dx, dy) is the vector from the race centre to the ball centre, on which
-  // the contact lies. `masked` is set when the contact point lies in the zone (no current).
-  double recess(const FixBearingRace *race, tagint tag, double dx, double dy,
-                bool &masked) const;
-  // For fix bearing/cage: whether the wall on `side` (+1 leading, -1 trailing, in the sense
-  // of increasing angle) of pocket k is broken.
-  bool breaks_wall(const FixBearingCage *cage, int pocket, int side) const;
+  bool acts_on_races() const override
+  {
+    return kind_ == Kind::Inner || kind_ == Kind::Outer || kind_ == Kind::Ball;
+  }
+  bool acts_on_cage() const override { return kind_ == Kind::Cage; }
+  double recess(const ohmdem::BearingSurface &race, std::int64_t tag, double dx, double dy,
+                bool &masked) const override;
+  bool breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const override;
 
  private:
   double zone_centre() const;  // lab angle of the zone centre (rad)
+  double zone_centre(double body_angle) const;  // the same, given the defective body's angle
+  const ohmdem::BearingBody *find_body(const std::string &id, bool cage) const;
   bool active() const;         // the defect exists from time `start` on
 
   Kind kind_ = Kind::Inner;
   std::vector<std::string> races_;  // inner/outer: candidate race IDs
   std::string target_;              // cage ID
-  FixBearingRace *race_ = nullptr;
-  FixBearingCage *cage_ = nullptr;
+  const ohmdem::BearingBody *race_ = nullptr;  // inner/outer: the defective race
+  const ohmdem::BearingBody *cage_ = nullptr;  // cage: the defective cage
   tagint ball_ = 0;           // ball defect: the ball's atom ID
   double position_ = 0;       // zone centre in the body frame (rad)
   double size_ = 0;           // angular size (rad); 0 when given as an arc length

@@ -17,7 +17,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "BEARING/fix_bearing_defect.h"
 #include "fix_property_atom.h"
 #include "force.h"
 #include "support/material_table.h"
@@ -25,7 +24,6 @@
 #include "contact/race_contact.h"
 #include "support/args.h"
 #include "support/global_restart.h"
-#include "support/peratom_state.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -35,25 +33,21 @@ using ohmdem::RaceContactModel;
 namespace {
 constexpr int kVectorSize = 11;
 // Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
-// restart files. The first kPeratomCols columns are this fix's per-atom output.
-enum Col { FN, DELTA, FT, PX, PY, MASKED, FX, FY, TZ, SHEAR, NCOL };
-constexpr int kPeratomCols = 6;  // fn, delta, ft, contact point x, y, masked
+// restart files. The first kPeratomCols columns are this fix's per-atom output, the contact
+// that the electrical computes read through RaceContactView; the rest is private state.
+using View = ohmdem::RaceContactView;
+enum Col {
+  FN = View::kFn, DELTA = View::kDelta, FT = View::kFt, PX = View::kPointX, PY = View::kPointY,
+  MASKED = View::kInDefect, FX = View::kColumns, FY, TZ, SHEAR, NCOL
+};
+constexpr int kPeratomCols = View::kColumns;  // fn, delta, ft, contact point x, y, masked
 constexpr int kRestartSize = 17;
 }  // namespace
 
-FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
+FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
+    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_")
 {
   parse(narg, arg);
-
-  vector_flag = 1;
-  size_vector = kVectorSize;
-  global_freq = 1;
-  extvector = 0;
-  peratom_flag = 1;
-  size_peratom_cols = kPeratomCols;
-  peratom_freq = 1;
-  restart_global = 1;
-  array_atom = nullptr;
 }
 
 FixBearingRace::~FixBearingRace() = default;
@@ -150,17 +144,10 @@ void FixBearingRace::parse(int narg, char **arg)
            "nothing");
 }
 
-int FixBearingRace::setmask()
-{
-  return INITIAL_INTEGRATE | POST_FORCE | FINAL_INTEGRATE;
-}
-
 void FixBearingRace::post_create()
 {
-  // Per-ball contact state (tangential spring history, last forces) in a fix property/atom:
-  // it migrates with the atom between processes and is written to restart files.
-  ohmdem::create_peratom_state(modify, std::string("bearingRace_") + id,
-                               std::vector<std::string>(NCOL, "0."), style);
+  // Per-ball contact state: the contact, the last forces, the tangential spring history.
+  create_state(std::vector<std::string>(NCOL, "0."));
   init();
 }
 
@@ -168,39 +155,21 @@ void FixBearingRace::init()
 {
   if (!atom->sphere_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
-  state_ = ohmdem::find_peratom_state(modify, std::string("bearingRace_") + id, style);
-  defects_.clear();
-  for (int k = 0; k < modify->nfix; ++k)
-    if (auto *d = dynamic_cast<FixBearingDefect *>(modify->fix[k]))
-      if (d->kind() != FixBearingDefect::Kind::None && d->kind() != FixBearingDefect::Kind::Cage)
-        defects_.push_back(d);  // only the defects that can touch a race contact
+  find_state();
+  find_defects(false);  // only the defects that can touch a race contact
 }
 
 // Ball type and radius of the group, the materials, and the Hertz model built from them.
 void FixBearingRace::build_model()
 {
-  double rmin = 1e300, rmax = -1e300;
-  int tmin = 1 << 30, tmax = -1;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    rmin = std::min(rmin, atom->radius[i]);
-    rmax = std::max(rmax, atom->radius[i]);
-    tmin = std::min(tmin, atom->type[i]);
-    tmax = std::max(tmax, atom->type[i]);
-  }
-  double rr[2] = {rmin, -rmax}, rg[2];
-  MPI_Allreduce(rr, rg, 2, MPI_DOUBLE, MPI_MIN, world);
-  int tt[2] = {tmin, -tmax}, tg[2];
-  MPI_Allreduce(tt, tg, 2, MPI_INT, MPI_MIN, world);
-  rmin = rg[0];
-  rmax = -rg[1];
-  if (tg[0] == (1 << 30)) error->fix_error(FLERR, this, "the fix group contains no atoms");
-  if (rmax - rmin > 1e-12 * rmax)
+  const GroupBalls g = scan_group();
+  if (g.empty) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  if (g.rmax - g.rmin > 1e-12 * g.rmax)
     error->fix_error(FLERR, this, "all balls of the group must have the same radius");
-  if (tg[0] != -tg[1])
+  if (g.tmin != g.tmax)
     error->fix_error(FLERR, this, "all balls of the group must have the same atom type");
-  ball_radius_ = rmax;
-  ball_type_ = tg[0];
+  ball_radius_ = g.rmax;
+  ball_type_ = g.tmin;
 
   const ohmdem::MaterialTable mat(lmp, style, true, true);
   try {
@@ -237,21 +206,7 @@ void FixBearingRace::build_model()
 void FixBearingRace::setup(int vflag)
 {
   build_model();
-  if (restored_) {
-    // Right after read_restart: reuse the forces of the step the restart was written at.
-    // Recomputing them would use full-step instead of half-step velocities in the damping
-    // and friction terms, and the split run would drift from the single run.
-    restored_ = false;
-    array_atom = state_->array_atom;
-    double **f = atom->f, **torque = atom->torque;
-    for (int i = 0; i < atom->nlocal; ++i) {
-      if (!(atom->mask[i] & groupbit)) continue;
-      f[i][0] += array_atom[i][FX];
-      f[i][1] += array_atom[i][FY];
-      torque[i][2] += array_atom[i][TZ];
-    }
-    return;
-  }
+  if (reapply_restored_forces(FX, FY, TZ)) return;
   post_force(vflag);
 }
 
@@ -264,6 +219,19 @@ double FixBearingRace::target_omega(double t) const
 double FixBearingRace::current_radius() const
 {
   return inner_ ? radius_ + u_ : radius_ - u_;
+}
+
+ohmdem::BearingSurface FixBearingRace::surface() const
+{
+  ohmdem::BearingSurface s;
+  s.body = static_cast<const ohmdem::BearingBody *>(this);
+  s.kind = inner_ ? ohmdem::BodyKind::InnerRace : ohmdem::BodyKind::OuterRace;
+  s.centre[0] = cx_;
+  s.centre[1] = cy_;
+  s.radius = current_radius();
+  s.angle = angle_;
+  s.ball_radius = model_ ? model_->ball_radius : ball_radius_;
+  return s;
 }
 
 // Half a velocity-Verlet kick of the ring's free degrees of freedom.
@@ -317,6 +285,7 @@ void FixBearingRace::post_force(int)
 
   mine_.clear();
   int masked = 0;
+  const ohmdem::BearingSurface surf = surface();  // what the defects need, once per step
   for (int i = 0; i < nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -324,7 +293,7 @@ void FixBearingRace::post_force(int)
     s.recess = 0.0;
     if (!defects_.empty()) {
       bool in_zone = false;
-      s.recess = defect_recess(i, in_zone);
+      s.recess = defect_recess(i, surf, in_zone);
       out[MASKED] = in_zone ? 1.0 : 0.0;
       masked += in_zone;
     }
@@ -366,12 +335,13 @@ void FixBearingRace::post_force(int)
 
 // Sum of the recesses of the defects under ball i's contact with this race; in_zone is set
 // when the contact point lies in a defect zone (the contact then carries no current).
-double FixBearingRace::defect_recess(int i, bool &in_zone) const
+double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surface,
+                                     bool &in_zone) const
 {
   // The contact lies on the line from the race centre to the ball centre.
   const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
   double recess = 0.0;
-  for (const auto *d : defects_) recess += d->recess(this, atom->tag[i], dx, dy, in_zone);
+  for (const auto *d : defects_) recess += d->recess(surface, atom->tag[i], dx, dy, in_zone);
   return recess;
 }
 

@@ -15,8 +15,9 @@ FixStyle(bearing/race,FixBearingRace)
 #include <memory>
 #include <vector>
 
-#include "fix.h"
+#include "BEARING/fix_bearing_body.h"
 #include "common/ordered_reduce.h"
+#include "support/race_contact_view.h"
 
 namespace ohmdem {
 struct RaceContactModel;
@@ -24,11 +25,10 @@ struct RaceContactModel;
 
 namespace LAMMPS_NS {
 
-class FixBearingRace : public Fix {
+class FixBearingRace : public FixBearingBody {
  public:
   FixBearingRace(class LAMMPS *, int, char **);
   ~FixBearingRace() override;
-  int setmask() override;
   void post_create() override;
   void init() override;
   void setup(int) override;
@@ -42,13 +42,14 @@ class FixBearingRace : public Fix {
   double memory_usage() override;
 
   // For the electrical computes: the contact of local atom i with this race, valid after
-  // this step's forces (per-atom columns fn, delta, ft, point x, point y, masked).
-  const double *contact_of(int i) const { return array_atom[i]; }
+  // this step's forces.
+  ohmdem::RaceContactView contact_of(int i) const { return ohmdem::RaceContactView(array_atom[i]); }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return inner_; }
   double current_radius() const;
   void centre(double &x, double &y) const { x = cx_; y = cy_; }
   double angle() const { return angle_; }
+  ohmdem::BearingSurface surface() const override;
   int race_type() const { return race_type_; }
 
  private:
@@ -82,8 +83,7 @@ class FixBearingRace : public Fix {
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
   int ncontacts_ = 0;
   int nmasked_ = 0;  // contacts whose point lies in a defect zone (no current)
-  std::vector<class FixBearingDefect *> defects_;
-  double defect_recess(int i, bool &in_zone) const;
+  double defect_recess(int i, const ohmdem::BearingSurface &surface, bool &in_zone) const;
   // Per touching ball: force on the ball x, y, normal force, torque on the race. Members so
   // that their memory is reused from step to step.
   std::vector<ohmdem::TaggedValues<4>> mine_;
@@ -92,8 +92,6 @@ class FixBearingRace : public Fix {
   std::unique_ptr<ohmdem::RaceContactModel> model_;
   double ball_radius_ = 0;
   int ball_type_ = 0;
-  class FixPropertyAtom *state_ = nullptr;  // per-ball contact state (see the .cpp)
-  bool restored_ = false;  // state was just read from a restart file
 };
 
 }  // namespace LAMMPS_NS

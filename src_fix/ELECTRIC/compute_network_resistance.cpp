@@ -240,27 +240,25 @@ bool ComputeNetworkResistance::evaluate_between_races()
   balls_.resize(nlocal);
   ohmdem::TaggedValues<3> *out = balls_.data();
   int nballs = 0, other = 0;
-  // A contact carries current unless its force is zero or it lies in a defect zone.
-  auto live = [](const double *c) { return c[0] > 0.0 && !(c[5] > 0.0); };
   for (int i = 0; i < nlocal; ++i) {
     phi[i] = 0.0;
     if (!(mask[i] & bit)) continue;
     for (const FixBearingRace *race : other_races_)
-      if (live(race->contact_of(i))) ++other;
-    const double *ch = race_hi.contact_of(i), *cl = race_lo.contact_of(i);
-    if (!live(ch)) ch = nullptr;
-    if (!live(cl)) cl = nullptr;
+      if (race->contact_of(i).conducts()) ++other;
+    const ohmdem::RaceContactView ch = race_hi.contact_of(i), cl = race_lo.contact_of(i);
+    const bool on_hi = ch.conducts(), on_lo = cl.conducts();
     const double gamma = gamma_type[type[i]];
-    if (!(gamma > 0.0) || !(ch || cl)) continue;
-    if (!(ch && cl)) {
+    if (!(gamma > 0.0) || !(on_hi || on_lo)) continue;
+    if (!(on_hi && on_lo)) {
       // A dead end: no current; its contact node sits at that electrode's potential.
-      phi[i] = ch ? 1.0 : 0.0;
+      phi[i] = on_hi ? 1.0 : 0.0;
       out[nballs++] = {static_cast<std::int64_t>(tag[i]), {0.0, 0.0, 1.0}};
       continue;
     }
-    const double u[3] = {ch[3] - x[i][0], ch[4] - x[i][1], 0.0};
-    const double w[3] = {cl[3] - x[i][0], cl[4] - x[i][1], 0.0};
-    const double conductance = model.conductance(type[i], gamma, radius[i], ch[0], cl[0], u, w);
+    const double u[3] = {ch.point_x() - x[i][0], ch.point_y() - x[i][1], 0.0};
+    const double w[3] = {cl.point_x() - x[i][0], cl.point_y() - x[i][1], 0.0};
+    const double conductance =
+        model.conductance(type[i], gamma, radius[i], ch.fn(), cl.fn(), u, w);
     phi[i] = 0.5;
     out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
   }

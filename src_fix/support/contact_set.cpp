@@ -89,14 +89,14 @@ void ContactSet::collect_races(std::vector<Contact> &out)
   for (std::size_t k = 0; k < races_.size(); ++k) {
     for (int i = 0; i < nlocal; ++i) {
       if (!(atom->mask[i] & groupbit_)) continue;
-      const double *c = races_[k]->contact_of(i);
-      if (!(c[0] > 0.0) || c[5] > 0.0) continue;  // no force, or in a defect zone: no current
+      const ohmdem::RaceContactView c = races_[k]->contact_of(i);
+      if (!c.conducts()) continue;  // no force, or in a defect zone: no current
       Contact ct;
       ct.tag1 = atom->tag[i];
       ct.race = static_cast<int>(k);
-      ct.fn = c[0];
-      ct.point[0] = c[3];
-      ct.point[1] = c[4];
+      ct.fn = c.fn();
+      ct.point[0] = c.point_x();
+      ct.point[1] = c.point_y();
       ct.point[2] = atom->x[i][2];
       ct.ellipse = race_geometry(static_cast<int>(k)).ellipse(ct.fn);
       out.push_back(ct);
