@@ -1,6 +1,6 @@
 /* ----------------------------------------------------------------------
    ohmdem - compute contact/area. The contacts and their areas come from
-   support/contact_set.*; this file parses and fills the local array.
+   ELECTRIC/contact_set.*; this file parses and fills the local array.
 ------------------------------------------------------------------------- */
 
 #include "ELECTRIC/compute_contact_area.h"
@@ -10,7 +10,7 @@
 
 #include "memory.h"
 #include "support/args.h"
-#include "support/contact_set.h"
+#include "ELECTRIC/contact_set.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;

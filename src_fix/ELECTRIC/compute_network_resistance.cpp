@@ -1,5 +1,5 @@
 /* ----------------------------------------------------------------------
-   ohmdem - compute network/resistance. The contacts come from support/contact_set.*,
+   ohmdem - compute network/resistance. The contacts come from ELECTRIC/contact_set.*,
    conductances from electric/, the solve from network/;
    this file parses, gathers the network from all processes and reports.
 ------------------------------------------------------------------------- */
@@ -21,7 +21,7 @@
 #include "electric/conductance_laws.h"
 #include "electric/network_builder.h"
 #include "network/conduction_network.h"
-#include "support/contact_set.h"
+#include "ELECTRIC/contact_set.h"
 #include "error.h"
 #include "BEARING/fix_bearing_race.h"
 #include "fix_property_global.h"

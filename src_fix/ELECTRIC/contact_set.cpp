@@ -1,4 +1,4 @@
-#include "support/contact_set.h"
+#include "ELECTRIC/contact_set.h"
 
 #include <cmath>
 
