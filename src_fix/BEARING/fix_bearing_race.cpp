@@ -121,7 +121,13 @@ void FixBearingRace::parse(int narg, char **arg)
   if (race_type_ > atom->ntypes)
     a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(atom->ntypes),
            std::to_string(race_type_).c_str());
-  // Which load keywords each mode needs.
+  check_load(a, have_force, have_settle, have_interference, dir_x, dir_y);
+}
+
+// Which load keywords each mode needs, and the load vector of a radial load.
+void FixBearingRace::check_load(ohmdem::StyleArgs &a, bool have_force, bool have_settle,
+                                bool have_interference, double dir_x, double dir_y)
+{
   if ((load_ == Load::Force || load_ == Load::Radial) && !have_force)
     a.fail("force", "a value: load force and load radial need 'force F'", "nothing");
   if (load_ == Load::Fixed) {

@@ -21,6 +21,7 @@ FixStyle(bearing/race,FixBearingRace)
 
 namespace ohmdem {
 struct RaceContactModel;
+class StyleArgs;
 }
 
 namespace LAMMPS_NS {
@@ -56,6 +57,8 @@ class FixBearingRace : public FixBearingBody {
   enum class Load { None, Force, Fixed, Settle, Radial };
 
   void parse(int narg, char **arg);
+  void check_load(ohmdem::StyleArgs &a, bool have_force, bool have_settle, bool have_interference,
+                  double dir_x, double dir_y);
   void build_model();
   double target_omega(double t) const;
   void ring_half_kick(double dt);

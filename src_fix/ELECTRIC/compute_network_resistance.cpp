@@ -279,9 +279,11 @@ bool ComputeNetworkResistance::evaluate_between_races()
   return true;
 }
 
-void ComputeNetworkResistance::build_and_solve()
+// The particles and contacts of all processes, in tag order: the same network, and the same
+// numbers, for any process count.
+void ComputeNetworkResistance::gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
+                                            std::vector<ohmdem::ContactRecord> &contacts)
 {
-  // 1. This process's particles and contacts.
   std::vector<ContactSet::Contact> local;
   contacts_->collect(local);
   const int high_bit = high_.kind == ElectrodeKind::Group ? high_.index : 0;
@@ -311,36 +313,40 @@ void ComputeNetworkResistance::build_and_solve()
                                                 c.ellipse.a,
                                                 c.ellipse.b}
                               .pack());
-
-  // 2. The whole network on every process, in tag order: same numbers for any process count.
-  std::vector<ohmdem::ParticleRecord> particles;
+  particles.clear();
   for (const auto &p : ohmdem::gather_by_tag<6>(my_particles, world))
     particles.push_back(ohmdem::ParticleRecord::unpack(p));
-  std::vector<ohmdem::ContactRecord> contacts;
+  contacts.clear();
   for (const auto &c : ohmdem::gather_by_tag<8>(my_contacts, world))
     contacts.push_back(ohmdem::ContactRecord::unpack(c));
-  const auto &races = contacts_->races();
-  std::vector<double> gamma_race;
-  for (const FixBearingRace *r : races) gamma_race.push_back(gamma_type_[r->race_type()]);
+}
 
-  // 3. The model's conductances: constrictions across contacts, the bulk law inside particles.
+void ComputeNetworkResistance::build_and_solve()
+{
+  std::vector<ohmdem::ParticleRecord> particles;
+  std::vector<ohmdem::ContactRecord> contacts;
+  gather_scene(particles, contacts);
+  std::vector<double> gamma_race;
+  for (const FixBearingRace *r : contacts_->races())
+    gamma_race.push_back(gamma_type_[r->race_type()]);
+
+  // The model's conductances: constrictions across contacts, the bulk law inside particles.
   ohmdem::ConductionNetwork &net = *network_;
   const ohmdem::NetworkScene scene{&particles, &contacts, &gamma_type_, &gamma_race, !vtk_.empty()};
   ohmdem::NetworkBuild built = ohmdem::build_network(model_, scene, net);
-  const auto &spots = built.spots;
-  const int conducting_contacts = built.conducting_contacts;
 
-  // 4. Solve: current into `high`, `low` at 0 V.
+  // Solve: current into `high`, `low` at 0 V.
   auto electrode_node = [&](const Electrode &e, ohmdem::Membership member) {
     return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
   };
   net.set_electrodes(electrode_node(high_, ohmdem::Membership::High),
                      electrode_node(low_, ohmdem::Membership::Low));
   const ohmdem::NetworkSolution sol = net.solve(current_);
-  report(sol.resistance, conducting_contacts, sol.floating_nodes_dropped, sol.iterations,
+  report(sol.resistance, built.conducting_contacts, sol.floating_nodes_dropped, sol.iterations,
          sol.relative_residual);
 
-  // 5. Per-atom potential: mean over the particle's contact nodes (0 without a contact).
+  // Per-atom potential: mean over the particle's contact nodes (0 without a contact).
+  const auto &spots = built.spots;
   for (int i = 0; i < atom->nlocal; ++i) {
     vector_atom[i] = 0.0;
     if (!(atom->mask[i] & groupbit)) continue;
@@ -353,8 +359,14 @@ void ComputeNetworkResistance::build_and_solve()
     for (; lo != spots.end() && lo->tag == tag; ++lo, ++n) sum += net.potential(lo->spot.node);
     vector_atom[i] = n ? sum / n : 0.0;
   }
+  if (comm->me == 0) write_exports(std::move(built.drawn));
+}
 
-  if (!netlist_.empty() && comm->me == 0) {
+// The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only).
+void ComputeNetworkResistance::write_exports(std::vector<ohmdem::VtkEdge> drawn)
+{
+  const ohmdem::ConductionNetwork &net = *network_;
+  if (!netlist_.empty()) {
     std::ofstream os(netlist_);
     if (!os) {
       const std::string msg = "compute network/resistance: keyword 'netlist': cannot open '" +
@@ -363,7 +375,7 @@ void ComputeNetworkResistance::build_and_solve()
     }
     ohmdem::write_spice_netlist(os, net, current_);
   }
-  if (!vtk_.empty() && comm->me == 0) {
+  if (!vtk_.empty()) {
     std::ofstream os(vtk_);
     if (!os) {
       const std::string msg = "compute network/resistance: keyword 'vtk': cannot open '" + vtk_ +
@@ -374,7 +386,7 @@ void ComputeNetworkResistance::build_and_solve()
     // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
     ohmdem::VtkOptions opt;
     opt.edge_scalar_names = {"area_a", "area_b", "holm"};
-    ohmdem::write_vtk_network(os, net, std::move(built.drawn), opt);
+    ohmdem::write_vtk_network(os, net, std::move(drawn), opt);
   }
 }
 

@@ -20,6 +20,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include "common/ordered_reduce.h"
 #include "compute.h"
 #include "electric/conduction_model.h"
+#include "electric/network_builder.h"
 
 namespace ohmdem {
 class ConductionNetwork;
@@ -52,6 +53,9 @@ class ComputeNetworkResistance : public Compute {
   void evaluate();  // builds and solves the network once per time step
   bool evaluate_between_races();  // closed form when every ball joins the two races
   void build_and_solve();         // the general network
+  void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
+                    std::vector<ohmdem::ContactRecord> &contacts);
+  void write_exports(std::vector<ohmdem::VtkEdge> drawn);
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
 
   double current_ = 0;
