@@ -3,7 +3,7 @@
 // Contact areas go as fn^(2/3), so the closed-form bearing resistance takes one cube root per
 // ball and step. glibc's cbrt is an out-of-line call of ~130 instructions with a division;
 // this inline one is ~30 and lets the balls' roots overlap in the pipeline. Accuracy: within
-// 3 ulp of std::cbrt (tests/hertz/test_fast_cbrt.cpp checks 1e6 arguments over 600 decades);
+// 3 ulp of std::cbrt (tests/contact/test_fast_cbrt.cpp checks 1e6 arguments over 600 decades);
 // zero, negative, subnormal, huge, infinite and NaN arguments go to std::cbrt.
 #ifndef OHMDEM_FAST_CBRT_H
 #define OHMDEM_FAST_CBRT_H
