@@ -47,8 +47,9 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
   bool reapply_restored_forces(int fx, int fy, int tz);
 
   class FixPropertyAtom *state_ = nullptr;  // per-ball contact state
-  bool restored_ = false;                    // state was just read from a restart file
+  bool restored_ = false;                   // state was just read from a restart file
   std::vector<const ohmdem::BearingDefect *> defects_;
+  ohmdem::BearingSurface defect_surface_;  // this step's surface, set only if there are defects
 
  private:
   std::string state_name_;

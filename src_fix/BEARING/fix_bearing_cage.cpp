@@ -13,15 +13,15 @@
 #include <vector>
 
 #include "atom.h"
+#include "comm.h"
 #include "common/constants.h"
 #include "contact/cage_contact.h"
-#include "comm.h"
 #include "error.h"
 #include "fix_property_atom.h"
-#include "support/material_table.h"
 #include "modify.h"
 #include "support/args.h"
 #include "support/global_restart.h"
+#include "support/material_table.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -116,8 +116,8 @@ void FixBearingCage::build_model()
   const int tg = g.tmax;
   const ohmdem::MaterialTable mat(lmp, style, true, false);
   try {
-    model_ = std::make_unique<ohmdem::CageContactModel>(
-        rg, clearance_, mat.E_eff(tg, cage_type_), mat.restitution(tg, cage_type_));
+    model_ = std::make_unique<ohmdem::CageContactModel>(rg, clearance_, mat.E_eff(tg, cage_type_),
+                                                        mat.restitution(tg, cage_type_));
   } catch (const std::exception &ex) {
     error->fix_error(FLERR, this, ex.what());
   }
@@ -189,7 +189,7 @@ void FixBearingCage::post_force(int)
   const double cos_cage = std::cos(angle_ + angle0_), sin_cage = std::sin(angle_ + angle0_);
   mine_.clear();
   int masked = 0;
-  const ohmdem::BearingSurface surf = surface();  // what the defects need, once per step
+  if (!defects_.empty()) defect_surface_ = surface();  // what the defects need, once per step
   for (int i = 0; i < atom->nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -209,7 +209,7 @@ void FixBearingCage::post_force(int)
     rec.tag = atom->tag[i];
     rec.v = {0.0, 0.0, orbit};
     if (!c.touching) continue;
-    if (!defects_.empty() && wall_broken(surf, k, c.offset > 0.0 ? 1 : -1)) {
+    if (!defects_.empty() && wall_broken(defect_surface_, k, c.offset > 0.0 ? 1 : -1)) {
       ++masked;  // a broken bar: nothing to push on
       continue;
     }
@@ -237,8 +237,7 @@ void FixBearingCage::post_force(int)
   }
 }
 
-bool FixBearingCage::wall_broken(const ohmdem::BearingSurface &surface, int pocket,
-                                 int side) const
+bool FixBearingCage::wall_broken(const ohmdem::BearingSurface &surface, int pocket, int side) const
 {
   for (const auto *d : defects_)
     if (d->breaks_wall(surface, pocket, side)) return true;
@@ -261,23 +260,32 @@ ohmdem::BearingSurface FixBearingCage::surface() const
 double FixBearingCage::compute_vector(int n)
 {
   switch (n) {
-    case 0: return angle_;
-    case 1: return omega_;
-    case 2: return ncontacts_;
-    case 3: return sum_fn_;
-    case 4: return max_fn_;
-    case 5: return torque_;
-    case 6: return ball_orbit_;
-    case 7: return nmasked_;
-    default: return 0.0;
+    case 0:
+      return angle_;
+    case 1:
+      return omega_;
+    case 2:
+      return ncontacts_;
+    case 3:
+      return sum_fn_;
+    case 4:
+      return max_fn_;
+    case 5:
+      return torque_;
+    case 6:
+      return ball_orbit_;
+    case 7:
+      return nmasked_;
+    default:
+      return 0.0;
   }
 }
 
 void FixBearingCage::write_restart(FILE *fp)
 {
-  const double list[kRestartSize] = {angle_, omega_, static_cast<double>(npockets_), torque_,
-                                     sum_fn_, max_fn_, static_cast<double>(ncontacts_),
-                                     ball_orbit_};
+  const double list[kRestartSize] = {
+      angle_,  omega_,  static_cast<double>(npockets_),  torque_,
+      sum_fn_, max_fn_, static_cast<double>(ncontacts_), ball_orbit_};
   ohmdem::write_global_restart(comm->me, fp, list);
 }
 

@@ -291,7 +291,7 @@ void FixBearingRace::post_force(int)
 
   mine_.clear();
   int masked = 0;
-  const ohmdem::BearingSurface surf = surface();  // what the defects need, once per step
+  if (!defects_.empty()) defect_surface_ = surface();  // what the defects need, once per step
   for (int i = 0; i < nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
@@ -299,7 +299,7 @@ void FixBearingRace::post_force(int)
     s.recess = 0.0;
     if (!defects_.empty()) {
       bool in_zone = false;
-      s.recess = defect_recess(i, surf, in_zone);
+      s.recess = defect_recess(i, defect_surface_, in_zone);
       out[MASKED] = in_zone ? 1.0 : 0.0;
       masked += in_zone;
     }

@@ -15,21 +15,21 @@
 #include <string>
 #include <vector>
 
+#include "BEARING/fix_bearing_race.h"
+#include "ELECTRIC/contact_set.h"
 #include "atom.h"
 #include "comm.h"
 #include "common/constants.h"
+#include "common/ordered_reduce.h"
 #include "electric/conductance_laws.h"
 #include "electric/network_builder.h"
-#include "network/conduction_network.h"
-#include "ELECTRIC/contact_set.h"
 #include "error.h"
-#include "BEARING/fix_bearing_race.h"
 #include "fix_property_global.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "network/conduction_network.h"
 #include "network/network_export.h"
-#include "common/ordered_reduce.h"
 #include "support/args.h"
 #include "update.h"
 
@@ -68,9 +68,12 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
   bool have_current = false, have_high = false, have_low = false;
   auto electrode = [&](const std::string &kw, Electrode &e) {
     const std::string kind = a.word(kw, "race FIX-ID or group GROUP-ID");
-    if (kind == "race") e.kind = ElectrodeKind::Race;
-    else if (kind == "group") e.kind = ElectrodeKind::Group;
-    else a.fail(kw, "race FIX-ID or group GROUP-ID", kind.c_str());
+    if (kind == "race")
+      e.kind = ElectrodeKind::Race;
+    else if (kind == "group")
+      e.kind = ElectrodeKind::Group;
+    else
+      a.fail(kw, "race FIX-ID or group GROUP-ID", kind.c_str());
     e.name = a.word(kw, "race FIX-ID or group GROUP-ID");
   };
   while (!a.done()) {
@@ -86,9 +89,12 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       have_low = true;
     } else if (kw == "area") {
       const std::string m = a.word(kw, "greenwood or exact");
-      if (m == "greenwood") area_exact_ = false;
-      else if (m == "exact") area_exact_ = true;
-      else a.fail(kw, "greenwood or exact", m.c_str());
+      if (m == "greenwood")
+        area_exact_ = false;
+      else if (m == "exact")
+        area_exact_ = true;
+      else
+        a.fail(kw, "greenwood or exact", m.c_str());
     } else if (kw == "model") {
       const std::string names = ohmdem::model_names();
       const std::string m = a.word(kw, names.c_str());
@@ -96,11 +102,14 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else if (kw == "solver") {
       const std::string m = a.word(kw, "auto, direct, cg or amg");
       multigrid_ = m == "amg";
-      if (m == "auto") solver_ = static_cast<int>(ohmdem::SolverKind::Auto);
-      else if (m == "direct") solver_ = static_cast<int>(ohmdem::SolverKind::Direct);
+      if (m == "auto")
+        solver_ = static_cast<int>(ohmdem::SolverKind::Auto);
+      else if (m == "direct")
+        solver_ = static_cast<int>(ohmdem::SolverKind::Direct);
       else if (m == "cg" || m == "amg")
         solver_ = static_cast<int>(ohmdem::SolverKind::ConjugateGradient);
-      else a.fail(kw, "auto, direct, cg or amg", m.c_str());
+      else
+        a.fail(kw, "auto, direct, cg or amg", m.c_str());
     } else if (kw == "pair") {
       pair_mode_ = a.yes_no(kw) ? 1 : 0;
     } else if (kw == "netlist") {
@@ -114,7 +123,8 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
-  if (!have_high) a.fail("high", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
+  if (!have_high)
+    a.fail("high", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
   if (!have_low) a.fail("low", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
   if (high_.kind == low_.kind && high_.name == low_.name)
     a.fail("low", "an electrode other than the high one", low_.name.c_str());
@@ -164,7 +174,8 @@ void ComputeNetworkResistance::init()
   }
   ohmdem::SolverOptions opt = network_->options();
   opt.kind = static_cast<ohmdem::SolverKind>(solver_);
-  opt.preconditioner = multigrid_ ? ohmdem::Preconditioner::Multigrid : ohmdem::Preconditioner::Diagonal;
+  opt.preconditioner =
+      multigrid_ ? ohmdem::Preconditioner::Multigrid : ohmdem::Preconditioner::Diagonal;
   network_->set_options(opt);
   evaluated_step_ = -1;
 }
@@ -181,8 +192,8 @@ void ComputeNetworkResistance::evaluate()
   if (!evaluate_between_races()) build_and_solve();
 }
 
-void ComputeNetworkResistance::report(double resistance, int contacts, int dropped,
-                                      int iterations, double residual)
+void ComputeNetworkResistance::report(double resistance, int contacts, int dropped, int iterations,
+                                      double residual)
 {
   result_[0] = resistance;
   result_[1] = current_;
@@ -192,8 +203,9 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
   result_[5] = iterations;
   result_[6] = residual;
   if (!std::isfinite(resistance) && !warned_no_path_ && comm->me == 0) {
-    error->warning(FLERR, "compute network/resistance: no conducting path between the "
-                          "electrodes: R = inf (said once)");
+    error->warning(FLERR,
+                   "compute network/resistance: no conducting path between the "
+                   "electrodes: R = inf (said once)");
     warned_no_path_ = true;
   }
 }
@@ -221,7 +233,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
       if (k != high_.index && k != low_.index) other_races_.push_back(races[k]);
     geometry_ready_ = true;
   }
-  const ohmdem::BallBetweenRaces &model = between_races_;
+  const ohmdem::BallBetweenRaces::Kernel model = between_races_.kernel();
   const double inf = std::numeric_limits<double>::infinity();
 
   // Local copies of LIGGGHTS' arrays: the loop stays in registers (this runs every step).
@@ -257,8 +269,7 @@ bool ComputeNetworkResistance::evaluate_between_races()
     }
     const double u[3] = {ch.point_x() - x[i][0], ch.point_y() - x[i][1], 0.0};
     const double w[3] = {cl.point_x() - x[i][0], cl.point_y() - x[i][1], 0.0};
-    const double conductance =
-        model.conductance(type[i], gamma, radius[i], ch.fn(), cl.fn(), u, w);
+    const double conductance = model.conductance(type[i], gamma, radius[i], ch.fn(), cl.fn(), u, w);
     phi[i] = 0.5;
     out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
   }
@@ -295,13 +306,12 @@ void ComputeNetworkResistance::gather_scene(std::vector<ohmdem::ParticleRecord> 
     const auto member = (m & high_bit)  ? ohmdem::Membership::High
                         : (m & low_bit) ? ohmdem::Membership::Low
                                         : ohmdem::Membership::None;
-    my_particles.push_back(
-        ohmdem::ParticleRecord{static_cast<std::int64_t>(atom->tag[i]),
-                               {atom->x[i][0], atom->x[i][1], atom->x[i][2]},
-                               atom->radius[i],
-                               atom->type[i],
-                               member}
-            .pack());
+    my_particles.push_back(ohmdem::ParticleRecord{static_cast<std::int64_t>(atom->tag[i]),
+                                                  {atom->x[i][0], atom->x[i][1], atom->x[i][2]},
+                                                  atom->radius[i],
+                                                  atom->type[i],
+                                                  member}
+                               .pack());
   }
   std::vector<ohmdem::ContactRecord::Packed> my_contacts;
   for (const auto &c : local)
@@ -313,27 +323,30 @@ void ComputeNetworkResistance::gather_scene(std::vector<ohmdem::ParticleRecord> 
                                                 c.ellipse.a,
                                                 c.ellipse.b}
                               .pack());
-  particles.clear();
-  for (const auto &p : ohmdem::gather_by_tag<6>(my_particles, world))
-    particles.push_back(ohmdem::ParticleRecord::unpack(p));
-  contacts.clear();
-  for (const auto &c : ohmdem::gather_by_tag<8>(my_contacts, world))
-    contacts.push_back(ohmdem::ContactRecord::unpack(c));
+  const auto all_particles = ohmdem::gather_by_tag<6>(my_particles, world);
+  particles.resize(all_particles.size());
+  for (std::size_t k = 0; k < all_particles.size(); ++k)
+    particles[k] = ohmdem::ParticleRecord::unpack(all_particles[k]);
+  const auto all_contacts = ohmdem::gather_by_tag<8>(my_contacts, world);
+  contacts.resize(all_contacts.size());
+  for (std::size_t k = 0; k < all_contacts.size(); ++k)
+    contacts[k] = ohmdem::ContactRecord::unpack(all_contacts[k]);
 }
 
 void ComputeNetworkResistance::build_and_solve()
 {
-  std::vector<ohmdem::ParticleRecord> particles;
-  std::vector<ohmdem::ContactRecord> contacts;
-  gather_scene(particles, contacts);
-  std::vector<double> gamma_race;
+  // The scene in members: their memory is reused from step to step.
+  gather_scene(particles_, contact_records_);
+  gamma_race_.clear();
   for (const FixBearingRace *r : contacts_->races())
-    gamma_race.push_back(gamma_type_[r->race_type()]);
+    gamma_race_.push_back(gamma_type_[r->race_type()]);
 
   // The model's conductances: constrictions across contacts, the bulk law inside particles.
   ohmdem::ConductionNetwork &net = *network_;
-  const ohmdem::NetworkScene scene{&particles, &contacts, &gamma_type_, &gamma_race, !vtk_.empty()};
-  ohmdem::NetworkBuild built = ohmdem::build_network(model_, scene, net);
+  const ohmdem::NetworkScene scene{&particles_, &contact_records_, &gamma_type_, &gamma_race_,
+                                   !vtk_.empty()};
+  ohmdem::NetworkBuild &built = built_;
+  ohmdem::build_network(model_, scene, net, built);
 
   // Solve: current into `high`, `low` at 0 V.
   auto electrode_node = [&](const Electrode &e, ohmdem::Membership member) {
@@ -359,11 +372,11 @@ void ComputeNetworkResistance::build_and_solve()
     for (; lo != spots.end() && lo->tag == tag; ++lo, ++n) sum += net.potential(lo->spot.node);
     vector_atom[i] = n ? sum / n : 0.0;
   }
-  if (comm->me == 0) write_exports(std::move(built.drawn));
+  if (comm->me == 0) write_exports(built.drawn);
 }
 
 // The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only).
-void ComputeNetworkResistance::write_exports(std::vector<ohmdem::VtkEdge> drawn)
+void ComputeNetworkResistance::write_exports(const std::vector<ohmdem::VtkEdge> &drawn)
 {
   const ohmdem::ConductionNetwork &net = *network_;
   if (!netlist_.empty()) {
@@ -378,15 +391,15 @@ void ComputeNetworkResistance::write_exports(std::vector<ohmdem::VtkEdge> drawn)
   if (!vtk_.empty()) {
     std::ofstream os(vtk_);
     if (!os) {
-      const std::string msg = "compute network/resistance: keyword 'vtk': cannot open '" + vtk_ +
-                              "' for writing";
+      const std::string msg =
+          "compute network/resistance: keyword 'vtk': cannot open '" + vtk_ + "' for writing";
       error->one(FLERR, msg.c_str());
     }
     // Cells: eq. 1 conductances inside particles (drawn between the two contact points) and
     // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
     ohmdem::VtkOptions opt;
     opt.edge_scalar_names = {"area_a", "area_b", "holm"};
-    ohmdem::write_vtk_network(os, net, std::move(drawn), opt);
+    ohmdem::write_vtk_network(os, net, drawn, opt);
   }
 }
 

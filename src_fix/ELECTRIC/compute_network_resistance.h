@@ -5,7 +5,7 @@
 
 #ifdef COMPUTE_CLASS
 
-ComputeStyle(network/resistance,ComputeNetworkResistance)
+ComputeStyle(network / resistance, ComputeNetworkResistance)
 
 #else
 
@@ -14,7 +14,6 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 
 #include <memory>
 #include <string>
-
 #include <vector>
 
 #include "common/ordered_reduce.h"
@@ -50,19 +49,19 @@ class ComputeNetworkResistance : public Compute {
   };
 
   void parse(int narg, char **arg);
-  void evaluate();  // builds and solves the network once per time step
+  void evaluate();                // builds and solves the network once per time step
   bool evaluate_between_races();  // closed form when every ball joins the two races
   void build_and_solve();         // the general network
   void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
                     std::vector<ohmdem::ContactRecord> &contacts);
-  void write_exports(std::vector<ohmdem::VtkEdge> drawn);
+  void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
 
   double current_ = 0;
   Electrode high_, low_;
   ohmdem::ConductionModel model_;  // from the keyword `model` (conduction_model.h's table)
-  int solver_ = 0;  // ohmdem::SolverKind
-  bool multigrid_ = false;  // solver amg: CG preconditioned by algebraic multigrid
+  int solver_ = 0;                 // ohmdem::SolverKind
+  bool multigrid_ = false;         // solver amg: CG preconditioned by algebraic multigrid
   bool area_exact_ = false;
   int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
   std::string netlist_, vtk_;
@@ -75,7 +74,7 @@ class ComputeNetworkResistance : public Compute {
   double result_[7] = {0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
   // closed form, per local ball: conductance, 1 if it joins the races, 1 if a dead end
-  std::vector<ohmdem::TaggedValues<3>> balls_;
+  std::vector<ohmdem::TaggedValues<3> > balls_;
   ohmdem::OrderedGather<3> balls_gather_;
   // Closed form: the model between the two electrode races, set at the first evaluation of
   // a run (the races' geometry is known then).
@@ -83,6 +82,11 @@ class ComputeNetworkResistance : public Compute {
   ohmdem::BallBetweenRaces between_races_;
   std::vector<const FixBearingRace *> other_races_;  // neither electrode: any contact -> network
   std::vector<double> gamma_type_;  // conductivity of each atom type (S/m), 1-based
+  // General network: the scene and the build, members so that their memory is reused.
+  std::vector<ohmdem::ParticleRecord> particles_;
+  std::vector<ohmdem::ContactRecord> contact_records_;
+  std::vector<double> gamma_race_;
+  ohmdem::NetworkBuild built_;
   int nmax_ = 0;
 };
 

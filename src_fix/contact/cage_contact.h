@@ -2,7 +2,7 @@
 // bearing axis. A pocket is a slot bounded by two flat walls parallel to the radial line
 // through its centre, at +-(ball radius + clearance) from that line; the cage does not hold
 // the balls radially (the races do). Contact: Hertz sphere on flat with the ball and cage
-// materials, restitution damping as in race_contact.h, frictionless (documented in
+// materials, restitution damping (damping.h) as on the races, frictionless (documented in
 // doc/fix_bearing_cage.md). The cage is an electrical insulator: these contacts never enter
 // the resistance network.
 #ifndef OHMDEM_CAGE_CONTACT_H
@@ -11,8 +11,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/damping.h"
 #include "contact/hertz_contact.h"
-#include "contact/race_contact.h"
+#include "contact/vec2.h"
 
 namespace ohmdem {
 
@@ -41,7 +42,7 @@ struct CageContactResult {
   double torque_on_cage = 0;  // about z, about the cage axis (N m)
 };
 
-// Inline: it runs for every ball at every step (see race_contact.h).
+// Inline: it runs for every ball at every step.
 inline CageContactResult cage_contact(const CageContactModel &m, const CageContactState &s)
 {
   CageContactResult r;
@@ -65,7 +66,7 @@ inline CageContactResult cage_contact(const CageContactModel &m, const CageConta
 
   const double q = m.hertz.force(delta);
   const double sn = m.hertz.normal_stiffness(delta);
-  const double gamma_n = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(sn * s.ball_mass);
+  const double gamma_n = damping_coefficient(m.beta, sn, s.ball_mass);
   r.fn = std::max(0.0, q + gamma_n * delta_rate);
   r.force_on_ball = {-side * r.fn * t.x, -side * r.fn * t.y};
   r.torque_on_cage = -(px * r.force_on_ball.y - py * r.force_on_ball.x);

@@ -1,25 +1,14 @@
 #include "contact/race_contact.h"
 
 #include <cmath>
-
-#include "common/constants.h"
 #include <stdexcept>
 
 namespace ohmdem {
 
-double restitution_beta(double restitution)
-{
-  if (!(restitution > 0.0 && restitution <= 1.0))
-    throw std::invalid_argument("coefficient of restitution must be in (0, 1]");
-  const double l = std::log(restitution);
-  return l / std::sqrt(l * l + kPi * kPi);
-}
-
 static CurvatureSums race_curvatures(RaceSide side, double rb, double R, double Rg)
 {
   if (!(rb > 0.0)) throw std::invalid_argument("ball radius must be positive");
-  if (!(Rg > rb))
-    throw std::invalid_argument("groove radius must be larger than the ball radius");
+  if (!(Rg > rb)) throw std::invalid_argument("groove radius must be larger than the ball radius");
   if (side == RaceSide::Outer && !(R > rb))
     throw std::invalid_argument("outer race radius must be larger than the ball radius");
   return side == RaceSide::Inner ? ball_inner_race(rb, R, Rg) : ball_outer_race(rb, R, Rg);

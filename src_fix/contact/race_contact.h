@@ -15,19 +15,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/damping.h"
 #include "contact/hertz_contact.h"
+#include "contact/vec2.h"
 
 namespace ohmdem {
 
-struct Vec2 {
-  double x = 0;
-  double y = 0;
-};
-
 enum class RaceSide { Inner, Outer };
-
-// Damping ratio factor of LIGGGHTS' Hertz model: beta = ln(e)/sqrt(ln(e)^2 + pi^2) (<= 0).
-double restitution_beta(double restitution);
 
 struct RaceContactModel {
   RaceContactModel(RaceSide side, double ball_radius, double race_radius, double groove_radius,
@@ -57,12 +51,12 @@ struct RaceContactState {
 
 struct RaceContactResult {
   bool touching = false;
-  double delta = 0;    // approach (m)
-  double fn = 0;       // normal force magnitude (N), >= 0
-  double ft = 0;       // tangential force on the ball along t = z x n (N)
-  Vec2 normal;         // unit vector from the race centre to the ball centre
-  Vec2 point;          // contact point (middle of the overlap)
-  Vec2 force_on_ball;  // total force on the ball (N); the race gets the opposite
+  double delta = 0;           // approach (m)
+  double fn = 0;              // normal force magnitude (N), >= 0
+  double ft = 0;              // tangential force on the ball along t = z x n (N)
+  Vec2 normal;                // unit vector from the race centre to the ball centre
+  Vec2 point;                 // contact point (middle of the overlap)
+  Vec2 force_on_ball;         // total force on the ball (N); the race gets the opposite
   double torque_on_ball = 0;  // about z, about the ball centre (N m)
   double torque_on_race = 0;  // about z, about the race centre, from this ball (N m)
 };
@@ -122,12 +116,12 @@ inline RaceContactResult race_contact(const RaceContactModel &m, const RaceConta
   // Normal: exact elliptic Hertz + restitution damping (LIGGGHTS' form with S_n = dQ/ddelta).
   const double q = m.hertz.force(delta);
   const double sn = m.hertz.normal_stiffness(delta);
-  const double gamma_n = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(sn * s.ball_mass);
+  const double gamma_n = damping_coefficient(m.beta, sn, s.ball_mass);
   r.fn = std::max(0.0, q + gamma_n * delta_rate);
 
   // Tangential: Mindlin spring on the equivalent contact radius, capped by Coulomb.
   const double kt = m.kt_coef * std::sqrt(delta);  // = 8 G* c(q), see RaceContactModel
-  const double gamma_t = -2.0 * std::sqrt(5.0 / 6.0) * m.beta * std::sqrt(kt * s.ball_mass);
+  const double gamma_t = damping_coefficient(m.beta, kt, s.ball_mass);
   if (update_history) shear += vt * dt;
   double ft = -kt * shear - gamma_t * vt;
   const double cap = m.friction * r.fn;

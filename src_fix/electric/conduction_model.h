@@ -62,35 +62,64 @@ class BallBetweenRaces {
 
   bool races_conduct() const { return races_conduct_; }
 
-  // Conductance (S) of a ball of type t, conductivity gamma > 0 and radius r, with normal
-  // forces fn_hi, fn_lo > 0 on the two races and contact vectors u, w (ball centre to the
-  // contact points, in the plane: u[2] = w[2] = 0).
+  // What the per-ball evaluation reads, as a small value: copied into a local once per step,
+  // it stays in registers through the loop over the balls (members read through `this`
+  // would be reloaded after every store of the loop).
+  class Kernel {
+   public:
+    // Conductance (S) of a ball of type t, conductivity gamma > 0 and radius r, with normal
+    // forces fn_hi, fn_lo > 0 on the two races and contact vectors u, w (ball centre to the
+    // contact points, in the plane: u[2] = w[2] = 0).
+    double conductance(int t, double gamma, double r, double fn_hi, double fn_lo, const double u[3],
+                       const double w[3]) const
+    {
+      const double dot = u[0] * w[0] + u[1] * w[1];
+      const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1]));
+      const bool facing = dot <= 0.0 && norms > 0.0;
+      double conductance;
+      if (bulk_only_ && facing) {
+        // Spots facing each other (the bearing): S_hi*S_lo needs one cube root; for an obtuse
+        // angle 1 - cos(theta) >= 1 and the small-angle clamp of eq. 1 cannot apply.
+        const double p = cbrt_fast(fn_hi * fn_lo);
+        conductance = gamma * eq1_coef_ * p * p / (r * r * r * (1.0 - dot / norms));
+      } else if (races_conduct_ && constriction_ && (facing || !bulk_)) {
+        // Holm's constrictions go as 1/a ∝ fn^(-1/3): one cube root per spot.
+        const double qh = cbrt_fast(fn_hi), ql = cbrt_fast(fn_lo);
+        double resistance = holm_per_type_[2 * t] / qh + holm_per_type_[2 * t + 1] / ql;
+        if (bulk_) {
+          const double p = qh * ql;
+          resistance += r * r * r * (1.0 - dot / norms) / (gamma * eq1_coef_ * p * p);
+        }
+        conductance = 1.0 / resistance;
+      } else {
+        conductance = owner_->general(gamma, r, fn_hi, fn_lo, u, w);
+      }
+      return races_conduct_ ? conductance : 0.0;
+    }
+
+   private:
+    friend class BallBetweenRaces;
+    const BallBetweenRaces *owner_;
+    const double *holm_per_type_;
+    double eq1_coef_;
+    bool bulk_, constriction_, bulk_only_, races_conduct_;
+  };
+  Kernel kernel() const
+  {
+    Kernel k;
+    k.owner_ = this;
+    k.holm_per_type_ = holm_per_type_.data();
+    k.eq1_coef_ = eq1_coef_;
+    k.bulk_ = model_.has_bulk();
+    k.constriction_ = model_.has_constriction();
+    k.bulk_only_ = k.bulk_ && !k.constriction_;
+    k.races_conduct_ = races_conduct_;
+    return k;
+  }
   double conductance(int t, double gamma, double r, double fn_hi, double fn_lo, const double u[3],
                      const double w[3]) const
   {
-    const double dot = u[0] * w[0] + u[1] * w[1];
-    const double norms = std::sqrt((u[0] * u[0] + u[1] * u[1]) * (w[0] * w[0] + w[1] * w[1]));
-    const bool bulk = model_.has_bulk(), constriction = model_.has_constriction();
-    const bool facing = dot <= 0.0 && norms > 0.0;
-    double conductance;
-    if (bulk && !constriction && facing) {
-      // Spots facing each other (the bearing): S_hi*S_lo needs one cube root; for an obtuse
-      // angle 1 - cos(theta) >= 1 and the small-angle clamp of eq. 1 cannot apply.
-      const double p = cbrt_fast(fn_hi * fn_lo);
-      conductance = gamma * eq1_coef_ * p * p / (r * r * r * (1.0 - dot / norms));
-    } else if (races_conduct_ && constriction && (facing || !bulk)) {
-      // Holm's constrictions go as 1/a ∝ fn^(-1/3): one cube root per spot.
-      const double qh = cbrt_fast(fn_hi), ql = cbrt_fast(fn_lo);
-      double resistance = holm_per_type_[2 * t] / qh + holm_per_type_[2 * t + 1] / ql;
-      if (bulk) {
-        const double p = qh * ql;
-        resistance += r * r * r * (1.0 - dot / norms) / (gamma * eq1_coef_ * p * p);
-      }
-      conductance = 1.0 / resistance;
-    } else {
-      conductance = general(gamma, r, fn_hi, fn_lo, u, w);
-    }
-    return races_conduct_ ? conductance : 0.0;
+    return kernel().conductance(t, gamma, r, fn_hi, fn_lo, u, w);
   }
 
  private:

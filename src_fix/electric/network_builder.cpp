@@ -18,11 +18,12 @@ NodeKey particle_node(std::int64_t tag)
 
 class Builder {
  public:
-  Builder(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net)
-      : model_(model), scene_(scene), net_(net)
+  Builder(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
+          NetworkBuild &out)
+      : model_(model), scene_(scene), net_(net), out_(out)
   {
   }
-  NetworkBuild run();
+  void run();
 
  private:
   const ParticleRecord *find(std::int64_t tag) const;
@@ -33,7 +34,8 @@ class Builder {
   const ConductionModel &model_;
   const NetworkScene &scene_;
   ConductionNetwork &net_;
-  NetworkBuild out_;
+  NetworkBuild &out_;
+  std::vector<ContactSpot> mine_;  // add_bulk: the spots of one particle
 };
 
 const ParticleRecord *Builder::find(std::int64_t tag) const
@@ -104,7 +106,7 @@ void Builder::add_contact(const ContactRecord &c)
 void Builder::add_bulk()
 {
   const auto &spots = out_.spots;
-  std::vector<ContactSpot> mine;
+  std::vector<ContactSpot> &mine = mine_;
   EdgeVisitor draw;
   if (scene_.draw)
     draw = [&](const ContactSpot &x, const ContactSpot &y, double g) {
@@ -132,15 +134,17 @@ void Builder::add_bulk()
   }
 }
 
-NetworkBuild Builder::run()
+void Builder::run()
 {
   net_.clear();
+  out_.spots.clear();
+  out_.drawn.clear();
+  out_.conducting_contacts = 0;
   for (const ContactRecord &c : *scene_.contacts) add_contact(c);
   std::stable_sort(
       out_.spots.begin(), out_.spots.end(),
       [](const NetworkBuild::Spot &x, const NetworkBuild::Spot &y) { return x.tag < y.tag; });
   if (model_.has_bulk()) add_bulk();
-  return std::move(out_);
 }
 }  // namespace
 
@@ -154,10 +158,10 @@ NodeKey member_node(Membership m)
   return electrode_key(m == Membership::High ? kGroupHighId : kGroupLowId);
 }
 
-NetworkBuild build_network(const ConductionModel &model, const NetworkScene &scene,
-                           ConductionNetwork &net)
+void build_network(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
+                   NetworkBuild &out)
 {
-  return Builder(model, scene, net).run();
+  Builder(model, scene, net, out).run();
 }
 
 }  // namespace ohmdem

@@ -90,9 +90,10 @@ struct NetworkBuild {
 };
 
 // Clears `net` and adds the model's conductances: a constriction per conducting contact,
-// the bulk law inside every conducting particle that is not part of an electrode.
-NetworkBuild build_network(const ConductionModel &model, const NetworkScene &scene,
-                           ConductionNetwork &net);
+// the bulk law inside every conducting particle that is not part of an electrode. `out` is
+// cleared and filled (its memory is reused from call to call).
+void build_network(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
+                   NetworkBuild &out);
 
 }  // namespace ohmdem
 

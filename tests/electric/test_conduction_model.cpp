@@ -100,7 +100,8 @@ double network_R(const ConductionModel &m, const Scene &s)
   }
   const std::vector<double> gamma_race{s.gamma_hi, s.gamma_lo};
   ConductionNetwork net;
-  build_network(m, {&particles, &contacts, &s.gamma_type, &gamma_race, false}, net);
+  NetworkBuild built;
+  build_network(m, {&particles, &contacts, &s.gamma_type, &gamma_race, false}, net, built);
   net.set_electrodes(race_node(0), race_node(1));
   return net.solve(0.1).resistance;
 }
