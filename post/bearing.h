@@ -1,25 +1,47 @@
-// Rolling-bearing geometry and its kinematic (defect) frequencies, Harris' formulas for a
-// rotating inner ring and a fixed outer ring.
+// Rolling-bearing geometry, the bearing catalog it comes from, and the kinematic (defect)
+// frequencies (Harris' formulas for a rotating inner ring and a fixed outer ring).
 #ifndef OHMDEM_POST_BEARING_H
 #define OHMDEM_POST_BEARING_H
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ohmdem::post {
 
 struct BearingGeometry {
-  std::string name;              // "6208", "6205" or "custom"
+  std::string name;              // catalog name or "custom"
   int nb = 0;                    // number of balls
   double db = 0;                 // ball diameter (m)
   double dp = 0;                 // pitch diameter (m)
   double contact_angle_deg = 0;  // contact angle beta (degrees)
 };
 
-// Presets: SKF 6208 (the paper: Nb 13, Db 12.6 mm, D = (73.2 + 48)/2 = 60.6 mm) and SKF 6205
-// (CWRU drive end: Nb 9, d 7.940 mm, D 39.04 mm); both with contact angle 0.
+// One file of the bearing catalog (inputs/bearings, doc/bearing_catalog.md): LIGGGHTS lines
+// "variable NAME index VALUE  # source", read by the decks (include) and by us. Required:
+// Nb, Db, Dext, Dinn, Rcext, Rcinn; the pitch diameter is (Dext + Dinn)/2, as in the deck.
+struct CatalogEntry {
+  std::string name, path;
+  int nb = 0;
+  double db = 0, dext = 0, dinn = 0, rc_ext = 0, rc_inn = 0;  // m
+  std::vector<std::pair<std::string, std::string>> variables;  // every line, in file order
+
+  BearingGeometry geometry() const;
+};
+
+// The catalog folder: $OHMDEM_CATALOG if set and not empty, else the source tree's
+// inputs/bearings (compile-time default).
+std::string default_catalog_dir();
+// Entries of DIR: regular files whose name has no dot, sorted. Throws Error if DIR is no folder.
+std::vector<std::string> catalog_names(const std::string &dir);
+// Parses one catalog file; any other line form, a missing or non-positive value is an Error
+// naming the file and line.
+CatalogEntry read_catalog_file(const std::string &path, const std::string &name);
+// The entry NAME of DIR; an unknown name is an Error listing the known names.
+CatalogEntry catalog_entry(const std::string &dir, const std::string &name);
+// Geometry of NAME in the default catalog.
 BearingGeometry bearing_preset(const std::string &name);
-std::vector<std::string> bearing_preset_names();
+
 // Throws Error naming the offending quantity.
 void validate(const BearingGeometry &g);
 

@@ -57,6 +57,7 @@ std::string ColumnTable::column_list() const
 void ColumnTable::init_columns(std::size_t n)
 {
   columns.assign(n, {});
+  stored.assign(n, true);
   first_text.assign(n, "");
   first_text_line.assign(n, 0);
   text.assign(n, {});
@@ -78,9 +79,16 @@ double ColumnTable::resolution(std::size_t column) const
   return print_resolution(max_abs.at(column), std::max(digits.at(column), 6));
 }
 
+const std::vector<double> &ColumnTable::column(std::size_t c) const
+{
+  if (c >= stored.size() || !stored[c])
+    throw Error("internal: column " + std::to_string(c + 1) + " of " + source + " not stored");
+  return columns[c];
+}
+
 void ColumnTable::require_finite(std::size_t column) const
 {
-  const auto &v = columns.at(column);
+  const auto &v = this->column(column);
   if (column < first_text.size() && !first_text[column].empty())
     throw Error(source + ":" + std::to_string(first_text_line[column]) + ": column " +
                 names[column] + " is not numeric ('" + first_text[column] + "')");

@@ -8,16 +8,19 @@
 #include <string_view>
 #include <vector>
 
+#include "row_lines.h"
+
 namespace ohmdem::post {
 
 struct ColumnTable {
   std::string source;              // file name, for messages
   std::vector<std::string> names;  // from the header, or "1", "2", ... without one
   bool has_header = false;
-  std::vector<std::vector<double>> columns;  // columns[c][row]
+  std::vector<std::vector<double>> columns;  // columns[c][row]; empty if !stored[c]
+  std::vector<bool> stored;                  // false: the reader was asked not to keep it
   std::vector<int> digits;                   // most significant digits printed, per column
   std::vector<double> max_abs;               // largest finite magnitude, per column
-  std::vector<std::size_t> line_of_row;      // 1-based source line of each row
+  RowLines line_of_row;                      // 1-based source line of each row
   std::vector<std::string> notes;            // comment lines and reader remarks
   // CSV files may hold text cells (stored as NaN): the first one of each column, and its line
   std::vector<std::string> first_text;
@@ -42,8 +45,10 @@ struct ColumnTable {
   void note_token(std::size_t column, std::string_view token, double value);
   void init_columns(std::size_t n);
 
-  // Throws Error with the source line if the column holds NaN or Inf.
+  // Throws Error with the source line if the column holds NaN or Inf (or is not stored).
   void require_finite(std::size_t column) const;
+  // Throws Error (internal) if the column was not kept by the reader.
+  const std::vector<double> &column(std::size_t c) const;
 
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 };

@@ -163,6 +163,25 @@ FamilyScore family(const Analysed &a, const char *defect, const char *label, dou
   return fs;
 }
 
+// The record's families against a healthy baseline analysed the same way: each family is
+// credited only with how far its lines stand above the baseline's spectrum at the same
+// frequencies (a line the baseline has as strongly adds nothing).
+void relative_to_baseline(std::vector<FamilyScore> &record, const Analysed &base)
+{
+  for (FamilyScore &f : record) {
+    double sum = 0;
+    for (const Evidence &e : f.evidence) {
+      const std::size_t k = best_near(base, e.frequency_hz, 2.0);
+      const double b = k == static_cast<std::size_t>(-1) ? 0.0 : amplitude_of(base.s, k);
+      const double ratio_db = 20 * std::log10(std::max(e.amplitude, 1e-300) / std::max(b, 1e-300));
+      sum += std::clamp(ratio_db, 0.0, kProminenceCap - kProminenceLow);
+    }
+    f.baseline_excess = f.evidence.empty() ? 0.0 : sum / f.evidence.size();
+    f.margin = std::min(f.margin, f.baseline_excess);
+    f.score = std::clamp(f.margin / kMarginFull, 0.0, 1.0);
+  }
+}
+
 std::vector<FamilyScore> families(const Analysed &a, const DefectFrequencies &k,
                                   const DiagnoseOptions &opt)
 {
@@ -191,7 +210,7 @@ AveragedPulse best_synchronous(const std::vector<double> &x, double rate, double
 SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeometry &g)
 {
   SizeEstimate e;
-  if (d.defect == "none" || d.defect == "cage") {
+  if (d.defect != "inner" && d.defect != "outer" && d.defect != "ball") {
     e.method = "not applicable";
     return e;
   }
@@ -263,16 +282,45 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // envelope band: given, or the kurtogram's best band wide enough for the combs
   d.band = opt.band;
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
+  std::size_t bands_searched = 1;
   if (!(d.band.hi > d.band.lo)) {
     const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
+    bands_searched = kg.cells.size();
+    d.band_kurtosis_threshold = kg.threshold;
   }
-  const std::vector<double> env = envelope(x, s.rate, d.band);
-  const Analysed es = analyse("envelope", env, s.rate);
+
+  // stage 1: detection, on the record and the band the identification uses
+  DetectOptions dopt;
+  dopt.false_alarm = opt.false_alarm;
+  dopt.band = d.band;
+  dopt.bands_searched = bands_searched;
+  std::vector<double> base;
+  if (opt.baseline) {
+    if (std::fabs(opt.baseline->rate / s.rate - 1) > 1e-9)
+      throw Error("--baseline: sampling rate " + format_number(opt.baseline->rate, 10) +
+                  " Hz differs from the record's " + format_number(s.rate, 10) + " Hz");
+    base = opt.baseline->x;
+    detrend(base.data(), base.size(), Detrend::Mean);
+  }
+  d.detection = detect(x, s.rate, dopt, opt.baseline ? &base : nullptr);
+
+  // stage 2: identification; the envelope (a temporary) is freed once its spectrum is
+  // analysed: lower peak memory
+  const Analysed es = analyse("envelope", envelope(x, s.rate, d.band), s.rate);
   const Analysed rs = analyse("spectrum", x, s.rate);
   auto fe = families(es, k, opt), fr = families(rs, k, opt);
+  if (opt.baseline) {
+    // Lines a healthy bearing has too (the ball-pass comb of a radially loaded bearing, whose
+    // stiffness varies as the balls pass through the load zone) identify nothing: with a
+    // baseline, a family is credited only with what its lines add to the baseline's.
+    const Analysed bes = analyse("envelope", envelope(base, s.rate, d.band), s.rate);
+    const Analysed brs = analyse("spectrum", base, s.rate);
+    relative_to_baseline(fe, bes);
+    relative_to_baseline(fr, brs);
+  }
   for (std::size_t i = 0; i < fe.size(); ++i)
     d.families.push_back(fe[i].margin >= fr[i].margin ? fe[i] : fr[i]);
 
@@ -290,7 +338,9 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.evidence = best->evidence;
   } else {
     d.score = best->score;  // the best (insufficient) family score
+    if (d.detection.fired) d.defect = "unidentified";
   }
+  d.detected = d.defect != "none";
   if (opt.estimate_size) d.size = estimate_size(s, d, opt.geometry);
   return d;
 }

@@ -1,13 +1,16 @@
-// Defect diagnosis: peaks of the spectrum and of the envelope spectrum matched against the
+// Defect diagnosis in two stages: detection (is the record unlike a healthy one: detect.h), then
+// identification: peaks of the spectrum and of the envelope spectrum matched against the
 // bearing's defect families (harmonic combs with shaft/cage sidebands, a tolerance for slip),
 // the most likely defect with a score and its evidence, and the defect size from pulse widths.
 #ifndef OHMDEM_POST_DIAGNOSE_H
 #define OHMDEM_POST_DIAGNOSE_H
 
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "bearing.h"
+#include "detect.h"
 #include "envelope.h"
 #include "sampled_signal.h"
 
@@ -22,6 +25,8 @@ struct DiagnoseOptions {
   Band band;                // envelope band; lo = hi = 0: chosen by the kurtogram
   int kurtogram_levels = 7;
   bool estimate_size = true;
+  double false_alarm = 1e-3;       // per detection test
+  const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
 };
 
 struct Evidence {
@@ -42,7 +47,10 @@ struct FamilyScore {
   double comb = 0;          // mean prominence credit of the harmonics (dB over 6 dB, capped
                             // at 34) + a quarter of the sidebands' mean credit
   double chance = 0;        // upper quartile of the same comb at decoy fundamentals (dB)
-  double margin = 0;        // comb - chance (dB)
+  double margin = 0;        // comb - chance (dB); with a baseline, at most baseline_excess
+  // With a baseline: the mean over the evidence lines of how far (dB, 0..34) each stands
+  // above the baseline's spectrum at the same frequency; NaN without a baseline.
+  double baseline_excess = std::numeric_limits<double>::quiet_NaN();
   std::string spectrum;     // which spectrum gave the score
   std::vector<Evidence> evidence;
 };
@@ -57,7 +65,11 @@ struct SizeEstimate {
 };
 
 struct Diagnosis {
-  std::string defect = "none";  // none, inner, outer, ball, cage
+  // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
+  // detection stage fired (a fault of unknown type); else "none"
+  std::string defect = "none";
+  bool detected = false;  // a family identified or a detection test fired
+  Detection detection;
   double score = 0;
   double frequency_hz = 0;  // matched fundamental of the reported family (0 for none)
   std::string label;        // what frequency_hz is: BPFI, BPFO, 2BSF, BSF or FTF
@@ -66,6 +78,10 @@ struct Diagnosis {
   DefectFrequencies kinematics;
   Band band;                 // envelope band used
   double band_kurtosis = 0;  // spectral kurtosis of that band (kurtogram), NaN if given
+  // Gaussian-noise level of the kurtogram's best band at alpha = 0.01 over the bands searched
+  // (Kurtogram::threshold), NaN if the band was given
+  double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
+  bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
   SizeEstimate size;
 };
 

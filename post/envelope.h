@@ -21,20 +21,39 @@ std::vector<double> envelope(const std::vector<double> &x, double rate, Band ban
 struct KurtogramCell {
   int bands = 0;  // number of equal bands the level splits [0, fs/2] into
   double lo = 0, hi = 0;
-  double kurtosis = 0;  // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
+  double kurtosis = 0;      // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
+  std::size_t samples = 0;  // M, samples of the complex envelope (= FFT bins in the band)
 };
 
 struct Kurtogram {
   std::vector<KurtogramCell> cells;  // every band of every level, by level then frequency
   KurtogramCell best;                // largest spectral kurtosis
+  // Significance of the best band (issue 17): its SK exceeds the level a Gaussian record
+  // reaches with probability alpha / cells.size() in that band (Bonferroni over the bands
+  // searched), so a noise record's best band is called significant with probability <= alpha.
+  double alpha = 0.01;
+  double threshold = 0;      // sk_threshold(best.samples, alpha / cells.size())
+  bool significant = false;  // best.kurtosis > threshold
 };
+
+// Upper alpha-quantile of the spectral kurtosis estimate M sum|c|^4 / (sum|c|^2)^2 - 2 of M
+// independent circular complex Gaussian samples (white Gaussian noise in the band). Then
+// |c|^2 / sum|c|^2 are uniform spacings, so SK + 2 = M G with G Greenwood's statistic, whose
+// first three moments are exact (Dirichlet moments): E G = 2/(M+1),
+// E G^2 = 4 (M+5) / ((M+1)(M+2)(M+3)),
+// E G^3 = (720 + 144 (M-1) + 8 (M-1)(M-2)) / ((M+1)...(M+5)); sd(SK) -> 2/sqrt(M) (Antoni).
+// The quantile is the larger of the Pearson type III (Wilson-Hilferty, three moments) and the
+// Cornish-Fisher (four moments) ones: the skewness matters (1.1 at M = 64) and the normal
+// 2/sqrt(M) z_alpha under-estimates the tail. Checked against Monte Carlo (doc/ohmdem-post.md):
+// the exceedance rate is 0.2 to 1.2 alpha for M >= 16, alpha in [2e-5, 0.05].
+double sk_threshold(std::size_t m, double alpha);
 
 // Levels split [0, fs/2] into 1, 2, 3, 4, 6, 8, 12, ... bands (the 1/3-binary tree of Antoni's
 // fast kurtogram) with ideal FFT-domain filters; the complex envelope of a band is the inverse
 // transform of its bins shifted to baseband. Stops at 2^max_level bands or when a band would be
 // narrower than min_bandwidth (Hz). Bands entirely below fmin (Hz) are skipped.
 Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
-                    double fmin = 0);
+                    double fmin = 0, double alpha = 0.01);
 
 }  // namespace ohmdem::post
 

@@ -2,6 +2,7 @@
 
 #include <fftw3.h>
 
+#include <iterator>
 #include <map>
 #include <memory>
 #include <tuple>
@@ -31,6 +32,8 @@ enum class Kind { R2C, C2R, C2C_FORWARD, C2C_BACKWARD };
 // only run through the new-array functions, on arrays of the same alignment (else via a copy).
 class PlanCache {
  public:
+  static constexpr std::size_t kLargePlan = std::size_t(1) << 16;
+
   fftw_plan get(Kind kind, std::size_t n, int &alignment)
   {
     auto key = std::make_tuple(kind, n);
@@ -57,6 +60,11 @@ class PlanCache {
         alignment = fftw_alignment_of(reinterpret_cast<double *>(c));
       }
       if (!p) throw Error("FFTW could not plan a transform of size " + std::to_string(n));
+      // a plan holds twiddle tables of about its size (a transform of 1e7 points: ~70 MB):
+      // plans of long transforms are not accumulated, only the last one is kept
+      if (n > kLargePlan)
+        for (auto old = plans_.begin(); old != plans_.end();)
+          old = std::get<1>(old->first) > kLargePlan ? plans_.erase(old) : std::next(old);
       it = plans_.emplace(key, Entry{Plan(p), alignment}).first;
     }
     alignment = it->second.alignment;

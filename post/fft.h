@@ -1,6 +1,8 @@
 // FFTW behind a small interface (PIMPL: including this header does not pull in fftw3.h).
 // Plans are made once per size and kind with FFTW_ESTIMATE (deterministic) and reused through
-// FFTW's new-array execute functions. Not thread-safe (the tool is single-threaded).
+// FFTW's new-array execute functions; of the plans longer than 65536 points only the last one
+// is kept (their twiddle tables are as large as a signal). Not thread-safe (the tool is
+// single-threaded).
 #ifndef OHMDEM_POST_FFT_H
 #define OHMDEM_POST_FFT_H
 

@@ -60,6 +60,64 @@ class TempDir {
   std::vector<std::string> files_;
 };
 
+// The image is written to a temporary file beside the target and renamed onto it only once
+// complete: a failed plot leaves neither an empty nor a partial PNG (nor an older one changed).
+class PendingFile {
+ public:
+  explicit PendingFile(const std::string &target) : target_(target)
+  {
+    const auto slash = target.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : target.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    std::string tmpl = dir + "." + base + ".tmp-XXXXXX";
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    const int fd = ::mkstemp(buf.data());
+    if (fd < 0) throw Error("cannot write '" + target + "': " + std::strerror(errno));
+    ::close(fd);
+    path_ = buf.data();
+  }
+  ~PendingFile()
+  {
+    if (!path_.empty()) ::unlink(path_.c_str());
+  }
+  PendingFile(const PendingFile &) = delete;
+  PendingFile &operator=(const PendingFile &) = delete;
+  const std::string &path() const { return path_; }
+  void commit()
+  {
+    ::chmod(path_.c_str(), 0644 & ~current_umask());
+    if (::rename(path_.c_str(), target_.c_str()) != 0)
+      throw Error("cannot write '" + target_ + "': " + std::strerror(errno));
+    path_.clear();
+  }
+
+ private:
+  static mode_t current_umask()
+  {
+    const mode_t m = ::umask(0);
+    ::umask(m);
+    return m;
+  }
+  std::string target_, path_;
+};
+// The image as "x y z" rows, one blank line between x columns (gnuplot grid data).
+void write_image(const PlotImage &im, const std::string &path)
+{
+  std::ofstream out(path);
+  out.precision(9);
+  const std::size_t nx = im.x.size(), ny = im.y.size();
+  if (im.z.size() != nx * ny)
+    throw Error("plot: image of " + std::to_string(im.z.size()) + " values for a " +
+                std::to_string(nx) + " x " + std::to_string(ny) + " grid");
+  for (std::size_t ix = 0; ix < nx; ++ix) {
+    for (std::size_t iy = 0; iy < ny; ++iy)
+      out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';
+    out << '\n';
+  }
+  if (!out) throw Error("cannot write plot data to " + path);
+}
+
 }  // namespace
 
 std::string find_gnuplot()
@@ -111,13 +169,14 @@ void render_png(const Figure &fig, const std::string &png_path)
     throw Error(
         "plot needs gnuplot (Debian package gnuplot-nox); none found in PATH "
         "(or set OHMDEM_GNUPLOT)");
-  if (fig.series.empty()) throw Error("plot: nothing to draw");
+  if (fig.series.empty() && fig.image.empty()) throw Error("plot: nothing to draw");
   TempDir dir;
+  PendingFile png(png_path);
   std::ostringstream script;
   script.precision(17);
   script << "set terminal pngcairo noenhanced size " << fig.width << "," << fig.height
          << " font 'Sans,10'\n"
-         << "set output " << quote(png_path) << "\n"
+         << "set output " << quote(png.path()) << "\n"
          << "set title " << quote(fig.title) << "\n"
          << "set xlabel " << quote(fig.xlabel) << "\n"
          << "set ylabel " << quote(fig.ylabel) << "\n"
@@ -135,7 +194,17 @@ void render_png(const Figure &fig, const std::string &png_path)
            << " font 'Sans,8'\n";
     ++tag;
   }
+  if (!fig.image.empty())
+    script << "set cblabel " << quote(fig.image.zlabel) << "\nset palette rgb 33,13,10\n";
+  if (std::isfinite(fig.ymin) || std::isfinite(fig.ymax))
+    script << "set yrange [" << (std::isfinite(fig.ymin) ? std::to_string(fig.ymin) : "*") << ":"
+           << (std::isfinite(fig.ymax) ? std::to_string(fig.ymax) : "*") << "]\n";
   script << "plot ";
+  if (!fig.image.empty()) {
+    const std::string data = dir.file("image.dat");
+    write_image(fig.image, data);
+    script << quote(data) << " using 1:2:3 with image notitle" << (fig.series.empty() ? "" : ", ");
+  }
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const PlotSeries &s = fig.series[k];
     const std::string data = dir.file("series" + std::to_string(k) + ".dat");
@@ -174,8 +243,9 @@ void render_png(const Figure &fig, const std::string &png_path)
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw Error("gnuplot failed writing '" + png_path + "': " + msg.str());
   struct stat st {};
-  if (::stat(png_path.c_str(), &st) != 0 || st.st_size == 0)
+  if (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0)
     throw Error("gnuplot wrote no image to '" + png_path + "': " + msg.str());
+  png.commit();
 }
 
 }  // namespace ohmdem::post

@@ -22,16 +22,28 @@ struct PlotMarker {
   std::string color = "#c0392b";
 };
 
+// A map drawn as an image under the series (e.g. a spectrogram): z[iy * x.size() + ix] at
+// (x[ix], y[iy]) on a regular grid, colour scale labelled `zlabel`.
+struct PlotImage {
+  std::vector<double> x, y, z;
+  std::string zlabel;
+  bool empty() const { return z.empty(); }
+};
+
 struct Figure {
   std::string title, xlabel, ylabel;
   std::vector<PlotSeries> series;
   std::vector<PlotMarker> markers;  // vertical dashed lines with rotated labels
   bool logy = false;
   double xmin = NAN, xmax = NAN;
+  double ymin = NAN, ymax = NAN;  // vertical range (default: automatic)
+  PlotImage image;                // optional, drawn first
   int width = 1100, height = 600;
 };
 
-// Throws Error if gnuplot is missing or fails (its message is included).
+// Throws Error if gnuplot is missing or fails (its message is included); the image is written
+// beside png_path under a temporary name and renamed onto it on success, so a failure leaves
+// no file (and an existing png_path unchanged).
 void render_png(const Figure &fig, const std::string &png_path);
 
 // Finds the gnuplot executable; "" if none.

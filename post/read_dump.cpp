@@ -55,8 +55,10 @@ struct Accumulator {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -std::numeric_limits<double>::infinity();
   std::size_t n = 0;
+  bool nan = false;
   void add(double v)
   {
+    nan = nan || std::isnan(v);
     sum += v;
     sum2 += v * v;
     lo = std::min(lo, v);
@@ -69,6 +71,7 @@ struct Accumulator {
       throw Error(where + ": frame of step " + std::to_string(step) +
                   " has no rows to aggregate with '" + aggregate_name(kind) +
                   "'; use --aggregate sum or count");
+    if (nan && kind != Aggregate::Count) return std::numeric_limits<double>::quiet_NaN();
     switch (kind) {
       case Aggregate::Sum:
         return sum;
@@ -89,8 +92,8 @@ struct Accumulator {
 
 class DumpFile {
  public:
-  DumpFile(const std::string &path, DumpSeries &out, const std::string &column, Aggregate agg)
-      : in_(path), out_(out), column_(column), agg_(agg)
+  DumpFile(LineReader &in, DumpSeries &out, const std::string &column, Aggregate agg)
+      : in_(in), out_(out), column_(column), agg_(agg)
   {
   }
 
@@ -106,14 +109,14 @@ class DumpFile {
       frame();
       any = true;
     }
-    if (!any) throw Error(in_.path() + ": empty dump file");
+    if (!any) throw Error(in_.name() + ": empty dump file");
   }
 
  private:
   std::string need_line(const char *what)
   {
     if (!in_.next(line_))
-      throw Error(in_.path() + ": file ends inside a frame, expected " + what +
+      throw Error(in_.name() + ": file ends inside a frame, expected " + what +
                   " (truncated dump?)");
     return line_;
   }
@@ -160,12 +163,12 @@ class DumpFile {
   void header(std::string_view names)
   {
     ColumnTable h;
-    h.source = in_.path();
+    h.source = in_.name();
     for (auto w : split_blanks(names)) h.names.emplace_back(w);
     if (h.names.empty()) throw Error(in_.where() + ": dump header names no columns");
     if (out_.columns.empty()) out_.columns = h.names;
     if (column_.empty())
-      throw Error(in_.path() +
+      throw Error(in_.name() +
                   ": choose a dump column with --column NAME|N (columns: " + h.column_list() + ")");
     col_ = h.find(column_);
     ncol_ = h.names.size();
@@ -184,16 +187,14 @@ class DumpFile {
       double v = 0;
       if (!parse_double(tok_[col_], v))
         throw Error(in_.where() + ": '" + std::string(tok_[col_]) + "' is not a number");
-      if (!std::isfinite(v))
-        throw Error(in_.where() + ": non-finite value in column " + out_.column);
-      acc.add(v);
+      acc.add(v);  // a non-finite value makes the frame's value non-finite
     }
     out_.steps.push_back(static_cast<double>(step));
-    out_.values.push_back(acc.value(in_.path(), step));
+    out_.values.push_back(acc.value(in_.name(), step));
     ++out_.frames;
   }
 
-  LineReader in_;
+  LineReader &in_;
   DumpSeries &out_;
   std::string column_;
   Aggregate agg_;
@@ -205,10 +206,17 @@ class DumpFile {
 }  // namespace
 
 DumpSeries read_dump(const std::vector<std::string> &paths, const std::string &column,
-                     Aggregate aggregate)
+                     Aggregate aggregate, LineReader *first)
 {
   DumpSeries out;
-  for (const auto &p : paths) DumpFile(p, out, column, aggregate).read();
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (i == 0 && first) {
+      DumpFile(*first, out, column, aggregate).read();
+    } else {
+      LineReader in(paths[i]);
+      DumpFile(in, out, column, aggregate).read();
+    }
+  }
   // sort by step (stable: the first occurrence of a step wins), drop duplicates
   std::vector<std::size_t> order(out.steps.size());
   std::iota(order.begin(), order.end(), 0);

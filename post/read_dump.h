@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "line_reader.h"
+
 namespace ohmdem::post {
 
 enum class Aggregate { Sum, Mean, Min, Max, Rms, Count };
@@ -24,9 +26,11 @@ struct DumpSeries {
 };
 
 // `column` is a header name (id, x, c_cpl[3], ...) or a 1-based number; empty lists the
-// available columns in the error.
+// available columns in the error. A frame holding a non-finite value gets the value NaN (Inf for
+// an infinite value with sum/mean/min/max/rms), reported only if the frame is used. `first`, if
+// given, is the open input of paths[0] (its format already detected).
 DumpSeries read_dump(const std::vector<std::string> &paths, const std::string &column,
-                     Aggregate aggregate);
+                     Aggregate aggregate, LineReader *first = nullptr);
 
 bool looks_like_dump(const std::string &first_line);
 

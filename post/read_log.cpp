@@ -28,13 +28,18 @@ double log_timestep(const std::string &path)
         v > 0)
       dt = v;
   }
-  if (!(dt > 0)) throw Error(path + ": no 'timestep' command in this log");
+  if (!(dt > 0)) throw Error(in.name() + ": no 'timestep' command in this log");
   return dt;
 }
 
 std::vector<LogBlock> read_log(const std::string &path)
 {
   LineReader in(path);
+  return read_log(in);
+}
+
+std::vector<LogBlock> read_log(LineReader &in)
+{
   std::vector<LogBlock> blocks;
   std::string line;
   std::vector<std::string_view> tok;
@@ -49,7 +54,7 @@ std::vector<LogBlock> read_log(const std::string &path)
         if (parse_double(tok[1], v) && std::isfinite(v) && v > 0) timestep = v;
       } else if (!tok.empty() && tok[0] == "Step") {
         LogBlock b;
-        b.table.source = path;
+        b.table.source = in.name();
         for (auto w : tok) b.table.names.emplace_back(w);
         b.table.has_header = true;
         b.table.init_columns(tok.size());
@@ -84,7 +89,7 @@ std::vector<LogBlock> read_log(const std::string &path)
                               [](const LogBlock &b) { return b.table.rows() == 0; }),
                blocks.end());
   if (blocks.empty())
-    throw Error(path +
+    throw Error(in.name() +
                 ": no thermo block found (a header line starting with 'Step' followed by "
                 "rows of numbers)");
   return blocks;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "column_table.h"
+#include "line_reader.h"
 
 namespace ohmdem::post {
 
@@ -19,6 +20,7 @@ struct LogBlock {
 
 // Throws Error if the file holds no thermo block with at least one row.
 std::vector<LogBlock> read_log(const std::string &path);
+std::vector<LogBlock> read_log(LineReader &in);  // from an open input
 
 // The last `timestep` command echoed in a log (s); Error if there is none.
 double log_timestep(const std::string &path);

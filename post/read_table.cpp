@@ -57,7 +57,30 @@ std::string unquote(std::string_view s)
   return out;
 }
 
-ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
+// Which columns to store, asked once the names are known.
+void choose_columns(ColumnTable &t, const TableOptions &opt)
+{
+  if (!opt.keep) return;
+  std::vector<bool> keep = opt.keep(t);
+  keep.resize(t.cols(), false);
+  t.stored = keep;
+}
+
+// Reserves the kept columns for the rows a regular file will hold, estimated from the bytes
+// per row so far: the columns then grow without copies (untouched capacity costs no memory).
+void reserve_rows(ColumnTable &t, const LineReader &in)
+{
+  if (in.size_hint() == 0 || in.bytes_consumed() == 0) return;
+  const double per_row =
+      static_cast<double>(in.bytes_consumed()) / static_cast<double>(std::max<std::size_t>(t.rows(), 1));
+  const auto expect = static_cast<std::size_t>(static_cast<double>(in.size_hint()) / per_row * 1.25) + 64;
+  for (std::size_t c = 0; c < t.cols(); ++c)
+    if (t.stored[c]) t.columns[c].reserve(expect);
+}
+
+constexpr std::size_t kRowsBeforeReserve = 256;
+
+ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first, const TableOptions &opt)
 {
   std::string line = std::move(first);
   std::size_t ncol = 0;
@@ -74,9 +97,12 @@ ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
       if (header) {
         for (auto c : cells) t.names.push_back(unquote(c));
         t.has_header = true;
-        continue;
+      } else {
+        for (std::size_t c = 0; c < ncol; ++c) t.names.push_back(std::to_string(c + 1));
       }
-      for (std::size_t c = 0; c < ncol; ++c) t.names.push_back(std::to_string(c + 1));
+      choose_columns(t, opt);
+      if (opt.header_only) return t;
+      if (header) continue;
     }
     if (cells.size() != ncol)
       throw Error(in.where() + ": " + std::to_string(cells.size()) + " cells, expected " +
@@ -89,15 +115,19 @@ ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
           t.first_text[c] = cells[c].empty() ? "(empty)" : unquote(cells[c]);
           t.first_text_line[c] = in.line_number();
         }
-        t.text[c].resize(t.rows());  // the rows before: numbers
-        t.text[c].push_back(unquote(cells[c]));
+        if (t.stored[c]) {
+          t.text[c].resize(t.rows());  // the rows before: numbers
+          t.text[c].push_back(unquote(cells[c]));
+        }
       } else if (!t.text[c].empty()) {
         t.text[c].emplace_back();
       }
+      if (!t.stored[c]) continue;
       t.columns[c].push_back(v);
       t.note_token(c, cells[c], v);
     }
     t.line_of_row.push_back(in.line_number());
+    if (t.rows() == kRowsBeforeReserve) reserve_rows(t, in);
   } while (in.next(line));
   if (t.rows() == 0) throw Error(t.source + ": no data rows (empty file or only a header)");
   return t;
@@ -105,11 +135,16 @@ ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first)
 
 }  // namespace
 
-ColumnTable read_table(const std::string &path)
+ColumnTable read_table(const std::string &path, const TableOptions &opt)
 {
-  LineReader in(path);
+  LineReader in(path, opt.max_line);
+  return read_table(in, opt);
+}
+
+ColumnTable read_table(LineReader &in, const TableOptions &opt)
+{
   ColumnTable t;
-  t.source = path;
+  t.source = in.name();
   std::string line;
   std::string last_comment;
   bool comment_just_before = false;
@@ -130,7 +165,8 @@ ColumnTable read_table(const std::string &path)
       }
       continue;
     }
-    if (ncol == 0 && s.find(',') != std::string_view::npos) return read_csv(in, std::move(t), line);
+    if (ncol == 0 && s.find(',') != std::string_view::npos)
+      return read_csv(in, std::move(t), line, opt);
     split_blanks(s, tok);
     if (ncol == 0) {
       ncol = tok.size();
@@ -146,6 +182,8 @@ ColumnTable read_table(const std::string &path)
                             " values: columns are numbered");
       }
       t.init_columns(ncol);
+      choose_columns(t, opt);
+      if (opt.header_only) return t;
     }
     if (tok.size() != ncol)
       throw Error(in.where() + ": " + std::to_string(tok.size()) + " values, expected " +
@@ -155,12 +193,15 @@ ColumnTable read_table(const std::string &path)
       if (!parse_double(tok[c], v))
         throw Error(in.where() + ": " + quoted(tok[c]) + " is not a number (column " + t.names[c] +
                     ")");
+      if (!t.stored[c]) continue;
       t.columns[c].push_back(v);
       t.note_token(c, tok[c], v);
     }
     t.line_of_row.push_back(in.line_number());
+    if (t.rows() == kRowsBeforeReserve) reserve_rows(t, in);
   }
-  if (t.rows() == 0) throw Error(path + ": no data rows (empty file or only comments)");
+  if (t.rows() == 0 && !(opt.header_only && ncol > 0))
+    throw Error(t.source + ": no data rows (empty file or only comments)");
   return t;
 }
 

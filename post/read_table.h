@@ -3,9 +3,12 @@
 #ifndef OHMDEM_POST_READ_TABLE_H
 #define OHMDEM_POST_READ_TABLE_H
 
+#include <functional>
 #include <string>
+#include <vector>
 
 #include "column_table.h"
+#include "line_reader.h"
 
 namespace ohmdem::post {
 
@@ -14,7 +17,16 @@ namespace ohmdem::post {
 // the same number of values, all numbers (NaN/Inf are kept and reported when a column is used).
 // CSV (commas on the first non-comment line): a header row of names if any cell is not a
 // number; text cells are allowed and make their column non-numeric (reported when used).
-ColumnTable read_table(const std::string &path);
+struct TableOptions {
+  std::size_t max_line = LineReader::kDefaultMaxLine;  // bytes per line
+  // Called once the column names are known: which columns to store (all when unset). Every
+  // cell is still checked; only the values of the columns kept are held in memory.
+  std::function<std::vector<bool>(const ColumnTable &)> keep;
+  bool header_only = false;  // stop at the first data row (names, no values)
+};
+ColumnTable read_table(const std::string &path, const TableOptions &opt = {});
+// Reads from an open input (e.g. after the format was detected from its first line).
+ColumnTable read_table(LineReader &in, const TableOptions &opt = {});
 
 }  // namespace ohmdem::post
 

@@ -50,15 +50,26 @@ RunMetadata read_run_metadata(const std::string &path)
   m.nb = number(j, "nb", path);
   m.db = number(j, "db", path);
   m.dp = number(j, "dp", path);
+  m.catalog_name = text(j, "catalog_name", path);
+  m.dext = number(j, "dext", path);
+  m.dinn = number(j, "dinn", path);
+  m.rc_ext = number(j, "rc_ext", path);
+  m.rc_inn = number(j, "rc_inn", path);
   m.contact_angle = number(j, "contact_angle", path);
   m.dt = number(j, "dt", path);
   m.size_deg = number(j, "size_deg", path);
   m.t_sliding_end = number(j, "t_sliding_end", path);
+  m.status = text(j, "status", path);
+  if (m.status && *m.status != "finished" && *m.status != "interrupted" && *m.status != "failed")
+    throw Error(path + ": \"status\" must be \"finished\", \"interrupted\" or \"failed\", got \"" +
+                *m.status + "\"");
+  m.time_reached = number(j, "time_reached", path);
   return m;
 }
 
 std::string find_run_metadata(const std::string &signal_path)
 {
+  if (signal_path == "-") return "";
   const auto slash = signal_path.find_last_of('/');
   const std::string dir = slash == std::string::npos ? "." : signal_path.substr(0, slash);
   const std::string candidate = dir + "/run.json";

@@ -16,7 +16,7 @@ std::string format_number(double v, int digits)
 }
 
 namespace {
-std::string at_row(const std::string &where, const std::vector<std::size_t> &lines, std::size_t i)
+std::string at_row(const std::string &where, const RowLines &lines, std::size_t i)
 {
   return i < lines.size() ? where + ":" + std::to_string(lines[i])
                           : where + " (sample " + std::to_string(i) + ")";
@@ -25,7 +25,7 @@ std::string at_row(const std::string &where, const std::vector<std::size_t> &lin
 
 Signal make_uniform(const std::vector<double> &t, std::vector<double> x, double t_resolution,
                     bool resample, const std::string &where,
-                    const std::vector<std::size_t> &line_of_row)
+                    const RowLines &line_of_row)
 {
   const std::size_t n = t.size();
   if (n != x.size()) throw Error(where + ": time and value columns differ in length");

@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "row_lines.h"
+
 namespace ohmdem::post {
 
 using MetaList = std::vector<std::pair<std::string, std::string>>;
@@ -31,7 +33,7 @@ struct Signal {
 // Error. `line_of_row` (optional, may be empty) and `where` name the source in messages.
 Signal make_uniform(const std::vector<double> &t, std::vector<double> x, double t_resolution,
                     bool resample, const std::string &where,
-                    const std::vector<std::size_t> &line_of_row = {});
+                    const RowLines &line_of_row = {});
 
 // Throws Error if the signal has fewer than `n` samples, naming `what` needs them.
 void require_samples(const Signal &s, std::size_t n, const std::string &what);

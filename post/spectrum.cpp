@@ -102,10 +102,9 @@ Spectrum spectrum(const std::vector<double> &x, double rate, const SpectrumOptio
   s.df = rate / static_cast<double>(nfft);
   s.enbw_hz = rate * sw2 / (sw * sw);
   const std::size_t nb = nfft / 2 + 1;
-  // work arrays kept between calls (single-threaded tool): no page faults on repeated use
-  static std::vector<double> buf;
-  static std::vector<Complex> X;
-  buf.resize(nfft);
+  // work arrays of this call only: nothing of a long record's size stays allocated after it
+  std::vector<double> buf(nfft);
+  std::vector<Complex> X;
   std::vector<double> &acc = s.value;  // sum of |X|^2, scaled in place below
   acc.assign(nb, 0.0);
   for (std::size_t start = 0; start + seg <= n; start += step) {

@@ -7,9 +7,11 @@ packages=(
   openmpi-bin libopenmpi-dev                # MPI (LIGGGHTS is built against Open MPI)
   libeigen3-dev libfftw3-dev libgtest-dev   # linear algebra, transforms, unit tests
   libhypre-dev                              # algebraic multigrid for large networks
+  libboost-dev                              # Boost.Math: quantiles of detection thresholds
   ngspice                                   # independent circuit solver for network tests
   python3 python3-numpy python3-scipy       # independent references for signal statistics
   gnuplot-nox                               # plots (PNG through pngcairo)
+  libmatio-dev                              # MATLAB .mat records (ohmdem-post --input mat)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -8,6 +8,7 @@
 #   bench/resistance/run_resistance_bench.sh [STEPS] [ROUNDS]   (default 30000 = 30 ms, 5)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
 OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
 STEPS=${1:-30000}
 ROUNDS=${2:-5}

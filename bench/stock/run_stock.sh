@@ -17,6 +17,7 @@ set -euo pipefail
 
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ROOT=$(cd "$HERE/../.." && pwd)
+export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
 PY=/usr/bin/python3
 LIGGGHTS=${LIGGGHTS:-liggghts}
 OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}

@@ -11,6 +11,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$HERE/../.." && pwd)
 OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
 POST=${POST:-$ROOT/build/ohmdem-post}
+export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
 OUT=$(realpath -m "${1:-study-output}")
 TEND=${2:-0.12}
 FROM=0.015          # after the sliding phase (11.4 ms at 500 rad/s, F = 320 N)

@@ -23,8 +23,16 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 const char *const kDutyColumn = "n_masked";
 
+// run.json keys describing how a run ended, not what it simulated: the status column shows
+// them instead of parameter columns
+bool is_outcome_key(const std::string &k)
+{
+  return k == "status" || k == "time_reached";
+}
+
 struct RunResult {
   std::string run;
+  std::string status;  // finished, interrupted or failed (run.json; finished when absent)
   std::vector<std::pair<std::string, Json>> params;
   std::string quantity;  // the signal's name (column)
   double t_start = 0, t_end = 0;
@@ -89,8 +97,12 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
   const std::string signal = run + "/signal.txt", json = run + "/run.json";
   std::vector<std::string> ns;
   r.params = run_parameters(json, &ns);
+  r.params.erase(std::remove_if(r.params.begin(), r.params.end(),
+                                [](const auto &kv) { return is_outcome_key(kv.first); }),
+                 r.params.end());
   nonscalar.insert(ns.begin(), ns.end());
   const RunMetadata meta = read_run_metadata(json);
+  r.status = meta.status.value_or("finished");
 
   InputOptions o;
   o.files = {signal};
@@ -110,7 +122,9 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
   r.ind = indicators(s.x);
 
   // duty: the count column over the same window (same grid), when the run writes it
-  if (read_table(signal).find_name(kDutyColumn) != ColumnTable::npos) {
+  TableOptions header;
+  header.header_only = true;
+  if (read_table(signal, header).find_name(kDutyColumn) != ColumnTable::npos) {
     InputOptions od = o;
     od.column = kDutyColumn;
     od.min_samples = 2;
@@ -153,8 +167,9 @@ int run_collect(const std::vector<std::string> &argv)
   a.section("Runs");
   a.flag("--recursive", "search the folders given and their subfolders for runs");
   a.flag("--skip-bad",
-         "skip a run whose data are bad (empty, NaN, too short, bad run.json...) with a "
-         "warning instead of failing");
+         "skip a run whose data are bad (empty, NaN, too short, bad run.json...) or that did "
+         "not finish (run.json status interrupted or failed) with a warning instead of failing "
+         "or including it");
   a.option("--params", "KEY[,KEY]", "only these run.json keys, in this order (default: all)");
   a.flag("--varying", "only the run.json keys whose value differs between the runs");
   a.section("Signal and window");
@@ -204,8 +219,26 @@ int run_collect(const std::vector<std::string> &argv)
   std::vector<RunResult> results;
   std::vector<std::string> bad;
   std::set<std::string> nonscalar;
+  std::size_t unfinished = 0;
   for (const std::string &run : folders.runs) {
     try {
+      const RunMetadata meta = read_run_metadata(run + "/run.json");
+      if (!meta.finished()) {
+        const std::string what =
+            "did not finish (run.json status \"" + *meta.status + "\"" +
+            (meta.time_reached ? ", time reached " + format_number(*meta.time_reached) + " s"
+                               : std::string()) +
+            ")";
+        if (skip_bad) {
+          std::cerr << "WARNING: collect: skipped run " << run << ": " << what << "\n";
+          bad.push_back(run);
+          continue;
+        }
+        std::cerr << "WARNING: collect: run " << run << " " << what
+                  << "; its row covers the data written until then (column status; "
+                     "--skip-bad skips such runs)\n";
+        ++unfinished;
+      }
       RunResult r = analyse(a, run, want_diagnosis, nonscalar);
       if (!results.empty() && r.quantity != results.front().quantity)
         throw Error("the signal is column '" + r.quantity + "', '" + results.front().quantity +
@@ -251,7 +284,7 @@ int run_collect(const std::vector<std::string> &argv)
 
   const std::string quantity = results.front().quantity;
   const std::string unit = unit_of(a, quantity);
-  std::vector<std::string> fixed = {"run", "t_start_s", "t_end_s", "n"};
+  std::vector<std::string> fixed = {"run", "status", "t_start_s", "t_end_s", "n"};
   for (const auto &f : indicator_fields())
     fixed.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
   const bool any_duty =
@@ -265,11 +298,11 @@ int run_collect(const std::vector<std::string> &argv)
   };
 
   Report rep;
-  rep.columns.push_back("run");
+  rep.columns = {"run", "status"};
   for (const auto &k : keys) rep.columns.push_back(param_column(k));
-  rep.columns.insert(rep.columns.end(), fixed.begin() + 1, fixed.end());
+  rep.columns.insert(rep.columns.end(), fixed.begin() + 2, fixed.end());
   for (const auto &r : results) {
-    std::vector<Cell> row{r.run};
+    std::vector<Cell> row{r.run, r.status};
     for (const auto &k : keys) row.push_back(param_cell(find_param(r, k)));
     row.emplace_back(r.t_start);
     row.emplace_back(r.t_end);
@@ -297,6 +330,11 @@ int run_collect(const std::vector<std::string> &argv)
   }
   if (!bad.empty())
     m.emplace_back("bad runs skipped", std::to_string(bad.size()) + ": " + join(bad, " "));
+  m.emplace_back("status",
+                 "how each run ended (run.json \"status\"; a run.json without it, from an older "
+                 "engine, counts as finished)" +
+                     (unfinished ? "; " + std::to_string(unfinished) + " run(s) did not finish"
+                                 : std::string()));
   m.emplace_back("parameters", a.has("--params") ? "--params " + a.get("--params")
                                : a.has("--varying")
                                    ? "run.json keys whose value differs between the runs"

@@ -1,12 +1,15 @@
-// ohmdem-post diagnose: the most likely bearing defect, its score, evidence and size.
+// ohmdem-post diagnose: detection (is something wrong), then the most likely bearing defect,
+// its score, evidence and size.
 #include <cmath>
 #include <iostream>
 
 #include "../diagnose.h"
 #include "../error.h"
+#include "../order_diagnose.h"
 #include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
+#include "shaft_angle.h"
 
 namespace ohmdem::post::cli {
 
@@ -28,6 +31,41 @@ Json evidence_json(const std::vector<Evidence> &ev)
   return arr;
 }
 
+Json detection_json(const Detection &det, double false_alarm)
+{
+  Json o = Json::object();
+  o.set("fired", det.fired);
+  o.set("false_alarm", false_alarm);
+  o.set("false_alarm_bound", det.false_alarm_bound);
+  o.set("gaussian_applicable", det.gaussian_applicable);
+  o.set("white_floor", det.white_floor);
+  o.set("note", det.gaussian_note);
+  Json arr = Json::array();
+  for (const auto &t : det.tests) {
+    Json e = Json::object();
+    e.set("name", t.name);
+    e.set("reference", t.reference);
+    e.set("value", t.value);
+    e.set("threshold", t.threshold);
+    e.set("p_value", t.p_value);
+    e.set("samples", t.samples);
+    e.set("applicable", t.applicable);
+    e.set("fired", t.fired);
+    e.set("note", t.note);
+    arr.push_back(e);
+  }
+  o.set("tests", arr);
+  return o;
+}
+
+std::string fired_list(const Detection &det)
+{
+  std::string s;
+  for (const auto &t : det.tests)
+    if (t.fired) s += (s.empty() ? "" : "+") + t.name;
+  return s.empty() ? "-" : s;
+}
+
 std::string percent_off(double f, double nominal)
 {
   return format_number(100 * (f / nominal - 1), 3) + " %";
@@ -38,21 +76,33 @@ std::string percent_off(double f, double nominal)
 int run_diagnose(const std::vector<std::string> &argv)
 {
   Args a("diagnose", "[options] FILE...",
-         "Finds the peaks of the spectrum and of the envelope spectrum (band from the kurtogram\n"
-         "unless --band), matches them to the defect families - inner race (BPFI, shaft\n"
-         "sidebands), outer race (BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic\n"
-         "combs whose fundamental may be off by --tolerance (slip), and reports the most likely\n"
-         "defect (none, inner, outer, ball, cage) with a score in [0, 1] and the matched peaks.\n"
-         "The defect size is estimated from the pulse widths of a level signal such as R(t).\n"
+         "Detection, then identification. Detection tests whether the record is unlike a\n"
+         "healthy one: kurtosis, crest factor and the spectral kurtosis of the envelope band\n"
+         "against the Gaussian law (records with a noise floor), and with --baseline the RMS,\n"
+         "kurtosis, crest and band energy against a healthy record's window-to-window scatter;\n"
+         "each test at the false-alarm probability --false-alarm. Identification finds the peaks\n"
+         "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
+         "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
+         "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
+         "may be off by --tolerance (slip). The defect is the family scoring >= --min-score\n"
+         "(inner, outer, ball, cage), else 'unidentified' if detection fired (a fault of unknown\n"
+         "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
+         "estimated from the pulse widths of a level signal such as R(t).\n"
          "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);
+  add_shaft_angle_options(a);
   a.section("Diagnosis");
   a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
   a.option("--harmonics", "N", "harmonics in each family's comb", "5");
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
   a.option("--levels", "N", "kurtogram levels", "7");
+  a.section("Detection");
+  a.option("--false-alarm", "P", "false-alarm probability of each detection test", "0.001");
+  a.option("--baseline", "FILE",
+           "healthy reference record (same input options and sampling rate; its run.json is "
+           "not read)");
   a.flag("--no-size", "skip the defect size estimate");
   a.flag("--keep-sliding",
          "analyse the sliding phase too (default: start at t_sliding_end "
@@ -66,13 +116,16 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error(
         "diagnose: give the bearing (--bearing 6208|6205 or --nb --db --dp) or a "
         "run.json with it");
-  if (!bc.fr)
+  // order tracking (issue 17): an angle/speed column whose speed varies by more than --tolerance
+  // switches the diagnosis to the angle domain
+  const std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
+  if (!bc.fr && !sa)
     throw Error(
         "diagnose: give the shaft speed (--rpm, --shaft-hz or --omega) or a run.json "
         "with omega_inner");
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
-  o.fr = *bc.fr;
+  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
   o.tolerance = a.number("--tolerance", 0.02);
   const long long h = a.integer("--harmonics", 5);
   if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
@@ -88,17 +141,49 @@ int run_diagnose(const std::vector<std::string> &argv)
       throw Error("option --band expects 0 <= F1 < F2");
   }
   o.estimate_size = !a.has("--no-size");
-  const Diagnosis d = diagnose(s, o);
+  o.false_alarm = a.number("--false-alarm", 1e-3);
+  if (!(o.false_alarm > 0 && o.false_alarm < 0.5))
+    throw Error("option --false-alarm expects a probability in (0, 0.5)");
+  Signal base;
+  if (a.has("--baseline")) {
+    // the record's input options and time window (its sliding phase too), its step length
+    InputOptions io = input_options(a);
+    io.files = {a.get("--baseline")};
+    io.min_samples = 256;
+    if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
+      io.from = *meta.t_sliding_end;
+    base = load_signal(io, meta);
+    o.baseline = &base;
+  }
+  const bool in_orders = sa && sa->speed.variation > o.tolerance;
+  if (in_orders && o.baseline)
+    throw Error("diagnose: --baseline is not supported when the speed varies (the record is "
+                "diagnosed in the angle domain); give a record at constant speed");
+  const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
   Output out(a);
 
   MetaList m = s.meta;
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
-  m.emplace_back("shaft frequency (Hz)", format_number(o.fr, 8) + " (" + bc.fr_source + ")");
+  m.emplace_back(
+      "shaft frequency (Hz)",
+      format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  if (in_orders)
+    m.emplace_back("domain", "orders: speed varies by " +
+                                 format_number(100 * sa->speed.variation, 3) +
+                                 " % > --tolerance; resampled at constant shaft angle, "
+                                 "frequencies = orders x mean shaft frequency");
   m.emplace_back("envelope band (Hz)",
                  format_number(d.band.lo) + " to " + format_number(d.band.hi) +
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
+  if (o.baseline) m.emplace_back("baseline", a.get("--baseline"));
+  if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
+    m.emplace_back("band kurtosis significant",
+                   std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +
+                       "threshold " + format_number(d.band_kurtosis_threshold, 4) +
+                       " at alpha 0.01 over the bands searched)");
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
     if (f.defect == d.defect) chosen = &f;
@@ -106,10 +191,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (out.format() == OutputFormat::Json) {
     Json j = Json::object();
     j.set("defect", d.defect);
+    j.set("detected", d.detected);
+    j.set("detection", detection_json(d.detection, o.false_alarm));
     j.set("score", d.score);
-    j.set("frequency_hz", d.defect == "none" ? Json() : Json(d.frequency_hz));
+    j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
     j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
-    j.set("fundamental", d.defect == "none" ? Json() : Json(d.label));
+    j.set("fundamental", chosen ? Json(d.label) : Json());
     j.set("evidence", evidence_json(d.evidence));
     Json fams = Json::object();
     for (const auto &f : d.families) {
@@ -121,6 +208,7 @@ int run_diagnose(const std::vector<std::string> &argv)
       o2.set("comb", f.comb);
       o2.set("chance", f.chance);
       o2.set("margin_db", f.margin);
+      if (std::isfinite(f.baseline_excess)) o2.set("baseline_excess_db", f.baseline_excess);
       o2.set("spectrum", f.spectrum);
       fams.set(f.defect, o2);
     }
@@ -138,7 +226,11 @@ int run_diagnose(const std::vector<std::string> &argv)
     band.push_back(d.band.hi);
     j.set("band_hz", band);
     j.set("band_kurtosis", d.band_kurtosis);
+    j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
+    j.set("band_kurtosis_significant",
+          std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
     j.set("shaft_hz", o.fr);
+    j.set("domain", in_orders ? "orders" : "time");
     j.set("bearing", o.geometry.name);
     if (meta.defect) j.set("run_defect", *meta.defect);
     j.set("meta", meta_json(m));
@@ -150,13 +242,30 @@ int run_diagnose(const std::vector<std::string> &argv)
     r.meta = m;
     r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
                  "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+    r.columns.insert(r.columns.end(),
+                     {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
     std::vector<Cell> row{d.defect,
                           d.score,
-                          d.defect == "none" ? NAN : d.frequency_hz,
+                          chosen ? d.frequency_hz : NAN,
                           chosen ? chosen->nominal_hz : NAN,
                           d.size.valid ? d.size.size_deg : NAN,
                           d.size.valid ? d.size.pulse_width_s : NAN};
     for (const auto &f : d.families) row.emplace_back(f.score);
+    row.emplace_back(d.band_kurtosis);
+    row.emplace_back(d.band_kurtosis_threshold);
+    row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
+                                                    : "");
+    // detection columns, appended (scripts reading the columns above keep working)
+    r.columns.push_back("detected");
+    row.emplace_back(d.detected ? "yes" : "no");
+    r.columns.push_back("fired");
+    row.emplace_back(fired_list(d.detection));
+    for (const auto &t : d.detection.tests) {
+      r.columns.push_back(t.name);
+      r.columns.push_back(t.name + "_threshold");
+      row.emplace_back(t.applicable ? t.value : NAN);
+      row.emplace_back(t.applicable ? t.threshold : NAN);
+    }
     r.rows.push_back(row);
     write_report(out.stream(), r, out.format());
     return 0;
@@ -165,6 +274,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   std::ostream &os = out.stream();
   for (const auto &kv : m) os << "# " << kv.first << ": " << kv.second << '\n';
   os << "defect:        " << d.defect << '\n';
+  os << "detected:      " << (d.detected ? "yes" : "no");
+  if (d.detection.fired)
+    os << " (fired: " << fired_list(d.detection) << ")";
+  else if (d.detected)
+    os << " (a family identified; no detection test fired)";
+  os << '\n';
   os << "score:         " << format_number(d.score, 3) << '\n';
   if (chosen)
     os << "frequency:     " << format_number(d.frequency_hz, 7) << " Hz = " << d.label
@@ -175,15 +290,28 @@ int run_diagnose(const std::vector<std::string> &argv)
        << format_number(d.size.arc_m * 1e3, 4) << " mm (pulse width "
        << format_number(d.size.pulse_width_s * 1e6, 4) << " us, " << d.size.method << ", "
        << d.size.pulses << (d.size.method == "pulses" ? " pulses" : " periods") << ")\n";
-  else if (d.defect != "none")
+  else if (chosen)
     os << "size:          n/a (" << d.size.method << ")\n";
+  os << "# detection: each test at false-alarm probability " << format_number(o.false_alarm)
+     << ", at most " << format_number(d.detection.false_alarm_bound) << " for the "
+     << d.detection.tests_applied << " applied; " << d.detection.gaussian_note << '\n';
+  os << '\n';
+  Report dr;
+  dr.columns = {"test", "against", "value", "threshold", "p_value", "samples", "fired", "note"};
+  for (const auto &t : d.detection.tests)
+    dr.rows.push_back({t.name, t.reference, t.value, t.threshold, t.p_value, t.samples,
+                       !t.applicable ? "n/a" : t.fired ? "yes" : "no", t.note.empty() ? "-" : t.note});
+  write_table(os, dr);
   os << '\n';
   Report fr;
   fr.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
                 "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
-  for (const auto &f : d.families)
+  if (o.baseline) fr.columns.push_back("over_baseline_dB");
+  for (const auto &f : d.families) {
     fr.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
                        f.frequency_hz, f.spectrum});
+    if (o.baseline) fr.rows.back().emplace_back(f.baseline_excess);
+  }
   write_table(os, fr);
   if (!d.evidence.empty()) {
     os << '\n';

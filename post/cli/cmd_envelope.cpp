@@ -12,6 +12,19 @@
 
 namespace ohmdem::post::cli {
 
+namespace {
+
+// Issue 17: whether the best band's spectral kurtosis is more than a Gaussian record reaches.
+std::string significance(const Kurtogram &kg)
+{
+  return std::string(kg.significant ? "yes" : "no") + " (threshold " +
+         format_number(kg.threshold, 4) + ": a Gaussian record's best band exceeds it with " +
+         "probability " + format_number(kg.alpha) + "; " + std::to_string(kg.best.samples) +
+         " envelope samples, " + std::to_string(kg.cells.size()) + " bands searched)";
+}
+
+}  // namespace
+
 int run_envelope(const std::vector<std::string> &argv)
 {
   Args a("envelope", "[options] FILE...",
@@ -72,6 +85,7 @@ int run_envelope(const std::vector<std::string> &argv)
                           "envelope (0 for Gaussian noise)");
       r.meta.emplace_back("best band (Hz)",
                           format_number(kg.best.lo) + " to " + format_number(kg.best.hi));
+      r.meta.emplace_back("band kurtosis significant", significance(kg));
       r.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
       for (const auto &c : kg.cells)
         r.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
@@ -82,6 +96,7 @@ int run_envelope(const std::vector<std::string> &argv)
     m.emplace_back("band (Hz)", format_number(band.lo) + " to " + format_number(band.hi) +
                                     " (kurtogram, spectral kurtosis " +
                                     format_number(kg.best.kurtosis, 4) + ")");
+    m.emplace_back("band kurtosis significant", significance(kg));
   }
   const std::vector<double> env = envelope(s.x, s.rate, band);
   const std::string unit = unit_of(a, s.name);

@@ -12,6 +12,7 @@
 #include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
+#include "shaft_angle.h"
 #include "spectrum_options.h"
 
 namespace ohmdem::post::cli {
@@ -109,6 +110,118 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
   return fig;
 }
 
+// Issue 17: STFT magnitude (dB) as an image, the defect frequencies h x order x fr(t) of FTF,
+// BPFO, BPFI and 2BSF as curves following the shaft speed (angle/speed column, else constant).
+Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &meta)
+{
+  const BearingChoice bc = bearing_choice(a, meta);
+  std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
+  if (!sa && bc.fr) sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
+  const long long harmonics = a.integer("--harmonics", 3);
+  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
+  const std::size_t n = s.size();
+  std::size_t seg = 64;  // default: about n/64 samples, a power of two in [64, 8192]
+  while (seg * 2 <= std::min<std::size_t>(8192, n / 64)) seg *= 2;
+  if (a.has("--segment")) {
+    const long long v = a.integer("--segment", 0);
+    if (v < 16 || static_cast<std::size_t>(v) > n)
+      throw Error("option --segment expects 16.." + std::to_string(n) + " samples");
+    seg = static_cast<std::size_t>(v);
+  }
+  if (seg > n) seg = n;
+  std::size_t hop = std::max<std::size_t>(1, seg / 4);
+  if ((n - seg) / hop + 1 > 400) hop = std::max<std::size_t>(1, (n - seg) / 399);
+  const std::size_t cols = (n - seg) / hop + 1;
+  SpectrumOptions so;
+  so.window = parse_window(a.get("--window"));
+  so.detrend = Detrend::Mean;
+  std::optional<DefectFrequencies> orders;
+  if (bc.geometry) orders = defect_frequencies(*bc.geometry, 1.0);
+  const double fr_max = sa ? sa->speed.max / (2 * 3.14159265358979323846) : 0;
+  double fmax = a.number("--fmax", NAN);
+  if (!std::isfinite(fmax))
+    fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *
+                                                   std::max(orders->bpfi, orders->bpfo))
+                        : s.rate / 2;
+  const double fmin = a.number("--fmin", 0);
+  Figure fig;
+  PlotImage &im = fig.image;
+  std::vector<std::size_t> rows;  // first bin of each image row (bins grouped, max taken)
+  std::size_t group = 1;
+  double peak_db = -INFINITY;
+  std::vector<std::vector<double>> colvals;
+  std::vector<double> piece(seg);
+  for (std::size_t c = 0; c < cols; ++c) {
+    const std::size_t start = c * hop;
+    std::copy(s.x.begin() + static_cast<long>(start), s.x.begin() + static_cast<long>(start + seg),
+              piece.begin());
+    const Spectrum sp = spectrum(piece, s.rate, so);
+    if (c == 0) {
+      std::size_t inside = 0;
+      for (std::size_t k = 0; k < sp.bins(); ++k)
+        inside += sp.frequency(k) >= fmin && sp.frequency(k) <= fmax;
+      if (inside == 0) throw Error("plot: no frequency bin in [--fmin, --fmax]");
+      group = (inside + 599) / 600;
+      for (std::size_t k = 0; k < sp.bins(); ++k)
+        if (sp.frequency(k) >= fmin && sp.frequency(k) <= fmax) {
+          if ((rows.empty() || k >= rows.back() + group)) rows.push_back(k);
+        }
+      for (std::size_t k : rows) im.y.push_back(sp.frequency(k));
+      fig.xlabel = "time (s)";
+      fig.title = "Spectrogram of " + s.name + ", " + window_name(so.window) + " window, " +
+                  std::to_string(seg) + " samples (df " + format_number(sp.df, 4) + " Hz)" +
+                  (sa && orders ? ", defect frequencies at the speed from " + sa->source : "");
+    }
+    std::vector<double> v;
+    for (std::size_t k : rows) {
+      double m = 0;
+      for (std::size_t j = k; j < k + group && j < sp.bins(); ++j) m = std::max(m, sp.value[j]);
+      v.push_back(20 * std::log10(std::max(m, 1e-300)));
+      peak_db = std::max(peak_db, v.back());
+    }
+    colvals.push_back(v);
+    im.x.push_back(s.time(start) + 0.5 * static_cast<double>(seg) / s.rate);
+  }
+  im.z.resize(im.x.size() * im.y.size());
+  for (std::size_t c = 0; c < cols; ++c)
+    for (std::size_t r = 0; r < rows.size(); ++r)
+      im.z[r * cols + c] = std::max(colvals[c][r], peak_db - 100);  // 100 dB of range
+  const std::string unit = unit_of(a, s.name);
+  im.zlabel = "amplitude (dB re 1" + (unit.empty() ? std::string() : " " + unit) + ")";
+  fig.ylabel = "frequency (Hz)";
+  if (sa && orders) {
+    struct Fam {
+      const char *name;
+      double order;
+    };
+    const Fam fams[] = {{"FTF", orders->ftf},
+                        {"BPFO", orders->bpfo},
+                        {"BPFI", orders->bpfi},
+                        {"2BSF", 2 * orders->bsf}};
+    for (const auto &f : fams)
+      for (int h = 1; h <= harmonics; ++h) {
+        PlotSeries ser;
+        ser.title = (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name;
+        for (std::size_t c = 0; c < cols; ++c) {
+          const std::size_t i0 = c * hop, i1 = c * hop + seg - 1;
+          const double fr = (sa->theta[i1] - sa->theta[i0]) * s.rate /
+                            static_cast<double>(i1 - i0) / (2 * 3.14159265358979323846);
+          const double y = h * f.order * fr;
+          if (y >= fmin && y <= fmax) {
+            ser.x.push_back(im.x[c]);
+            ser.y.push_back(y);
+          }
+        }
+        if (!ser.x.empty()) fig.series.push_back(ser);
+      }
+  }
+  fig.xmin = im.x.front();
+  fig.xmax = im.x.back();
+  fig.ymin = im.y.front();
+  fig.ymax = im.y.back();
+  return fig;
+}
+
 Figure signal_figure(const Args &a, const Signal &s)
 {
   std::vector<double> t(s.size());
@@ -179,12 +292,14 @@ Figure indicators_figure(const Args &a)
 
 int run_plot(const std::vector<std::string> &argv)
 {
-  Args a("plot", "--kind signal|spectrum|envelope|indicators --output FIG.png [options] FILE",
+  Args a("plot",
+         "--kind signal|spectrum|envelope|spectrogram|indicators --output FIG.png [options] FILE",
          "PNG figures rendered by gnuplot (pngcairo): the signal; its spectrum or envelope\n"
          "spectrum with the bearing's defect frequencies (FTF, BPFO, BPFI, 2xBSF and harmonics)\n"
-         "marked; indicators versus a swept parameter from a CSV/table (e.g. collected stats).");
+         "marked; a spectrogram with them as curves following the shaft speed; indicators\n"
+         "versus a swept parameter from a CSV/table (e.g. collected stats).");
   a.section("Figure");
-  a.option("--kind", "KIND", "signal | spectrum | envelope | indicators", "signal");
+  a.option("--kind", "KIND", "signal | spectrum | envelope | spectrogram | indicators", "signal");
   a.option("--output", "FILE", "the PNG to write (required)");
   a.option("--title", "TEXT", "figure title (default: describes the content)");
   a.option("--size", "WxH", "image size in pixels", "1100x600");
@@ -204,6 +319,7 @@ int run_plot(const std::vector<std::string> &argv)
   add_input_options(a);
   add_spectrum_options(a, "amplitude");
   add_bearing_options(a);
+  add_shaft_angle_options(a);
   a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
@@ -211,12 +327,16 @@ int run_plot(const std::vector<std::string> &argv)
   Figure fig;
   if (kind == "indicators") {
     fig = indicators_figure(a);
+  } else if (kind == "spectrogram") {
+    const RunMetadata meta = run_metadata(a);
+    fig = spectrogram_figure(a, load_input(a, meta, 64), meta);
   } else if (kind == "signal" || kind == "spectrum" || kind == "envelope") {
     const RunMetadata meta = run_metadata(a);
     const Signal s = load_input(a, meta, kind == "signal" ? 2 : 64);
     fig = kind == "signal" ? signal_figure(a, s) : spectrum_figure(a, s, meta, kind == "envelope");
   } else {
-    throw Error("option --kind expects signal|spectrum|envelope|indicators, got '" + kind + "'");
+    throw Error("option --kind expects signal|spectrum|envelope|spectrogram|indicators, got '" +
+                kind + "'");
   }
   if (a.has("--title")) fig.title = a.get("--title");
   const std::string size = a.get("--size");

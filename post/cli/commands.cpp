@@ -30,6 +30,10 @@ const std::vector<Command> &commands()
        run_plot},
       {"collect", "the indicators (and parameters, diagnosis) of many run folders in one table",
        run_collect},
+      {"acquire", "what an instrument records: sensitivity, anti-alias filter, rate, noise, ADC",
+       run_acquire},
+      {"orders", "order tracking: (envelope) order spectrum at constant shaft-angle increments",
+       run_orders},
   };
   return table;
 }

@@ -25,6 +25,8 @@ int run_frequencies(const std::vector<std::string> &args);
 int run_diagnose(const std::vector<std::string> &args);
 int run_plot(const std::vector<std::string> &args);
 int run_collect(const std::vector<std::string> &args);
+int run_acquire(const std::vector<std::string> &args);
+int run_orders(const std::vector<std::string> &args);
 
 }  // namespace ohmdem::post::cli
 

@@ -1,10 +1,12 @@
 #include "common.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
 #include "../error.h"
 #include "../read_log.h"
+#include "../read_mat.h"
 #include "../text_scan.h"
 
 namespace ohmdem::post::cli {
@@ -13,17 +15,20 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-void add_input_options(Args &a)
+void add_input_options(Args &a, const std::string &rate_option)
 {
   a.section("Input");
-  a.option("--input", "KIND", "input format: auto|table|log|dump", "auto");
+  a.option("--input", "KIND", "input format: auto|table|log|dump|mat (auto: .mat files are MAT)",
+           "auto");
   a.option("--column", "NAME|N",
            "signal column: header name (R, c_x[2], f_ID[1], v_name) or 1-based number; "
            "default: the only non-time column, else R");
   a.option("--time-column", "NAME|N",
-           "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use --rate; "
-           "default: time, t, TimeStep or Step");
-  a.option("--rate", "HZ", "sampling rate of a signal without time stamps (overrides any time)");
+           "time column (seconds; TimeStep/Step count steps, see --dt); 'none' to use " +
+               rate_option + "; default: time, t, TimeStep or Step");
+  a.option(rate_option, "HZ", "sampling rate of a signal without time stamps (overrides any time)");
+  a.option("--variable", "NAME", "MAT files: the signal variable (e.g. DE_time); as --column");
+  a.option("--rate-variable", "NAME", "MAT files: the variable holding the sampling rate (Hz)");
   a.option("--dt", "S", "time step length for step-stamped data (dumps, logs, fix ave/time)");
   a.option("--log", "FILE",
            "take the time step length from this LIGGGHTS log (its last "
@@ -37,7 +42,7 @@ void add_input_options(Args &a)
   a.flag("--no-metadata", "ignore run.json next to the input");
 }
 
-InputOptions input_options(const Args &a)
+InputOptions input_options(const Args &a, const std::string &rate_option)
 {
   InputOptions o;
   o.files = a.positional();
@@ -45,13 +50,22 @@ InputOptions input_options(const Args &a)
     throw Error(a.command() + ": no input file (see ohmdem-post " + a.command() + " --help)");
   o.format = a.get("--input");
   o.column = a.get("--column");
+  if (a.has("--variable")) {
+    if (a.has("--column")) throw Error("give the signal once: --column or --variable");
+    o.column = a.get("--variable");
+  }
+  o.rate_variable = a.get("--rate-variable");
   o.time_column = a.get("--time-column");
-  o.rate = a.number("--rate", 0);
+  o.rate = a.number(rate_option, 0);
   o.dt = a.number("--dt", 0);
-  if (a.has("--rate") && !(o.rate > 0)) throw Error("option --rate expects a rate > 0 Hz");
+  if (a.has(rate_option) && !(o.rate > 0))
+    throw Error("option " + rate_option + " expects a rate > 0 Hz");
   if (a.has("--dt") && !(o.dt > 0)) throw Error("option --dt expects a step > 0 s");
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
+    if (a.get("--log") == "-" &&
+        std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
+      throw Error("standard input ('-') can be read only once: give --log a file");
     o.dt = log_timestep(a.get("--log"));
   }
   o.aggregate = parse_aggregate(a.get("--aggregate"));
@@ -70,9 +84,9 @@ RunMetadata run_metadata(const Args &a)
 }
 
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
-                  bool skip_sliding_phase)
+                  bool skip_sliding_phase, const std::string &rate_option)
 {
-  InputOptions o = input_options(a);
+  InputOptions o = input_options(a, rate_option);
   o.min_samples = min_samples;
   bool auto_from = false;
   if (skip_sliding_phase && !a.has("--from") && meta.t_sliding_end) {
@@ -105,7 +119,12 @@ Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.
 void add_bearing_options(Args &a)
 {
   a.section("Bearing and speed");
-  a.option("--bearing", "NAME", "preset geometry: 6208 (the paper) or 6205 (CWRU)");
+  a.option("--bearing", "NAME",
+           "a bearing of the catalog (inputs/bearings, e.g. 6208 the paper's, 6205-2RS_JEM "
+           "CWRU's drive end)");
+  a.option("--catalog", "DIR",
+           "bearing catalog folder (default: $OHMDEM_CATALOG, else the source tree's "
+           "inputs/bearings)");
   a.option("--nb", "N", "number of balls");
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");
@@ -114,6 +133,7 @@ void add_bearing_options(Args &a)
   a.option("--shaft-hz", "HZ", "shaft frequency (Hz); --fr is the same");
   a.option("--fr", "HZ", "shaft frequency (Hz), as in MATLAB's bearing tools");
   a.option("--omega", "RAD/S", "shaft angular speed (rad/s), as omega_inner in our decks");
+  a.option("--rpm-variable", "NAME", "MAT files: the variable holding the shaft speed (rpm)");
 }
 
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
@@ -121,15 +141,18 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
   BearingChoice c;
   BearingGeometry g;
   bool have = false;
+  const std::string catalog = a.has("--catalog") ? a.get("--catalog") : default_catalog_dir();
   if (a.has("--bearing")) {
-    g = bearing_preset(a.get("--bearing"));
+    const CatalogEntry e = catalog_entry(catalog, a.get("--bearing"));
+    g = e.geometry();
     have = true;
-    c.geometry_source = "--bearing";
-  } else if (meta.bearing && (*meta.bearing == "6208" || *meta.bearing == "6205") &&
-             !(meta.nb && meta.db && meta.dp)) {
-    g = bearing_preset(*meta.bearing);
+    c.geometry_source = e.path;
+  } else if (meta.bearing && *meta.bearing != "custom" && !(meta.nb && meta.db && meta.dp)) {
+    // an older run.json that names its bearing only
+    const CatalogEntry e = catalog_entry(catalog, *meta.bearing);
+    g = e.geometry();
     have = true;
-    c.geometry_source = meta.path;
+    c.geometry_source = meta.path + " (" + e.path + ")";
   } else if (meta.nb && meta.db && meta.dp) {
     g.name = meta.bearing ? *meta.bearing : "custom";
     g.nb = static_cast<int>(std::lround(*meta.nb));
@@ -162,17 +185,24 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     validate(g);
     c.geometry = g;
   }
-  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega");
-  if (speeds > 1) throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr or --omega");
+  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega") +
+               a.has("--rpm-variable");
+  if (speeds > 1)
+    throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr, --omega or --rpm-variable");
   double fr = NAN;
   if (a.has("--rpm")) fr = a.number("--rpm") / 60;
   if (a.has("--shaft-hz")) fr = a.number("--shaft-hz");
   if (a.has("--fr")) fr = a.number("--fr");
   if (a.has("--omega")) fr = a.number("--omega") / (2 * kPi);
+  if (a.has("--rpm-variable")) {
+    if (a.positional().empty()) throw Error("option --rpm-variable needs a MAT input file");
+    fr = read_mat_scalar(a.positional().front(), a.get("--rpm-variable")) / 60;
+  }
   if (speeds) {
     if (!(fr > 0)) throw Error("the shaft speed must be > 0");
     c.fr = fr;
-    c.fr_source = "command line";
+    c.fr_source = a.has("--rpm-variable") ? "MAT variable " + a.get("--rpm-variable") + " (rpm)"
+                                          : "command line";
   } else if (meta.omega_inner) {
     if (!(*meta.omega_inner > 0)) throw Error(meta.path + ": \"omega_inner\" must be > 0");
     c.fr = *meta.omega_inner / (2 * kPi);

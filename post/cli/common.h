@@ -16,13 +16,15 @@
 
 namespace ohmdem::post::cli {
 
-void add_input_options(Args &a);
-InputOptions input_options(const Args &a);
+// `rate_option` names the option giving the rate of a signal without time stamps (acquire uses
+// --rate for the instrument's rate and --input-rate for this).
+void add_input_options(Args &a, const std::string &rate_option = "--rate");
+InputOptions input_options(const Args &a, const std::string &rate_option = "--rate");
 // --metadata FILE, else run.json next to the first input (unless --no-metadata), else none.
 RunMetadata run_metadata(const Args &a);
 // Loads the signal and applies the metadata's t_sliding_end as default --from when asked.
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
-                  bool skip_sliding_phase = false);
+                  bool skip_sliding_phase = false, const std::string &rate_option = "--rate");
 
 void add_output_options(Args &a);
 class Output {
@@ -43,8 +45,8 @@ struct BearingChoice {
   std::optional<double> fr;  // shaft frequency (Hz)
   std::string geometry_source, fr_source;
 };
-// Command line first (--bearing, --nb/--db/--dp/--beta, --rpm/--shaft-hz/--fr/--omega), then
-// the run's metadata.
+// Command line first (--bearing NAME from the catalog --catalog DIR, --nb/--db/--dp/--beta,
+// --rpm/--shaft-hz/--fr/--omega), then the run's metadata (its nb, db, dp: what ran).
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.

@@ -31,7 +31,7 @@ using namespace FixConst;
 using ohmdem::RaceContactModel;
 
 namespace {
-constexpr int kVectorSize = 11;
+constexpr int kVectorSize = 15;
 // Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
 // restart files. The first kPeratomCols columns are this fix's per-atom output, the contact
 // that the electrical computes read through RaceContactView; the rest is private state.
@@ -139,10 +139,14 @@ void FixBearingRace::check_load(ohmdem::StyleArgs &a, bool have_force, bool have
     if (have_settle) load_ = Load::Settle;
     else u_ = interference_;
   }
-  if (load_ == Load::Radial) {
+  {
     const double n = std::hypot(dir_x, dir_y);
-    load_fx_ = load_force_ * dir_x / n;
-    load_fy_ = load_force_ * dir_y / n;
+    dir_ux_ = dir_x / n;
+    dir_uy_ = dir_y / n;
+  }
+  if (load_ == Load::Radial) {
+    load_fx_ = load_force_ * dir_ux_;
+    load_fy_ = load_force_ * dir_uy_;
   }
   const bool dynamic = load_ == Load::Force || load_ == Load::Settle || load_ == Load::Radial;
   if (dynamic && ring_mass_ <= 0.0)
@@ -251,6 +255,16 @@ void FixBearingRace::ring_half_kick(double dt)
     vcx_ += h * (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
     vcy_ += h * (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
   }
+}
+
+// The ring centre's acceleration at the end of the step: Newton's law with the forces of this
+// step and the velocity reached (zero unless the centre is free, load radial).
+void FixBearingRace::ring_acceleration(double &ax, double &ay) const
+{
+  ax = ay = 0.0;
+  if (load_ != Load::Radial) return;
+  ax = (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
+  ay = (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
 }
 
 void FixBearingRace::initial_integrate(int)
@@ -365,6 +379,17 @@ double FixBearingRace::compute_vector(int n)
     case 8: return angle_;
     case 9: return target_omega(time_);
     case 10: return nmasked_;
+    default: break;
+  }
+  // The vibration channel: centre velocity and acceleration along the load direction and
+  // across it (the direction turned +90 degrees about z).
+  double ax, ay;
+  ring_acceleration(ax, ay);
+  switch (n) {
+    case 11: return vcx_ * dir_ux_ + vcy_ * dir_uy_;
+    case 12: return -vcx_ * dir_uy_ + vcy_ * dir_ux_;
+    case 13: return ax * dir_ux_ + ay * dir_uy_;
+    case 14: return -ax * dir_uy_ + ay * dir_ux_;
     default: return 0.0;
   }
 }

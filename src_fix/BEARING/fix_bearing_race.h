@@ -62,6 +62,7 @@ class FixBearingRace : public FixBearingBody {
   void build_model();
   double target_omega(double t) const;
   void ring_half_kick(double dt);
+  void ring_acceleration(double &ax, double &ay) const;
 
   // --- arguments
   bool inner_ = true;
@@ -71,6 +72,7 @@ class FixBearingRace : public FixBearingBody {
   Load load_ = Load::None;
   double load_force_ = 0;          // force / settle: isotropic F (N)
   double load_fx_ = 0, load_fy_ = 0;  // radial load vector (N)
+  double dir_ux_ = 0, dir_uy_ = -1;    // unit load direction (outputs along/across it)
   double interference_ = 0;        // fixed: imposed radial interference (m)
   double settle_time_ = 0;         // settle: force control until this time (s)
   double ring_mass_ = 0, ring_damp_ = 0;

@@ -90,7 +90,7 @@ def test_hertz_static(r):
 
 def test_clear(r):
     deck = os.path.join(os.path.dirname(__file__), "in.clear")
-    _, log = r.run("clear", deck=deck, bearing=r.deck, tend=0.0002)
+    _, log = r.run("clear", deck=deck, bearing_deck=r.deck, tend=0.0002)
     check("CLEAR_OK" in log and log.count("BEARING_SUMMARY") >= 2,
           "bearing deck runs, clear, and runs again with our styles")
 
@@ -226,7 +226,7 @@ def test_restart(r):
     full, _ = r.run("restart_full", tend=0.004)
     first, _ = r.run("restart_first", deck=os.path.join(os.path.dirname(__file__),
                                                         "in.restart_first"),
-                     bearing=r.deck, tend=0.002)
+                     bearing_deck=r.deck, tend=0.002)
     second, _ = r.run("restart_second", tend=0.004, start="restart",
                       restart_file=os.path.join(first, "half.restart"))
     a = open(os.path.join(full, "signal.txt")).read().splitlines()

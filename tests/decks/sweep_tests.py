@@ -27,7 +27,7 @@ def main():
 
     def sweep(wd, root, *extra):
         cmd = mpi + [exe, "-partition", "2x1", "-in", os.path.join(deck, "in.sweep"),
-                     "-var", "here", deck, "-var", "bearing", os.path.join(deck, "in.bearing"),
+                     "-var", "here", deck, "-var", "bearing_deck", os.path.join(deck, "in.bearing"),
                      "-var", "root", root, "-var", "tend", "0.003", *extra]
         res = subprocess.run(cmd, cwd=wd, capture_output=True, text=True)
         return res.returncode, res.stdout + res.stderr

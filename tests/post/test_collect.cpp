@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -237,23 +238,27 @@ TEST(Collect, CsvRowsColumnsAndValues)
   const auto lines = data_lines(r.out);
   ASSERT_EQ(lines.size(), 4u) << r.out;  // header + 3 runs
   const std::vector<std::string> header = {
-      "run",      "area",     "defect",        "depth",     "F",        "load",
-      "resumed",  "size_deg", "t_sliding_end", "t_start_s", "t_end_s",  "n",
-      "peak_ohm", "mean_ohm", "rms_ohm",       "std_ohm",   "skewness", "kurtosis",
-      "crest",    "shape",    "impulse",       "clearance", "duty"};
+      "run",      "status",   "area",      "defect",        "depth",     "F",
+      "load",     "resumed",  "size_deg",  "t_sliding_end", "t_start_s", "t_end_s",
+      "n",        "peak_ohm", "mean_ohm",  "rms_ohm",       "std_ohm",   "skewness",
+      "kurtosis", "crest",    "shape",     "impulse",       "clearance", "duty"};
   EXPECT_EQ(cells(lines[0]), header);
   // natural order of the folders; a string with a comma is quoted; missing keys are empty
-  EXPECT_EQ(lines[1].rfind("fixed_2,\"greenwood, exact\",inner,,320,fixed,,2,0.002,0.002,", 0), 0u)
+  // (run.json without "status": an older run, counted as finished)
+  EXPECT_EQ(
+      lines[1].rfind("fixed_2,finished,\"greenwood, exact\",inner,,320,fixed,,2,0.002,0.002,", 0),
+      0u)
       << lines[1];
-  EXPECT_EQ(lines[2].rfind("fixed_10,,inner,,320,fixed,,10,0.002,0.002,", 0), 0u) << lines[2];
-  EXPECT_EQ(lines[3].rfind("force_1,,outer,0.0001,,force,true,1,,0,", 0), 0u) << lines[3];
+  EXPECT_EQ(lines[2].rfind("fixed_10,finished,,inner,,320,fixed,,10,0.002,0.002,", 0), 0u)
+      << lines[2];
+  EXPECT_EQ(lines[3].rfind("force_1,finished,,outer,0.0001,,force,true,1,,0,", 0), 0u) << lines[3];
   // the duty is the fraction of samples with n_masked > 0 in the window
   const auto c2 = cells(lines[1]), c10 = cells(lines[2]), c1 = cells(lines[3]);
   EXPECT_EQ(c2.back(), "0.15");
   EXPECT_EQ(c10.back(), "0.3");
   EXPECT_EQ(c1.back(), "0.06");
-  EXPECT_EQ(c10[11], "1800");  // t_sliding_end 2 ms skipped at 100 kHz
-  EXPECT_EQ(c1[11], "2000");
+  EXPECT_EQ(c10[12], "1800");  // t_sliding_end 2 ms skipped at 100 kHz
+  EXPECT_EQ(c1[12], "2000");
   // metadata lines
   EXPECT_NE(r.out.find("# runs: 3 collected"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("# non-scalar run.json keys left out: tags"), std::string::npos);
@@ -274,10 +279,10 @@ TEST(Collect, CsvRowsColumnsAndValues)
   EXPECT_NE(p.err.find("(try --recursive)"), std::string::npos) << p.err;
   const Outcome pr = post("collect --format csv --recursive --params size_deg,load .", root);
   ASSERT_EQ(pr.status, 0) << pr.err;
-  EXPECT_EQ(data_lines(pr.out)[0].rfind("run,size_deg,load,t_start_s,", 0), 0u) << pr.out;
+  EXPECT_EQ(data_lines(pr.out)[0].rfind("run,status,size_deg,load,t_start_s,", 0), 0u) << pr.out;
   const Outcome v = post("collect --format csv --varying fixed_2 fixed_10", root);
   ASSERT_EQ(v.status, 0) << v.err;
-  EXPECT_EQ(data_lines(v.out)[0].rfind("run,area,size_deg,t_start_s,", 0), 0u) << v.out;
+  EXPECT_EQ(data_lines(v.out)[0].rfind("run,status,area,size_deg,t_start_s,", 0), 0u) << v.out;
   const Outcome unknown = post("collect --params nope fixed_2", root);
   EXPECT_EQ(unknown.status, 1);
   EXPECT_NE(unknown.err.find("no run.json of the runs has the key 'nope'"), std::string::npos);
@@ -390,6 +395,60 @@ TEST(Collect, BadSignalFailsNamingTheRunUnlessSkipped)
   EXPECT_NE(all_bad.err.find("ERROR: collect: none of the 2 run(s) has usable data"),
             std::string::npos)
       << all_bad.err;
+}
+
+TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
+{
+  const std::string root = make_sweep("status");
+  // the engine writes how a run ended; a run cut short has fewer samples
+  make_run(root + "/stopped",
+           R"({"size_deg": 3, "status": "interrupted", "time_reached": 0.0105})", 1050);
+  make_run(root + "/crashed", R"({"size_deg": 4, "status": "failed", "time_reached": 0.004})",
+           400);
+  make_run(root + "/done", R"({"size_deg": 5, "status": "finished", "time_reached": 0.02})");
+  const Outcome r = post("collect --format json done stopped crashed fixed_2", root);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("WARNING: collect: run stopped did not finish (run.json status "
+                       "\"interrupted\", time reached 0.0105 s)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("WARNING: collect: run crashed did not finish (run.json status \"failed\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("run done"), std::string::npos) << r.err;
+  const Json j = Json::parse(r.out, "collect output");
+  const Json &rows = *j.find("rows");
+  ASSERT_EQ(rows.size(), 4u);
+  std::map<std::string, std::string> status;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    status[rows[i].find("run")->string()] = rows[i].find("status")->string();
+    // how the run ended is a column, not a swept parameter
+    EXPECT_EQ(rows[i].find("time_reached"), nullptr);
+  }
+  EXPECT_EQ(status["stopped"], "interrupted");
+  EXPECT_EQ(status["crashed"], "failed");
+  EXPECT_EQ(status["done"], "finished");
+  EXPECT_EQ(status["fixed_2"], "finished");  // no "status": an older run, taken as finished
+  EXPECT_NE(r.out.find("2 run(s) did not finish"), std::string::npos) << r.out;
+
+  const Outcome s = post("collect --skip-bad --format csv done stopped crashed fixed_2", root);
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_NE(s.err.find("WARNING: collect: skipped run stopped: did not finish"), std::string::npos)
+      << s.err;
+  EXPECT_NE(s.err.find("WARNING: collect: skipped run crashed: did not finish"), std::string::npos)
+      << s.err;
+  EXPECT_NE(s.out.find("# bad runs skipped: 2: crashed stopped"), std::string::npos) << s.out;
+  const auto lines = data_lines(s.out);
+  ASSERT_EQ(lines.size(), 3u) << s.out;  // header, fixed_2, done
+  EXPECT_EQ(lines[1].rfind("done,finished,", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[2].rfind("fixed_2,finished,", 0), 0u) << lines[2];
+
+  std::ofstream(root + "/done/run.json") << R"({"status": "paused"})" << "\n";
+  const Outcome bad = post("collect done", root);
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("\"status\" must be \"finished\", \"interrupted\" or \"failed\""),
+            std::string::npos)
+      << bad.err;
 }
 
 TEST(Collect, DeterministicAndIndependentOfArgumentOrder)

@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 #include "error.h"
+#include "line_reader.h"
 #include "load_signal.h"
 #include "read_dump.h"
 #include "read_log.h"
@@ -272,6 +274,182 @@ TEST(Readers, BadInputIsRefusedWithItsLine)
                "decreasing.txt:4: time stamps not increasing");
   o.column = "X";
   expect_error([&] { run(data("bad/nonuniform.txt")); }, "unknown column 'X' (columns: time R)");
+}
+
+TEST(LineReader, PeekHandsTheFirstLineBackWithItsNumber)
+{
+  const std::string p = write_temp("peek.txt", "\n  \nLIGGGHTS (3.8)\nsecond\r\nlast");
+  LineReader in(p);
+  EXPECT_EQ(in.peek_first_content(), "LIGGGHTS (3.8)");
+  EXPECT_EQ(in.peek_first_content(), "LIGGGHTS (3.8)");  // peeking again reads nothing more
+  std::string line;
+  std::vector<std::string> lines;
+  while (in.next(line)) lines.push_back(line);
+  // blank lines before it come back empty, the line endings are dropped, the line numbers are
+  // those of the file
+  const std::vector<std::string> want = {"", "", "LIGGGHTS (3.8)", "second", "last"};
+  EXPECT_EQ(lines, want);
+  EXPECT_EQ(in.line_number(), 5u);
+}
+
+TEST(LineReader, Utf8ByteOrderMarkIsSkipped)
+{
+  const std::string p = write_temp("bom.txt", "\xEF\xBB\xBF# time R\n0 1\n0.001 2\n0.002 4\n");
+  const ColumnTable t = read_table(p);
+  ASSERT_EQ(t.cols(), 2u);
+  EXPECT_TRUE(t.has_header);
+  EXPECT_EQ(t.names[0], "time");  // not "\xEF\xBB\xBFtime" or a comment missed
+  EXPECT_EQ(t.columns[1][2], 4.0);
+  const std::string plain = write_temp("bom_plain.txt", "\xEF\xBB\xBF" "1.5\n2.5\n");
+  InputOptions o;
+  o.files = {plain};
+  o.rate = 10;
+  EXPECT_EQ(load_signal(o, {}).x.front(), 1.5);
+  expect_error([] { read_table(write_temp("utf16.txt", std::string("\xFF\xFE" "1\0", 4))); },
+               "utf16.txt:1: UTF-16 text");
+}
+
+TEST(LineReader, LineLongerThanTheLimitNamesFileLineAndLimit)
+{
+  const std::string p = write_temp("long.txt", "1\n2\n" + std::string(100, '3') + "\n4\n");
+  TableOptions o;
+  o.max_line = 64;
+  expect_error([&] { read_table(p, o); },
+               "long.txt:3: line longer than 64 bytes (no line break?)");
+  o.max_line = 100;  // exactly at the limit is accepted
+  EXPECT_EQ(read_table(p, o).rows(), 4u);
+  // a file without any line break fails at the limit, without reading it whole
+  const std::string nl = write_temp("no_newline.txt", std::string(3000, '7'));
+  LineReader in(nl, 1000);
+  std::string line;
+  expect_error([&] { in.next(line); }, "no_newline.txt:1: line longer than 1000 bytes");
+  EXPECT_LT(in.bytes_consumed(), 1001u);
+}
+
+TEST(Readers, OnlyTheColumnsUsedAreStored)
+{
+  // our signal.txt layout: the loader keeps the time and the value, not the other columns, not a
+  // string per row, and the line of each row costs nothing while the rows follow each other
+  std::string text = "# time omega_cage fn_inner_mean n_contacts_race R n_masked\n";
+  for (int i = 0; i < 5000; ++i)
+    text += std::to_string(i * 1e-6) + " 198.05 24.6 26 " + std::to_string(1.39 + (i % 7) * 1e-3) +
+            " 0\n";
+  const std::string p = write_temp("six_columns.txt", text);
+  TableOptions o;
+  o.keep = [](const ColumnTable &t) {
+    std::vector<bool> k(t.cols(), false);
+    k[t.find("R")] = true;
+    return k;
+  };
+  const ColumnTable t = read_table(p, o);
+  EXPECT_EQ(t.rows(), 5000u);
+  for (std::size_t c = 0; c < t.cols(); ++c)
+    if (t.names[c] != "R") {
+      EXPECT_EQ(t.columns[c].capacity(), 0u) << t.names[c];
+    }
+  EXPECT_EQ(t.columns[t.find("R")].size(), 5000u);
+  // reserved from the file size after the first rows: no doubling (at most 25 % + 64 spare)
+  EXPECT_LE(t.columns[t.find("R")].capacity(), 5000u * 5 / 4 + 64);
+  EXPECT_EQ(t.line_of_row.runs(), 1u);
+  EXPECT_EQ(t.line_of_row[4999], 5001u);
+  EXPECT_EQ(t.text[t.find("R")].capacity(), 0u);
+  // every cell is still checked, kept or not
+  const std::string bad = write_temp("six_bad.txt", text + "0.1 198 x 26 1.4 0\n");
+  expect_error([&] { read_table(bad, o); }, "six_bad.txt:5002: 'x' is not a number");
+}
+
+TEST(Readers, RowLinesMapRowsToTheirLines)
+{
+  RowLines l;
+  for (std::size_t line : {3, 4, 5, 9, 10, 20}) l.push_back(line);
+  EXPECT_EQ(l.size(), 6u);
+  EXPECT_EQ(l.runs(), 3u);
+  const std::size_t want[] = {3, 4, 5, 9, 10, 20};
+  for (std::size_t r = 0; r < 6; ++r) EXPECT_EQ(l[r], want[r]);
+  const RowLines s = l.slice(1, 5);
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s[0], 4u);
+  EXPECT_EQ(s[2], 9u);
+  EXPECT_EQ(s[3], 10u);
+  EXPECT_EQ(s.back(), 10u);
+}
+
+TEST(Readers, NonFiniteValuesCountOnlyInsideTheWindow)
+{
+  // R = inf at step 0 of a thermo log (the first evaluation of a compute): fine when the window
+  // starts later, an error naming the time and the line when the window holds it
+  const std::string log = write_temp(
+      "inf_log.txt",
+      "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)\ntimestep 1e-05\n"
+      "Step Atoms c_R\n0 10 inf\n100 10 1.5\n200 10 1.6\n300 10 1.55\n400 10 1.52\n"
+      "Loop time of 0.1 on 1 procs\n");
+  InputOptions o;
+  o.files = {log};
+  o.column = "c_R";
+  expect_error([&] { load_signal(o, {}); },
+               "inf_log.txt:4: non-finite value (Inf) in column c_R at t = 0 s");
+  o.from = 0.0005;
+  const Signal s = load_signal(o, {});
+  ASSERT_EQ(s.size(), 4u);
+  EXPECT_EQ(s.x.front(), 1.5);
+  EXPECT_DOUBLE_EQ(s.t0, 0.001);
+  // a column file: NaN after the window, and inside it
+  const std::string table =
+      write_temp("nan_late.txt", "# time R\n0 1\n0.001 2\n0.002 3\n0.003 nan\n");
+  InputOptions t;
+  t.files = {table};
+  t.to = 0.0025;
+  EXPECT_EQ(load_signal(t, {}).size(), 3u);
+  t.to = 0.003;
+  expect_error([&] { load_signal(t, {}); },
+               "nan_late.txt:5: non-finite value (NaN) in column R at t = 0.003 s (inside the "
+               "window)");
+  // the time column places the window: it must be finite throughout
+  const std::string nan_time =
+      write_temp("nan_time.txt", "# time R\n0 1\n0.001 2\nnan 3\n0.003 4\n");
+  InputOptions nt;
+  nt.files = {nan_time};
+  nt.to = 0.0015;
+  expect_error([&] { load_signal(nt, {}); },
+               "nan_time.txt:4: non-finite value (NaN) in column time");
+  // with --rate, no time column: the sample's time is named
+  const std::string plain = write_temp("inf_first.txt", "inf\n1\n2\n3\n");
+  InputOptions r;
+  r.files = {plain};
+  r.rate = 10;
+  r.from = 0.1;
+  EXPECT_EQ(load_signal(r, {}).size(), 3u);
+  r.from = NAN;
+  expect_error([&] { load_signal(r, {}); }, "inf_first.txt:1: non-finite value (Inf)");
+}
+
+TEST(Readers, DumpFrameWithANonFiniteValueFailsOnlyWhenUsed)
+{
+  // the last frame of dump.atoms gets a NaN velocity: the frame's value is NaN, reported only
+  // if the window holds it
+  std::ifstream in(data("dump.atoms"));
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  const std::size_t last = text.rfind("ITEM: ATOMS");
+  const std::size_t row = text.find('\n', last) + 1;
+  const std::size_t end = text.find('\n', row);
+  std::istringstream cells(text.substr(row, end - row));
+  std::string cell, edited;
+  for (int c = 0; cells >> cell; ++c) edited += (c ? " " : "") + (c == 7 ? "nan" : cell);  // vz
+  text.replace(row, end - row, edited);
+  const std::string p = write_temp("nan.dump", text);
+  const DumpSeries d = read_dump({p}, "vz", Aggregate::Max);
+  EXPECT_TRUE(std::isnan(d.values.back()));
+  EXPECT_TRUE(std::isfinite(d.values.front()));
+  InputOptions o;
+  o.files = {p};
+  o.column = "vz";
+  o.aggregate = Aggregate::Max;
+  o.dt = 2.5e-5;
+  expect_error([&] { load_signal(o, {}); }, "non-finite value (NaN) in column vz at t = ");
+  o.to = d.steps[d.steps.size() - 2] * o.dt;
+  EXPECT_EQ(load_signal(o, {}).size(), d.steps.size() - 1);
 }
 
 }  // namespace

@@ -2,61 +2,22 @@
 // (if present) with the rate, speed and bearing its README gives, and prints what it finds.
 // Nothing is asserted per file: the README does not say which record has which defect.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
 
 #include <cstdio>
 #include <fstream>
 #include <memory>
-#include <regex>
 
+#include "cwru.h"
 #include "json.h"
 
 namespace ohmdem::post {
 namespace {
 
-std::string real_data_dir()
-{
-  return std::string(OHMDEM_SOURCE_DIR) + "/../shared/data/bearing-real";
-}
-
-struct Record {
-  std::string name;
-  double rate = 0, rpm = 0;
-};
-
-struct Readme {
-  std::vector<Record> records;
-  std::string nb, db_mm, dp_mm, angle_deg;
-};
-
-Readme parse_readme(const std::string &path)
-{
-  std::ifstream in(path);
-  Readme r;
-  std::string line;
-  std::smatch m;
-  const std::regex row(R"(^\|\s*(sig\d+)\s*\|\s*([0-9.]+)\s*\|\s*([0-9.]+)\s*\|)");
-  const std::regex balls(R"(^\|\s*number of balls\s*\|\s*([0-9]+)\s*\|)");
-  const std::regex ball(R"(^\|\s*ball diameter\s*\|.*\(([0-9.]+) mm\))");
-  const std::regex pitch(R"(^\|\s*pitch diameter\s*\|.*\(([0-9.]+) mm\))");
-  const std::regex angle(R"(^\|\s*contact angle\s*\|\s*([0-9.]+) deg)");
-  while (std::getline(in, line)) {
-    if (std::regex_search(line, m, row))
-      r.records.push_back({m[1], std::stod(m[2]), std::stod(m[3])});
-    if (std::regex_search(line, m, balls)) r.nb = m[1];
-    if (std::regex_search(line, m, ball)) r.db_mm = m[1];
-    if (std::regex_search(line, m, pitch)) r.dp_mm = m[1];
-    if (std::regex_search(line, m, angle)) r.angle_deg = m[1];
-  }
-  return r;
-}
-
 TEST(RealData, DiagnoseEveryMeasuredRecordAndPrint)
 {
-  const std::string dir = real_data_dir();
-  struct stat st {};
-  if (::stat((dir + "/README.md").c_str(), &st) != 0) GTEST_SKIP() << dir << " not found";
-  const Readme rd = parse_readme(dir + "/README.md");
+  const std::string dir = test::cwru_dir();
+  if (!test::cwru_present()) GTEST_SKIP() << dir << " not found";
+  const test::CwruReadme rd = test::parse_cwru_readme(dir + "/README.md");
   ASSERT_FALSE(rd.records.empty());
   ASSERT_FALSE(rd.nb.empty() || rd.db_mm.empty() || rd.dp_mm.empty());
   const std::string geometry = "--nb " + rd.nb + " --db " +
@@ -67,7 +28,7 @@ TEST(RealData, DiagnoseEveryMeasuredRecordAndPrint)
               geometry.c_str());
   std::printf("[ real data  ] %-6s %6s %-7s %6s %10s %10s  %-8s %s\n", "record", "rpm", "defect",
               "score", "f_Hz", "kin_Hz", "spectrum", "family scores (inner outer ball cage)");
-  for (const Record &rec : rd.records) {
+  for (const test::CwruRecord &rec : rd.records) {
     const std::string file = dir + "/" + rec.name + ".txt";
     char rate[32], rpm[32];
     std::snprintf(rate, sizeof rate, "%g", rec.rate);

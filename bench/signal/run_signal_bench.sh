@@ -1,0 +1,40 @@
+#!/bin/bash
+# Cost of writing the signal at full rate on the SKF 6208 deck: the loop time (LIGGGHTS' "Loop
+# time of", the time stepping alone) with signal.txt written every step against every 100th
+# step (fix signal/table; R evaluated for every row written), and with fix print + equal-style
+# variables writing the same columns every step in addition (-var printcheck 1). Interleaved
+# runs, the fastest of REPS each.
+#   bench/signal/run_signal_bench.sh [TEND] [REPS]       (defaults: 0.2 s simulated, 3)
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
+TEND=${1:-0.2}
+REPS=${2:-3}
+WORK=$(mktemp -d)
+trap 'rm -rf "$WORK"' EXIT
+
+loop_time() {  # loop_time NAME -var ...: prints the run's loop time (s)
+  local name=$1; shift
+  "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$WORK/$name" -var tend "$TEND" \
+    -log "$WORK/$name.log" -screen none "$@"
+  sed -n 's/^Loop time of \([0-9.e+-]*\).*/\1/p' "$WORK/$name.log" | tail -1
+}
+
+every=(); hundredth=(); printed=()
+for ((k = 0; k < REPS; k++)); do
+  every+=("$(loop_time every -var nout 1)")
+  hundredth+=("$(loop_time hundredth -var nout 100)")
+  printed+=("$(loop_time printed -var nout 1 -var printcheck 1)")
+done
+/usr/bin/python3 - "$TEND" "${every[*]}" "${hundredth[*]}" "${printed[*]}" <<'PY'
+import sys
+tend = float(sys.argv[1])
+a, b, c = (min(map(float, s.split())) for s in sys.argv[2:5])
+steps = round(tend / 1e-6)
+print(f"SKF 6208 deck, {tend} s simulated ({steps} steps), loop time, fastest of the runs")
+print(f"  signal.txt every 100th step (fix signal/table): {b:.3f} s  {b / steps * 1e6:.2f} us/step")
+print(f"  signal.txt every step       (fix signal/table): {a:.3f} s  {a / steps * 1e6:.2f} us/step"
+      f"  ratio {a / b:.2f} (goal <= 1.5)")
+print(f"  + the same row through fix print every step   : {c:.3f} s  fix print alone adds "
+      f"{(c - a) / steps * 1e6:.2f} us/row, {(c - a + b) / b:.2f}x the 100th-step run")
+PY

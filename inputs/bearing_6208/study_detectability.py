@@ -1,0 +1,314 @@
+#!/usr/bin/python3
+"""The detectability study: the smallest defect an instrument can see (Machado et al. 2014 end on
+it: "due to the limited sampling frequency of measuring devices, it will not be possible to
+identify defects with a small size, but the expected resolution will be better than vibrational
+measurements").
+
+The SKF 6208 at 500 rad/s under a radial load (a load zone, the outer ring centre free: the
+classic bearing vibration model) is simulated healthy and with inner- and outer-race defects of
+growing size (the runs go through the partition sweep in.sweep). Each run gives two channels:
+the electrical one (R, measured as the voltage I·R) and the vibration one (the outer ring's
+acceleration along the load, through an accelerometer). Every channel is acquired by
+`ohmdem-post acquire` for each instrument (sampling rate with its anti-alias filter, noise
+level, ADC bits) and diagnosed by `ohmdem-post diagnose` against the healthy run acquired by the
+same instrument (--baseline). Writes into OUT:
+  detectability.csv  one row per case: size_deg, defect, channel, rate_hz, bits, noise, diagnosis,
+                     score, detected, identified
+  detectability.md   the instruments, the map, and the answer to the paper's two claims
+  map_*.png          smallest detected / identified size against the sampling rate
+"""
+import argparse
+import concurrent.futures as cf
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+OHMDEM = os.environ.get("OHMDEM", os.path.join(ROOT, "build", "ohmdem"))
+POST = os.environ.get("POST", os.path.join(ROOT, "build", "ohmdem-post"))
+# in.bearing finds the bearing catalog through OHMDEM_CATALOG when run from another folder.
+os.environ.setdefault("OHMDEM_CATALOG", os.path.join(ROOT, "inputs", "bearings"))
+
+CURRENT = 0.1          # A, the deck's injected current: the instrument reads V = I R
+SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer
+T_FROM = 0.05          # s: after the sliding phase and the ring's settling under radial load
+WINDOW = 0.5           # s analysed (40 shaft revolutions at 500 rad/s); --full: 1 s
+
+# Per channel: the column, the scale to volts, the ADC range (V) and three noise densities
+# (V/sqrt(Hz)) named low/mid/high. Electrical: 10 nV/sqrt(Hz) is a low-noise preamplifier,
+# 1 uV/sqrt(Hz) a plain data-acquisition input. Vibration: 5e-5, 5e-4, 5e-3 (m/s^2)/sqrt(Hz)
+# (5 to 500 ug/sqrt(Hz): a good piezoelectric accelerometer to a MEMS one) times the
+# sensitivity. ADC ranges: 0-0.1 V for I R (R ~ 0.5 ohm here), +-0.5 V (+-5 g) for the
+# accelerometer.
+CHANNELS = {
+    "R": {"column": "R", "scale": CURRENT, "range": (0.0, 0.1),
+          "noise": {"low": 1e-8, "mid": 1e-7, "high": 1e-6}, "unit": "V"},
+    "acc": {"column": "acc_along", "scale": SENSITIVITY, "range": (-0.5, 0.5),
+            "noise": {"low": 5e-5 * SENSITIVITY, "mid": 5e-4 * SENSITIVITY,
+                      "high": 5e-3 * SENSITIVITY}, "unit": "V"},
+}
+
+
+def grid(quick):
+    global WINDOW, DECK_VARS
+    WINDOW = 0.5 if quick else 1.0
+    DECK_VARS = {**DECK_VARS, "tend": T_FROM + WINDOW + 0.001}
+    if quick:
+        return {"sizes": [0.1, 0.3, 1.0, 3.0], "rates": [1e3, 1e4, 1e5, 1e6],
+                "noise": ["low", "high"], "bits": [16]}
+    return {"sizes": [0.1, 0.2, 0.3, 0.5, 1.0, 2.0, 3.0],
+            "rates": [1e3, 2e3, 5e3, 1e4, 2e4, 5e4, 1e5, 2e5, 5e5, 1e6],
+            "noise": ["low", "mid", "high"], "bits": [12, 16]}
+
+
+def run(cmd, log, env=None):
+    with open(log, "w") as f:
+        r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env)
+    if r.returncode != 0:
+        sys.exit(f"study_detectability: failed ({r.returncode}): {' '.join(cmd)}; see {log}")
+
+
+DECK_VARS = {"load": "radial", "tend": T_FROM + WINDOW + 0.001, "tslide": T_FROM}
+# The radial load pushes the outer ring along -y: the balls carry it at the top, +y = 90 deg.
+OUTER_POSITION = 90.0
+
+
+def simulate(out, sizes):
+    """The healthy run, then inner and outer defects of every size through the partition
+    sweep (2 partitions when 2 processes are there)."""
+    sims = {}
+    healthy = os.path.join(out, "sim", "healthy")
+    if not os.path.exists(os.path.join(healthy, "run.json")):
+        os.makedirs(healthy, exist_ok=True)
+        cmd = [OHMDEM, "-in", os.path.join(HERE, "in.bearing"), "-var", "out", healthy,
+               "-log", os.path.join(healthy, "log.liggghts"), "-screen", "none"]
+        for k, v in DECK_VARS.items():
+            cmd += ["-var", k, str(v)]
+        run(cmd, os.path.join(healthy, "stdout.txt"))
+    sims[("none", 0.0)] = healthy
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    for defect in ("inner", "outer"):
+        root = os.path.join(out, "sim", defect)
+        os.makedirs(root, exist_ok=True)
+        values = " ".join(f"{s:g}" for s in sizes)
+        cmd = ["mpirun", "-np", "2", OHMDEM, "-partition", "2x1", "-in", os.path.join(HERE, "in.sweep"),
+               "-var", "here", HERE, "-var", "bearing_deck", os.path.join(HERE, "in.bearing"),
+               "-var", "root", root, "-var", "sizes", values, "-var", "ncases", str(len(sizes)),
+               "-var", "defect", defect, "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
+        for k, v in DECK_VARS.items():
+            cmd += ["-var", k, str(v)]
+        if defect == "outer":  # the pit in the middle of the load zone (+y), as in test rigs
+            cmd += ["-var", "position", str(OUTER_POSITION)]
+        run(cmd, os.path.join(root, "stdout.txt"), env)
+        for s in sizes:
+            sims[(defect, s)] = os.path.join(root, f"size_{s:g}")
+    return sims
+
+
+def post(args, allow_fail=False):
+    r = subprocess.run([POST] + args, capture_output=True, text=True)
+    if r.returncode != 0 and not allow_fail:
+        sys.exit(f"study_detectability: ohmdem-post {' '.join(args)} failed: {r.stderr.strip()}")
+    return r
+
+
+def acquire(sim, channel, rate, noise, bits, seed, dest):
+    ch = CHANNELS[channel]
+    lo, hi = ch["range"]
+    args = ["acquire", "--column", ch["column"], "--scale", repr(ch["scale"]),
+            "--from", repr(T_FROM - 0.005), "--lowpass", repr(0.4 * rate), "--order", "4",
+            "--rate", repr(rate), "--bits", str(bits), "--range", repr(lo), repr(hi),
+            "--noise-density", repr(ch["noise"][noise]), "--seed", str(seed),
+            "--name", "V", "--unit", "V", "--output", dest, os.path.join(sim, "signal.txt")]
+    post(args)
+    return dest
+
+
+def instrument_tag(channel, rate, noise, bits):
+    return f"{channel}_r{rate:g}_{noise}_b{bits}"
+
+
+def case(out, sims, key, channel, rate, noise, bits, baselines):
+    defect, size = key
+    tag = instrument_tag(channel, rate, noise, bits)
+    acq = os.path.join(out, "acq", f"{defect}_{size:g}_{tag}.txt")
+    acquire(sims[key], channel, rate, noise, bits, 1, acq)
+    r = post(["diagnose", "--format", "json", "--no-size", "--metadata",
+              os.path.join(sims[key], "run.json"), "--from", repr(T_FROM), "--to",
+              repr(T_FROM + WINDOW), "--baseline", baselines[tag], acq], allow_fail=True)
+    if r.returncode != 0:  # e.g. a record too short for the cage period at the lowest rates
+        d = {"defect": "error", "score": 0.0, "detected": False, "error": r.stderr.strip()}
+    else:
+        d = json.loads(r.stdout)
+    detected = bool(d.get("detected", d["defect"] != "none"))
+    return {"size_deg": size, "defect": defect, "channel": channel, "rate_hz": rate, "bits": bits,
+            "noise": noise, "noise_density": CHANNELS[channel]["noise"][noise],
+            "diagnosis": d["defect"], "score": d.get("score", 0.0), "detected": detected,
+            "identified": detected and d["defect"] == defect, "error": d.get("error", "")}
+
+
+def write_map(out, rows, g):
+    """Smallest size detected (and identified) against the sampling rate: one curve per
+    channel and noise level (the finest ADC), for each defect kind."""
+    bits = max(g["bits"])
+    pngs = []
+    for defect in ("inner", "outer"):
+        for what in ("detected", "identified"):
+            dat = os.path.join(out, f"map_{defect}_{what}.dat")
+            series = []
+            with open(dat, "w") as f:
+                for channel in CHANNELS:
+                    for noise in g["noise"]:
+                        f.write(f"# {channel} {noise}\n")
+                        for rate in g["rates"]:
+                            ok = [r["size_deg"] for r in rows if r["defect"] == defect and
+                                  r["channel"] == channel and r["noise"] == noise and
+                                  r["bits"] == bits and r["rate_hz"] == rate and r[what]]
+                            # not seen at any size: drawn above the largest size
+                            f.write(f"{rate:g} {min(ok) if ok else 2 * max(g['sizes']):g}\n")
+                        f.write("\n\n")
+                        series.append(f"{channel}, {noise} noise")
+            png = os.path.join(out, f"map_{defect}_{what}.png")
+            plots = ", ".join(
+                f"'{dat}' index {i} using 1:2 with linespoints lw 2 "
+                f"dt {1 if s.startswith('R') else 2} title '{s}'" for i, s in enumerate(series))
+            script = (f"set terminal pngcairo size 1000,600; set output '{png}'; set logscale xy; "
+                      f"set xlabel 'sampling rate (Hz)'; set ylabel 'smallest {what} size (deg)'; "
+                      f"set yrange [{min(g['sizes']) / 1.5}:{3 * max(g['sizes'])}]; "
+                      f"set title '{defect}-race defect, {bits}-bit ADC: smallest {what} size "
+                      f"(top = not {what} at any size)'; set key outside right; plot {plots}")
+            subprocess.run(["gnuplot", "-e", script], check=True)
+            pngs.append(png)
+    return pngs
+
+
+def smallest(rows, **where):
+    ok = [r["size_deg"] for r in rows if r["defect"] != "none" and
+          all(r[k] == v for k, v in where.items())]
+    return min(ok) if ok else None
+
+
+def write_report(out, rows, g, quick, pngs):
+    cols = ["size_deg", "defect", "channel", "rate_hz", "bits", "noise", "noise_density",
+            "diagnosis", "score", "detected", "identified"]
+    with open(os.path.join(out, "detectability.csv"), "w") as f:
+        f.write(",".join(cols) + "\n")
+        for r in rows:
+            f.write(",".join(("yes" if r[c] else "no") if isinstance(r[c], bool) else
+                             (f"{r[c]:.6g}" if isinstance(r[c], float) else str(r[c]))
+                             for c in cols) + "\n")
+    bits = max(g["bits"])
+    healthy = [r for r in rows if r["defect"] == "none"]
+    false_alarms = sum(r["detected"] for r in healthy)
+    lines = ["# Detectability study, SKF 6208 (ohmdem)", "",
+             f"Regenerated by `inputs/bearing_6208/study_detectability.sh {'--quick ' if quick else ''}OUT`. "
+             f"500 rad/s, radial load 320 N on a free outer ring (load zone at the top), defects "
+             f"from t = 0 (outer: centred in the load zone, {OUTER_POSITION:g} deg), "
+             f"analysis window {T_FROM:g}-{T_FROM + WINDOW:g} s ({WINDOW:g} s, "
+             f"{WINDOW * 500 / (2 * math.pi):.0f} shaft revolutions). "
+             "Each record is acquired by `ohmdem-post acquire` (4th-order Butterworth anti-alias at "
+             "0.4 x the rate, white noise, ADC) and diagnosed by `ohmdem-post diagnose` against the "
+             "healthy run acquired by the same instrument (`--baseline`, another noise seed).", "",
+             "| channel | signal to the ADC | ADC range | noise low / mid / high (V/sqrt(Hz)) |",
+             "|---|---|---|---|"]
+    for name, ch in CHANNELS.items():
+        lines.append(f"| {name} | {ch['column']} x {ch['scale']:g} V | {ch['range'][0]:g} to "
+                     f"{ch['range'][1]:g} V | " + " / ".join(f"{ch['noise'][k]:.3g}" for k in
+                                                           ("low", "mid", "high")) + " |")
+    lines += ["", f"Sizes {', '.join(f'{s:g}' for s in g['sizes'])} deg; rates "
+              f"{', '.join(f'{r:g}' for r in g['rates'])} Hz; noise {', '.join(g['noise'])}; "
+              f"ADC {', '.join(str(b) for b in g['bits'])} bits. {len(rows)} cases.", "",
+              f"False alarms on the healthy run (a second noise seed against the baseline): "
+              f"{false_alarms} of {len(healthy)} acquisitions.", "",
+              f"## Smallest detected / identified size (deg), {bits}-bit ADC", "",
+              "| defect | channel | noise | " + " | ".join(f"{r:g} Hz" for r in g["rates"]) + " |",
+              "|---|---|---|" + "---|" * len(g["rates"])]
+    for defect in ("inner", "outer"):
+        for channel in CHANNELS:
+            for noise in g["noise"]:
+                cells = []
+                for rate in g["rates"]:
+                    d = smallest(rows, defect=defect, channel=channel, noise=noise, bits=bits,
+                                 rate_hz=rate, detected=True)
+                    i = smallest(rows, defect=defect, channel=channel, noise=noise, bits=bits,
+                                 rate_hz=rate, identified=True)
+                    cells.append(f"{'-' if d is None else f'{d:g}'} / {'-' if i is None else f'{i:g}'}")
+                lines.append(f"| {defect} | {channel} | {noise} | " + " | ".join(cells) + " |")
+    lines += ["", "(detected / identified; - : not at any size of the grid)", ""]
+    lines += [f"![{os.path.basename(p)}]({os.path.basename(p)})" for p in pngs] + [""]
+    lines += answer(rows, g)
+    open(os.path.join(out, "detectability.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def answer(rows, g):
+    """The paper's two claims, in numbers from the map."""
+    bits = max(g["bits"])
+    lo_rate, hi_rate = min(g["rates"]), max(g["rates"])
+    out = ["## The paper's two claims", ""]
+    for defect in ("inner", "outer"):
+        for noise in g["noise"]:
+            r_lo = smallest(rows, defect=defect, channel="R", noise=noise, bits=bits,
+                            rate_hz=lo_rate, identified=True)
+            r_hi = smallest(rows, defect=defect, channel="R", noise=noise, bits=bits,
+                            rate_hz=hi_rate, identified=True)
+            a_hi = smallest(rows, defect=defect, channel="acc", noise=noise, bits=bits,
+                            rate_hz=hi_rate, identified=True)
+            fmt = lambda v: "none of the sizes" if v is None else f"{v:g} deg"
+            out.append(f"- {defect} race, {noise} noise: electrically, the smallest identified "
+                       f"defect is {fmt(r_hi)} at {hi_rate:g} Hz and {fmt(r_lo)} at {lo_rate:g} Hz; "
+                       f"by vibration, {fmt(a_hi)} at {hi_rate:g} Hz.")
+    rates_needed = {}
+    for channel in CHANNELS:
+        for defect in ("inner", "outer"):
+            for size in g["sizes"]:
+                ok = sorted(r["rate_hz"] for r in rows if r["channel"] == channel and
+                            r["defect"] == defect and r["size_deg"] == size and r["bits"] == bits
+                            and r["noise"] == g["noise"][0] and r["identified"])
+                rates_needed[(channel, defect, size)] = ok[0] if ok else None
+    out += ["", "Lowest sampling rate that identifies each size (lowest noise, "
+            f"{bits} bits):", "", "| channel | defect | " +
+            " | ".join(f"{s:g} deg" for s in g["sizes"]) + " |",
+            "|---|---|" + "---|" * len(g["sizes"])]
+    for channel in CHANNELS:
+        for defect in ("inner", "outer"):
+            out.append(f"| {channel} | {defect} | " + " | ".join(
+                "-" if rates_needed[(channel, defect, s)] is None else
+                f"{rates_needed[(channel, defect, s)]:g} Hz" for s in g["sizes"]) + " |")
+    out.append("")
+    return out
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("out", help="output folder")
+    p.add_argument("--quick", action="store_true", help="reduced grid (under 5 minutes)")
+    p.add_argument("--jobs", type=int, default=2, help="acquisitions in parallel [2]")
+    a = p.parse_args()
+    out = os.path.abspath(a.out)
+    g = grid(a.quick)
+    os.makedirs(os.path.join(out, "acq"), exist_ok=True)
+    sims = simulate(out, g["sizes"])
+    instruments = [(c, r, n, b) for c in CHANNELS for r in g["rates"] for n in g["noise"]
+                   for b in g["bits"]]
+    baselines = {}
+    for c, r, n, b in instruments:  # the healthy run through the same instrument, seed 2
+        tag = instrument_tag(c, r, n, b)
+        baselines[tag] = os.path.join(out, "acq", f"baseline_{tag}.txt")
+    with cf.ThreadPoolExecutor(a.jobs) as ex:
+        list(ex.map(lambda i: acquire(sims[("none", 0.0)], *i, 2,
+                                      baselines[instrument_tag(*i)]), instruments))
+        jobs = [(k, *i) for k in sims for i in instruments]
+        rows = list(ex.map(lambda j: case(out, sims, j[0], *j[1:], baselines), jobs))
+    rows.sort(key=lambda r: (r["defect"], r["channel"], r["size_deg"], r["rate_hz"], r["noise"],
+                             r["bits"]))
+    pngs = write_map(out, rows, g)
+    write_report(out, rows, g, a.quick, pngs)
+
+
+if __name__ == "__main__":
+    main()

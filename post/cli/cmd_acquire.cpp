@@ -1,0 +1,229 @@
+// ohmdem-post acquire: what an instrument records of a signal (sensitivity, anti-alias filter,
+// sampling, noise, ADC), written as a '#'-headed "time value" table the other commands read.
+#include <cmath>
+#include <iostream>
+
+#include "../acquire.h"
+#include "../error.h"
+#include "../json.h"
+#include "../text_scan.h"
+#include "commands.h"
+#include "common.h"
+
+namespace ohmdem {
+const char *version();
+}
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+// The loader's messages name the input's rate option --rate; here it is --input-rate.
+std::string input_rate_named(std::string s)
+{
+  const std::string from = "--rate", to = "--input-rate";
+  for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size()))
+    if (s.compare(p, to.size(), to) != 0) s.replace(p, from.size(), to);
+  return s;
+}
+
+AcquireSettings settings(const Args &a)
+{
+  AcquireSettings s;
+  s.scale = a.number("--scale", 1);
+  s.offset = a.number("--offset", 0);
+  if (a.has("--lowpass")) {
+    s.lowpass = a.number("--lowpass");
+    if (!(s.lowpass > 0)) throw Error("option --lowpass expects a cut-off > 0 Hz");
+  }
+  const long long order = a.integer("--order", 4);
+  if (order < 1 || order > kMaxButterworthOrder)
+    throw Error("option --order expects a filter order in 1.." +
+                std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(order));
+  s.order = static_cast<int>(order);
+  if (a.has("--order") && !a.has("--lowpass")) throw Error("option --order needs --lowpass HZ");
+  const std::string start = a.get("--filter-start");
+  if (start != "steady" && start != "zero")
+    throw Error("option --filter-start expects steady|zero, got '" + start + "'");
+  s.steady_start = start == "steady";
+  if (a.has("--rate")) {
+    s.rate = a.number("--rate");
+    if (!(s.rate > 0)) throw Error("option --rate expects a rate > 0 Hz");
+  }
+  if (a.has("--noise-rms") && a.has("--noise-density"))
+    throw Error("give the noise once: --noise-rms or --noise-density");
+  s.noise_rms = a.number("--noise-rms", 0);
+  s.noise_density = a.number("--noise-density", 0);
+  if (s.noise_rms < 0) throw Error("option --noise-rms expects a value >= 0");
+  if (s.noise_density < 0) throw Error("option --noise-density expects a value >= 0");
+  if (a.has("--input-referred")) {
+    if (!a.has("--noise-rms") && !a.has("--noise-density"))
+      throw Error("option --input-referred needs --noise-rms or --noise-density");
+    s.noise_rms *= std::abs(s.scale);
+    s.noise_density *= std::abs(s.scale);
+  }
+  const long long seed = a.integer("--seed", 1);
+  if (seed < 0) throw Error("option --seed expects an integer >= 0");
+  s.seed = static_cast<std::uint64_t>(seed);
+  if (a.has("--bits") != a.has("--range"))
+    throw Error(a.has("--bits") ? "option --bits needs --range LO HI (the ADC's input range)"
+                                : "option --range needs --bits N (the ADC's resolution)");
+  if (a.has("--bits")) {
+    const long long bits = a.integer("--bits", 0);
+    if (bits < 1 || bits > 32)
+      throw Error("option --bits expects 1..32, got " + std::to_string(bits));
+    s.bits = static_cast<int>(bits);
+    const auto r = a.values("--range");
+    s.lo = parse_option_double("--range", r[0]);
+    s.hi = parse_option_double("--range", r[1]);
+    if (!(s.lo < s.hi))
+      throw Error("option --range expects LO < HI, got " + r[0] + " " + r[1] +
+                  " (an empty ADC range)");
+  }
+  return s;
+}
+
+std::string setting_lines(const Args &a, const AcquireSettings &s, const Acquisition &q,
+                          double fs_in, const std::string &unit)
+{
+  const Signal &y = q.signal;
+  auto line = [](const std::string &k, const std::string &v) { return "# " + k + ": " + v + "\n"; };
+  std::string m;
+  m +=
+      line("chain", "scale/offset -> anti-alias low-pass (input rate) -> sampling -> noise -> ADC");
+  m += line("scale", format_number(s.scale, 10) + " (output = scale * input + offset)");
+  m += line("offset", format_number(s.offset, 10));
+  if (q.filter.empty())
+    m += line("lowpass", "none");
+  else
+    m += line("lowpass", "Butterworth order " + std::to_string(s.order) + ", cut-off " +
+                             format_number(s.lowpass) + " Hz (-3 dB), " +
+                             std::to_string(q.filter.size()) + " sections at " +
+                             format_number(fs_in, 10) + " Hz, " +
+                             (s.steady_start ? "steady" : "zero") + " initial state");
+  if (q.decimation == 1 && !a.has("--rate"))
+    m += line("sampling", "the input's samples");
+  else if (q.decimation > 0)
+    m += line("sampling", "every k-th sample of the input, k = " + std::to_string(q.decimation));
+  else
+    m += line("sampling",
+              "cubic (4-point Lagrange) interpolation at " + format_number(y.rate, 10) +
+                  " Hz; error on a tone at f <= (3/128)(2 pi f/" + format_number(fs_in, 10) +
+                  ")^4 of its amplitude (" +
+                  format_number(
+                      cubic_interpolation_error(s.lowpass > 0 ? s.lowpass : y.rate / 2, fs_in), 3) +
+                  (s.lowpass > 0 ? " at the cut-off)" : " at the output Nyquist frequency)"));
+  if (q.noise_sigma > 0)
+    m += line("noise", "white Gaussian added to the samples, rms " +
+                           format_number(q.noise_sigma, 10) + " (" +
+                           (s.noise_density > 0 ? "density " + format_number(s.noise_density, 10) +
+                                                      " per sqrt(Hz) over 0 to rate/2 = " +
+                                                      format_number(y.rate / 2, 10) + " Hz"
+                                                : std::string("--noise-rms")) +
+                           (a.has("--input-referred") ? ", input-referred x |scale|" : "") +
+                           "), mt19937_64 + Box-Muller, seed " + std::to_string(s.seed));
+  else
+    m += line("noise", "none");
+  if (s.bits > 0)
+    m += line("adc", std::to_string(s.bits) + " bits, range " + format_number(s.lo, 10) + " to " +
+                         format_number(s.hi, 10) + ", q = " + format_number(q.q, 10) +
+                         ", mid-tread (levels LO + k q), clipped " + std::to_string(q.clipped) +
+                         " of " + std::to_string(y.size()));
+  else
+    m += line("adc", "none");
+  if (!unit.empty()) m += line("unit", unit);
+  m += line("sampling rate (Hz)", format_number(y.rate, 10));
+  m += line("samples", std::to_string(y.size()));
+  m += line("duration (s)", format_number(y.duration()));
+  return m;
+}
+
+}  // namespace
+
+int run_acquire(const std::vector<std::string> &argv)
+{
+  Args a("acquire", "[options] FILE",
+         "What an instrument records of the signal, written as a '#'-headed 'time value' table\n"
+         "(or CSV) that the other commands read. The chain, in this order, every step optional:\n"
+         "  1. column, then output = scale * input + offset (the sensor's sensitivity);\n"
+         "  2. anti-alias Butterworth low-pass (--lowpass), run at the input rate;\n"
+         "  3. sampling at --rate: every k-th sample when the rate divides the input rate,\n"
+         "     else cubic interpolation of the filtered signal at the instrument's times;\n"
+         "  4. white Gaussian noise added to each sample (the front end's noise at the ADC\n"
+         "     input): --noise-rms per sample, or --noise-density D over the output band\n"
+         "     0..rate/2, i.e. rms = D sqrt(rate/2);\n"
+         "  5. ADC: codes at LO + k q, q = (HI-LO)/2^bits, k = 0..2^bits-1, nearest code\n"
+         "     (mid-tread, ties up), values beyond the codes clipped (with a warning).\n"
+         "The time column keeps the input's clock. No option: a copy of the column.");
+  add_input_options(a, "--input-rate");
+  a.section("Measurement chain");
+  a.option("--scale", "K",
+           "sensitivity: output = K * input + offset (e.g. the injected current in A to turn "
+           "R in ohm into volts; an accelerometer's V/(m/s^2))",
+           "1");
+  a.option("--offset", "X", "added after the scale (output unit)", "0");
+  a.option("--lowpass", "HZ",
+           "anti-alias Butterworth low-pass cut-off (-3 dB), below the output Nyquist rate/2");
+  a.option("--order", "N", "order of the low-pass (1..20)", "4");
+  a.option("--filter-start", "HOW",
+           "filter state at the first sample: steady (as if the first value had lasted "
+           "forever: no start-up transient) | zero (as scipy's sosfilt)",
+           "steady");
+  a.option("--rate", "HZ", "the instrument's sampling rate (default: the input's)");
+  a.option("--noise-rms", "X", "white noise rms per sample (output unit)");
+  a.option("--noise-density", "X",
+           "white noise density (output unit per sqrt(Hz)); rms = X sqrt(rate/2)");
+  a.flag("--input-referred",
+         "the noise is given in the input's unit (a datasheet's noise density): times |scale|");
+  a.option("--seed", "N", "seed of the noise (same seed, same record)", "1");
+  a.option("--bits", "N", "ADC resolution (1..32); needs --range");
+  a.option("--range", "LO HI", "ADC input range (output unit); needs --bits", "", 2);
+  a.section("Output");
+  a.option("--name", "NAME", "name of the value column (default: the input column's)");
+  a.option("--format", "FMT", "table ('# time NAME' header, blank-separated) | csv", "table");
+  a.option("--output", "FILE", "write to FILE instead of standard output");
+  a.option("--unit", "UNIT", "unit of the output, written in the metadata");
+  if (!a.parse(argv, std::cout)) return 0;
+  const AcquireSettings set = settings(a);
+  const RunMetadata meta = run_metadata(a);
+  Signal s;
+  try {
+    s = load_input(a, meta, 4, false, "--input-rate");
+  } catch (const Error &e) {
+    throw Error(input_rate_named(e.what()));
+  }
+  const std::string name = a.has("--name") ? a.get("--name") : s.name;
+  if (name.empty() || name.find_first_of(" \t\r\n,#\"") != std::string::npos)
+    throw Error("option --name expects one word without blanks, commas, quotes or '#', got '" +
+                name + "'");
+  if (name == "time")
+    throw Error("the value column cannot be called 'time' (the time column's name): give --name");
+  const Acquisition q = acquire(s, set);
+  Output out(a);
+  if (out.format() == OutputFormat::Json)
+    throw Error("option --format expects table|csv for acquire (the other commands read them)");
+  for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << w << "\n";
+
+  std::string text =
+      "# ohmdem-post " + std::string(ohmdem::version()) + " acquire: what an instrument records\n";
+  for (const auto &kv : s.meta)
+    text += "# " + (kv.first == "source" ? kv.first : "input " + kv.first) + ": " +
+            input_rate_named(kv.second) + "\n";
+  text += setting_lines(a, set, q, s.rate, a.get("--unit"));
+  const bool csv = out.format() == OutputFormat::Csv;
+  text += csv ? "time," + name + "\n" : "# time " + name + "\n";
+  const char sep = csv ? ',' : ' ';
+  const Signal &y = q.signal;
+  for (std::size_t i = 0; i < y.size(); ++i) {
+    text += json_number(y.time(i));
+    text += sep;
+    text += json_number(y.x[i]);
+    text += '\n';
+  }
+  out.stream() << text;
+  out.stream().flush();
+  if (!out.stream()) throw Error("acquire: writing the output failed");
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli

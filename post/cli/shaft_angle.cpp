@@ -1,0 +1,93 @@
+#include "shaft_angle.h"
+
+#include <cmath>
+
+#include "../error.h"
+#include "../load_signal.h"
+#include "common.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The column `name` over the samples of `s` (same options, window from s's time stamps).
+Signal companion_column(const Args &a, const RunMetadata &meta, const Signal &s,
+                        const std::string &name)
+{
+  InputOptions o = input_options(a);
+  o.column = name;
+  o.min_samples = 2;
+  o.from = s.t0 - 0.5 / s.rate;
+  o.to = s.time(s.size() - 1) + 0.5 / s.rate;
+  Signal c = load_signal(o, meta);
+  if (c.size() != s.size() || std::fabs(c.t0 - s.t0) > 0.5 / s.rate)
+    throw Error("column " + name + ": " + std::to_string(c.size()) + " samples from " +
+                format_number(c.t0) + " s do not line up with the signal's " +
+                std::to_string(s.size()) + " from " + format_number(s.t0) + " s");
+  return c;
+}
+
+}  // namespace
+
+void add_shaft_angle_options(Args &a)
+{
+  a.section("Shaft angle (order tracking)");
+  a.option("--angle-column", "NAME|N",
+           "column (or MAT variable) holding the shaft angle in rad, accumulated (default: "
+           "angle_inner when present)");
+  a.option("--speed-column", "NAME|N",
+           "column (or MAT variable) holding the shaft speed, integrated to the angle "
+           "(cumulative trapezoid); unit --speed-unit");
+  a.option("--speed-unit", "UNIT", "unit of --speed-column: rad/s | rpm | hz", "rad/s");
+}
+
+std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata &meta,
+                                               const Signal &s)
+{
+  if (a.has("--angle-column") && a.has("--speed-column"))
+    throw Error("give the shaft angle once: --angle-column or --speed-column");
+  const SpeedUnit unit = parse_speed_unit(a.get("--speed-unit"));
+  ShaftAngle sa;
+  if (a.has("--speed-column")) {
+    const Signal c = companion_column(a, meta, s, a.get("--speed-column"));
+    std::vector<double> w = c.x;
+    for (double &v : w) v = to_rad_per_s(v, unit);
+    sa.theta = angle_from_speed(w, s.rate);
+    sa.source =
+        "column " + c.name + " (" + speed_unit_name(unit) + "), integrated (cumulative trapezoid)";
+  } else {
+    std::string name = a.get("--angle-column");
+    if (name.empty()) {
+      // our signal.txt: angle_inner, if the file has it (any error means it has not)
+      if (a.positional().empty() || a.get("--input") == "mat") return std::nullopt;
+      try {
+        sa.theta = companion_column(a, meta, s, "angle_inner").x;
+      } catch (const Error &) {
+        return std::nullopt;
+      }
+      name = "angle_inner";
+    } else {
+      const Signal c = companion_column(a, meta, s, name);
+      sa.theta = c.x;
+      name = c.name;
+    }
+    sa.source = "column " + name + " (rad)";
+  }
+  sa.speed = speed_summary(sa.theta, s.rate);
+  return sa;
+}
+
+ShaftAngle constant_shaft_angle(const Signal &s, double fr, const std::string &source)
+{
+  ShaftAngle sa;
+  sa.theta.resize(s.size());
+  for (std::size_t i = 0; i < s.size(); ++i)
+    sa.theta[i] = 2 * kPi * fr * static_cast<double>(i) / s.rate;
+  sa.source = "constant speed " + format_number(fr, 8) + " Hz (" + source + ")";
+  sa.speed = speed_summary(sa.theta, s.rate);
+  return sa;
+}
+
+}  // namespace ohmdem::post::cli

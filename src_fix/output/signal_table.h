@@ -1,0 +1,64 @@
+// A '#'-headed table of numbers written row by row at full rate: each value in its shortest
+// round-trip decimal form (std::to_chars: reads back to the same double), rows gathered in a
+// large buffer and written in blocks, flushed at least every `flush_seconds` of wall time so
+// that a reader (tail -f, a crash) sees recent rows. Plain C++: no LIGGGHTS types.
+#ifndef OHMDEM_SIGNAL_TABLE_H
+#define OHMDEM_SIGNAL_TABLE_H
+
+#include <chrono>
+#include <cstddef>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace ohmdem {
+
+class SignalTable {
+ public:
+  struct Options {
+    std::string path;
+    std::vector<std::string> columns;  // header names, one per value of a row
+    // Continue an existing file: its header must name the same columns; rows whose first
+    // value is >= `resume_from` (a run continued from an earlier restart) are dropped first.
+    bool append = false;
+    double resume_from = 0.0;
+    std::size_t buffer_bytes = std::size_t(1) << 20;
+    double flush_seconds = 1.0;
+  };
+
+  // Throws std::runtime_error naming the file and what is wrong.
+  explicit SignalTable(const Options &opt);
+  ~SignalTable();
+  SignalTable(const SignalTable &) = delete;
+  SignalTable &operator=(const SignalTable &) = delete;
+
+  // One row of columns().size() values.
+  void row(const double *values);
+  void flush();
+  const std::vector<std::string> &columns() const { return columns_; }
+  std::size_t rows_dropped() const { return dropped_; }
+
+ private:
+  std::FILE *fp_ = nullptr;
+  std::vector<std::string> columns_;
+  std::vector<char> buffer_;
+  std::size_t used_ = 0;
+  std::size_t dropped_ = 0;
+  unsigned rows_since_clock_ = 0;
+  double flush_seconds_;
+  std::chrono::steady_clock::time_point last_flush_;
+  std::string path_;
+};
+
+// The header line of a table with these columns: "# name1 name2 ...".
+std::string signal_table_header(const std::vector<std::string> &columns);
+
+// For SignalTable's append mode: checks that `path`'s header names `columns` and truncates
+// the rows whose first value is >= t. Returns the number of rows removed. Throws
+// std::runtime_error (another header, an unreadable row) naming the file.
+std::size_t truncate_signal_table(const std::string &path, const std::vector<std::string> &columns,
+                                  double t);
+
+}  // namespace ohmdem
+
+#endif
