@@ -6,7 +6,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(bearing/defect,FixBearingDefect)
+// clang-format on
 
 #else
 

@@ -5,7 +5,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(bearing/race,FixBearingRace)
+// clang-format on
 
 #else
 

@@ -5,7 +5,9 @@
 
 #ifdef COMPUTE_CLASS
 
+// clang-format off
 ComputeStyle(contact/area,ComputeContactArea)
+// clang-format on
 
 #else
 

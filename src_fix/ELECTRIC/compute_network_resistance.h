@@ -5,7 +5,9 @@
 
 #ifdef COMPUTE_CLASS
 
-ComputeStyle(network / resistance, ComputeNetworkResistance)
+// clang-format off
+ComputeStyle(network/resistance,ComputeNetworkResistance)
+// clang-format on
 
 #else
 

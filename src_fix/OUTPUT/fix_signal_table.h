@@ -6,7 +6,9 @@
 
 #ifdef FIX_CLASS
 
+// clang-format off
 FixStyle(signal/table,FixSignalTable)
+// clang-format on
 
 #else
 
