@@ -2,9 +2,9 @@
 // purpose: this list is included once for the class declarations and again with FIX_CLASS /
 // COMPUTE_CLASS defined, where each header expands to its FixStyle(...) / ComputeStyle(...)
 // line (the LAMMPS style-header convention). Adding a style = adding its header here.
-#include "BEARING/fix_bearing_race.h"
 #include "BEARING/fix_bearing_cage.h"
-#include "ELECTRIC/compute_network_resistance.h"
-#include "ELECTRIC/compute_contact_area.h"
 #include "BEARING/fix_bearing_defect.h"
+#include "BEARING/fix_bearing_race.h"
+#include "ELECTRIC/compute_contact_area.h"
+#include "ELECTRIC/compute_network_resistance.h"
 #include "OUTPUT/fix_signal_table.h"

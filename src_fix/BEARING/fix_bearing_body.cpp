@@ -16,8 +16,8 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-FixBearingBody::FixBearingBody(LAMMPS *lmp, int narg, char **arg, int vector_size,
-                               int peratom_cols, const char *state_name)
+FixBearingBody::FixBearingBody(LAMMPS *lmp, int narg, char **arg, int vector_size, int peratom_cols,
+                               const char *state_name)
     : Fix(lmp, narg, arg), state_name_(std::string(state_name) + id)
 {
   vector_flag = 1;

@@ -66,13 +66,13 @@ class FixBearingCage : public FixBearingBody {
 
   // last force evaluation
   double torque_ = 0, sum_fn_ = 0, max_fn_ = 0;
-  int nmasked_ = 0;  // ball contacts with a broken cage bar (fix bearing/defect cage)
+  int nmasked_ = 0;        // ball contacts with a broken cage bar (fix bearing/defect cage)
   double ball_orbit_ = 0;  // mean orbital angular speed of the balls about the axis
   bool wall_broken(const ohmdem::BearingSurface &surface, int pocket, int side) const;
   int ncontacts_ = 0;
   // Per ball: pocket force, torque on the cage, orbital angular speed about the axis.
   // Members so that their memory is reused from step to step.
-  std::vector<ohmdem::TaggedValues<3>> mine_;
+  std::vector<ohmdem::TaggedValues<3> > mine_;
   ohmdem::OrderedGather<3> gather_;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;

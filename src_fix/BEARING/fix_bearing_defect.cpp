@@ -31,12 +31,18 @@ FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
 {
   ohmdem::StyleArgs a(error, "fix bearing/defect", narg, arg, 3);
   const std::string kind = a.word("kind", "none, inner, outer, ball or cage as first argument");
-  if (kind == "none") kind_ = Kind::None;
-  else if (kind == "inner") kind_ = Kind::Inner;
-  else if (kind == "outer") kind_ = Kind::Outer;
-  else if (kind == "ball") kind_ = Kind::Ball;
-  else if (kind == "cage") kind_ = Kind::Cage;
-  else a.fail("kind", "none, inner, outer, ball or cage as first argument", kind.c_str());
+  if (kind == "none")
+    kind_ = Kind::None;
+  else if (kind == "inner")
+    kind_ = Kind::Inner;
+  else if (kind == "outer")
+    kind_ = Kind::Outer;
+  else if (kind == "ball")
+    kind_ = Kind::Ball;
+  else if (kind == "cage")
+    kind_ = Kind::Cage;
+  else
+    a.fail("kind", "none, inner, outer, ball or cage as first argument", kind.c_str());
   // Keywords that the kind does not use are read and ignored, so that one deck line with
   // -var defect KIND serves every kind.
   bool have_size = false, have_pocket = false;
@@ -67,9 +73,12 @@ FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
       have_pocket = true;
     } else if (kw == "side") {
       const std::string sd = a.word(kw, "leading or trailing");
-      if (sd == "leading") side_ = 1;
-      else if (sd == "trailing") side_ = -1;
-      else a.fail(kw, "leading or trailing", sd.c_str());
+      if (sd == "leading")
+        side_ = 1;
+      else if (sd == "trailing")
+        side_ = -1;
+      else
+        a.fail(kw, "leading or trailing", sd.c_str());
     } else {
       a.unknown(kw.c_str(), "race atom cage position size arc depth start pocket side");
     }
@@ -110,7 +119,9 @@ void FixBearingDefect::init()
 {
   race_ = nullptr;
   cage_ = nullptr;
-  auto fail = [&](const std::string &msg) { error->all(FLERR, ("fix bearing/defect: " + msg).c_str()); };
+  auto fail = [&](const std::string &msg) {
+    error->all(FLERR, ("fix bearing/defect: " + msg).c_str());
+  };
   if (kind_ == Kind::Inner || kind_ == Kind::Outer) {
     const bool want_inner = kind_ == Kind::Inner;
     for (const auto &name : races_) {
@@ -126,8 +137,8 @@ void FixBearingDefect::init()
     if (!cage_) fail("keyword 'cage' expects the ID of a fix bearing/cage, got '" + target_ + "'");
     const int pockets = cage_->surface().pockets;
     if (pocket_ >= pockets)
-      fail("keyword 'pocket' expects a pocket index 0.." + std::to_string(pockets - 1) +
-           ", got " + std::to_string(pocket_));
+      fail("keyword 'pocket' expects a pocket index 0.." + std::to_string(pockets - 1) + ", got " +
+           std::to_string(pocket_));
   }
 }
 
@@ -145,8 +156,10 @@ void FixBearingDefect::setup(int)
   double all[2];
   MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_SUM, world);
   if (all[0] != 1.0) {
-    const std::string msg = "fix bearing/defect: keyword 'atom' expects the atom ID of a ball, "
-                            "got " + std::to_string(ball_) + " (no such atom)";
+    const std::string msg =
+        "fix bearing/defect: keyword 'atom' expects the atom ID of a ball, "
+        "got " +
+        std::to_string(ball_) + " (no such atom)";
     error->all(FLERR, msg.c_str());
   }
   ball_radius_ = all[1];
@@ -169,9 +182,12 @@ double FixBearingDefect::zone_centre() const
 {
   switch (kind_) {
     case Kind::Inner:
-    case Kind::Outer: return zone_centre(race_ ? race_->surface().angle : 0.0);
-    case Kind::Cage: return zone_centre(cage_ ? cage_->surface().angle : 0.0);
-    default: return zone_centre(0.0);
+    case Kind::Outer:
+      return zone_centre(race_ ? race_->surface().angle : 0.0);
+    case Kind::Cage:
+      return zone_centre(cage_ ? cage_->surface().angle : 0.0);
+    default:
+      return zone_centre(0.0);
   }
 }
 
@@ -179,10 +195,14 @@ double FixBearingDefect::zone_centre(double body_angle) const
 {
   switch (kind_) {
     case Kind::Inner:
-    case Kind::Outer: return position_ + body_angle;
-    case Kind::Ball: return position_ + spin_;
-    case Kind::Cage: return body_angle;
-    case Kind::None: return 0.0;
+    case Kind::Outer:
+      return position_ + body_angle;
+    case Kind::Ball:
+      return position_ + spin_;
+    case Kind::Cage:
+      return body_angle;
+    case Kind::None:
+      return 0.0;
   }
   return 0.0;
 }

@@ -49,24 +49,24 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   bool breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const override;
 
  private:
-  double zone_centre() const;  // lab angle of the zone centre (rad)
+  double zone_centre() const;                   // lab angle of the zone centre (rad)
   double zone_centre(double body_angle) const;  // the same, given the defective body's angle
   const ohmdem::BearingBody *find_body(const std::string &id, bool cage) const;
-  bool active() const;         // the defect exists from time `start` on
+  bool active() const;  // the defect exists from time `start` on
 
   Kind kind_ = Kind::Inner;
-  std::vector<std::string> races_;  // inner/outer: candidate race IDs
-  std::string target_;              // cage ID
+  std::vector<std::string> races_;             // inner/outer: candidate race IDs
+  std::string target_;                         // cage ID
   const ohmdem::BearingBody *race_ = nullptr;  // inner/outer: the defective race
   const ohmdem::BearingBody *cage_ = nullptr;  // cage: the defective cage
-  tagint ball_ = 0;           // ball defect: the ball's atom ID
-  double position_ = 0;       // zone centre in the body frame (rad)
-  double size_ = 0;           // angular size (rad); 0 when given as an arc length
-  double arc_ = 0;            // arc length (m); 0 when given as an angle
-  double depth_ = 5e-6;       // pit depth (m)
-  double start_ = 0;          // time from which the defect exists (s)
-  int pocket_ = 0, side_ = 1;  // cage defect
-  double spin_ = 0;           // ball defect: the ball's rotation angle about z (rad)
+  tagint ball_ = 0;                            // ball defect: the ball's atom ID
+  double position_ = 0;                        // zone centre in the body frame (rad)
+  double size_ = 0;                            // angular size (rad); 0 when given as an arc length
+  double arc_ = 0;                             // arc length (m); 0 when given as an angle
+  double depth_ = 5e-6;                        // pit depth (m)
+  double start_ = 0;                           // time from which the defect exists (s)
+  int pocket_ = 0, side_ = 1;                  // cage defect
+  double spin_ = 0;  // ball defect: the ball's rotation angle about z (rad)
   double ball_radius_ = 0;
 };
 

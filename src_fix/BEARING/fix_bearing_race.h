@@ -24,7 +24,7 @@ FixStyle(bearing/race,FixBearingRace)
 namespace ohmdem {
 struct RaceContactModel;
 class StyleArgs;
-}
+}  // namespace ohmdem
 
 namespace LAMMPS_NS {
 
@@ -50,7 +50,11 @@ class FixBearingRace : public FixBearingBody {
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return inner_; }
   double current_radius() const;
-  void centre(double &x, double &y) const { x = cx_; y = cy_; }
+  void centre(double &x, double &y) const
+  {
+    x = cx_;
+    y = cy_;
+  }
   double angle() const { return angle_; }
   ohmdem::BearingSurface surface() const override;
   int race_type() const { return race_type_; }
@@ -72,19 +76,19 @@ class FixBearingRace : public FixBearingBody {
   int race_type_ = 0;
   double omega_ = 0, ramp_ = 0;
   Load load_ = Load::None;
-  double load_force_ = 0;          // force / settle: isotropic F (N)
+  double load_force_ = 0;             // force / settle: isotropic F (N)
   double load_fx_ = 0, load_fy_ = 0;  // radial load vector (N)
-  double dir_ux_ = 0, dir_uy_ = -1;    // unit load direction (outputs along/across it)
-  double interference_ = 0;        // fixed: imposed radial interference (m)
-  double settle_time_ = 0;         // settle: force control until this time (s)
+  double dir_ux_ = 0, dir_uy_ = -1;   // unit load direction (outputs along/across it)
+  double interference_ = 0;           // fixed: imposed radial interference (m)
+  double settle_time_ = 0;            // settle: force control until this time (s)
   double ring_mass_ = 0, ring_damp_ = 0;
 
   // --- ring state (identical on all ranks; written to restart)
-  double time_ = 0;     // time since the fix started acting (s)
-  double angle_ = 0;    // ring rotation (rad)
-  double u_ = 0, u_dot_ = 0;          // radial interference toward the balls (m)
+  double time_ = 0;                             // time since the fix started acting (s)
+  double angle_ = 0;                            // ring rotation (rad)
+  double u_ = 0, u_dot_ = 0;                    // radial interference toward the balls (m)
   double cx_ = 0, cy_ = 0, vcx_ = 0, vcy_ = 0;  // ring centre
-  bool frozen_ = false;  // settle mode: the radius is held since settle_time
+  bool frozen_ = false;                         // settle mode: the radius is held since settle_time
 
   // --- reactions of the last force evaluation (deterministic sums, see ordered_reduce.h)
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
@@ -93,7 +97,7 @@ class FixBearingRace : public FixBearingBody {
   double defect_recess(int i, const ohmdem::BearingSurface &surface, bool &in_zone) const;
   // Per touching ball: force on the ball x, y, normal force, torque on the race. Members so
   // that their memory is reused from step to step.
-  std::vector<ohmdem::TaggedValues<4>> mine_;
+  std::vector<ohmdem::TaggedValues<4> > mine_;
   ohmdem::OrderedGather<4> gather_;
 
   std::unique_ptr<ohmdem::RaceContactModel> model_;

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "ELECTRIC/contact_set.h"
 #include "memory.h"
 #include "support/args.h"
-#include "ELECTRIC/contact_set.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -28,9 +28,12 @@ ComputeContactArea::ComputeContactArea(LAMMPS *lmp, int &iarg, int narg, char **
     const std::string kw = a.word("keyword", "a keyword");
     if (kw == "area") {
       const std::string m = a.word(kw, "greenwood or exact");
-      if (m == "greenwood") exact = false;
-      else if (m == "exact") exact = true;
-      else a.fail(kw, "greenwood or exact", m.c_str());
+      if (m == "greenwood")
+        exact = false;
+      else if (m == "exact")
+        exact = true;
+      else
+        a.fail(kw, "greenwood or exact", m.c_str());
     } else if (kw == "pair") {
       pair = a.yes_no(kw);
     } else {

@@ -2,24 +2,21 @@
 
 #include <cmath>
 
+#include "BEARING/fix_bearing_race.h"
 #include "atom.h"
 #include "compute_pair_gran_local.h"
+#include "contact/race_contact.h"
 #include "error.h"
-#include "BEARING/fix_bearing_race.h"
 #include "force.h"
-#include "support/material_table.h"
 #include "modify.h"
 #include "pair.h"
-#include "contact/race_contact.h"
+#include "support/material_table.h"
 
 using namespace LAMMPS_NS;
 
 ContactSet::ContactSet(LAMMPS *lmp, const std::string &owner_id, ohmdem::AreaModel model,
                        bool use_pair)
-    : Pointers(lmp),
-      owner_id_(owner_id),
-      model_(model),
-      want_pair_(use_pair)
+    : Pointers(lmp), owner_id_(owner_id), model_(model), want_pair_(use_pair)
 {
 }
 

@@ -24,10 +24,10 @@ class ComputePairGranLocal;
 class ContactSet : protected Pointers {
  public:
   struct Contact {
-    tagint tag1 = 0;   // a particle of the group, owned by this process
-    tagint tag2 = 0;   // the other particle; 0 for a race
-    int race = -1;     // index in races() for a ball–race contact, -1 otherwise
-    double fn = 0;     // normal force (N), > 0
+    tagint tag1 = 0;  // a particle of the group, owned by this process
+    tagint tag2 = 0;  // the other particle; 0 for a race
+    int race = -1;    // index in races() for a ball–race contact, -1 otherwise
+    double fn = 0;    // normal force (N), > 0
     double point[3] = {0, 0, 0};
     ohmdem::ContactEllipse ellipse;
   };

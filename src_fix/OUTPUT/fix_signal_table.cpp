@@ -69,8 +69,9 @@ void FixSignalTable::parse(int narg, char **arg)
 {
   ohmdem::StyleArgs a(error, "fix signal/table", narg, arg, 3);
   nevery = a.integer("N", "the output interval N, a number of steps >= 1", 1, 1 << 30);
-  const char *forms = "time, step, c_ID, c_ID[I], f_ID, f_ID[I], v_name (I >= 1), or a sum of "
-                      "c_/f_/v_ references joined by + without blanks";
+  const char *forms =
+      "time, step, c_ID, c_ID[I], f_ID, f_ID[I], v_name (I >= 1), or a sum of "
+      "c_/f_/v_ references joined by + without blanks";
   while (!a.done() && is_value(a.peek())) {
     const std::string w = a.word("value", "a value");
     Value value;
@@ -112,10 +113,14 @@ void FixSignalTable::parse(int narg, char **arg)
       }
     } else if (kw == "append") {
       const std::string w = a.word(kw, "yes, no or auto");
-      if (w == "yes") append_ = Append::Yes;
-      else if (w == "no") append_ = Append::No;
-      else if (w == "auto") append_ = Append::Auto;
-      else a.fail(kw, "yes, no or auto", w.c_str());
+      if (w == "yes")
+        append_ = Append::Yes;
+      else if (w == "no")
+        append_ = Append::No;
+      else if (w == "auto")
+        append_ = Append::Auto;
+      else
+        a.fail(kw, "yes, no or auto", w.c_str());
     } else if (kw == "flush") {
       flush_seconds_ = a.non_negative(kw, "the longest wall time between two flushes, >= 0 (s)");
     } else {
@@ -191,8 +196,10 @@ void FixSignalTable::open_table()
     try {
       table_ = std::make_unique<ohmdem::SignalTable>(o);
       if (table_->rows_dropped())
-        error->warning(FLERR, ("fix signal/table: dropped " + std::to_string(table_->rows_dropped()) +
-                               " rows of '" + path_ + "' written after the restart point").c_str());
+        error->warning(FLERR,
+                       ("fix signal/table: dropped " + std::to_string(table_->rows_dropped()) +
+                        " rows of '" + path_ + "' written after the restart point")
+                           .c_str());
     } catch (const std::exception &e) {
       msg = e.what();
     }
@@ -235,8 +242,10 @@ double FixSignalTable::compute_scalar()
 double FixSignalTable::evaluate(const Term &v)
 {
   switch (v.kind) {
-    case Kind::Time: return simulated_time();
-    case Kind::Step: return static_cast<double>(update->ntimestep);
+    case Kind::Time:
+      return simulated_time();
+    case Kind::Step:
+      return static_cast<double>(update->ntimestep);
     case Kind::Compute: {
       Compute *c = modify->compute[v.slot];
       if (v.index == 0) {
@@ -256,7 +265,8 @@ double FixSignalTable::evaluate(const Term &v)
       Fix *f = modify->fix[v.slot];
       return v.index == 0 ? f->compute_scalar() : f->compute_vector(v.index - 1);
     }
-    case Kind::Variable: return input->variable->compute_equal(v.slot);
+    case Kind::Variable:
+      return input->variable->compute_equal(v.slot);
   }
   return 0.0;
 }

@@ -45,9 +45,9 @@ class FixSignalTable : public Fix {
   enum class Kind { Time, Step, Compute, Fix, Variable };
   struct Term {
     Kind kind;
-    std::string id;   // compute, fix or variable ID
-    int index = 0;    // 0: the scalar, k >= 1: element k of the global vector
-    int slot = -1;    // position in modify's/variable's lists, resolved in init()
+    std::string id;  // compute, fix or variable ID
+    int index = 0;   // 0: the scalar, k >= 1: element k of the global vector
+    int slot = -1;   // position in modify's/variable's lists, resolved in init()
   };
   // A value is one reference or a sum of references (f_a[6]+f_b[6]): summed here rather
   // than through an equal-style variable, whose formula is parsed again at every evaluation.
@@ -67,9 +67,9 @@ class FixSignalTable : public Fix {
   double flush_seconds_ = 1.0;
 
   // The simulated time, kept by the fix so that it survives restarts and changes of dt.
-  double time_ = 0.0;      // the time of the reference step
-  bigint time_step_ = 0;   // the reference step
-  double dt_ref_ = 0.0;    // the step length since the reference
+  double time_ = 0.0;     // the time of the reference step
+  bigint time_step_ = 0;  // the reference step
+  double dt_ref_ = 0.0;   // the step length since the reference
   bool restored_ = false;
   double restored_time_ = 0.0;
 

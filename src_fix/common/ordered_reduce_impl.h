@@ -8,8 +8,7 @@
 namespace ohmdem {
 
 template <int N>
-OrderedView<N> OrderedGather<N>::gather(
-    const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
+OrderedView<N> OrderedGather<N>::gather(const std::vector<TaggedValues<N>> &local, MPI_Comm comm)
 {
   static_assert(sizeof(TaggedValues<N>) == sizeof(std::int64_t) + N * sizeof(double),
                 "TaggedValues must be packed to be sent as bytes");

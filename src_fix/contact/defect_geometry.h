@@ -28,7 +28,10 @@ struct Pit {
 double pit_recess(const Pit &pit, double s);
 
 // Whether the contact at arc offset s lies in the zone (|s| < w/2).
-inline bool in_pit(const Pit &pit, double s) { return 2.0 * (s < 0 ? -s : s) < pit.width; }
+inline bool in_pit(const Pit &pit, double s)
+{
+  return 2.0 * (s < 0 ? -s : s) < pit.width;
+}
 
 // Largest recess of a pit (at its centre): what the ball can drop at most.
 double pit_max_recess(const Pit &pit);

@@ -21,8 +21,6 @@
 
 namespace ohmdem {
 
-
-
 double sphere_volume(double radius);
 // Radius of the circle of area S (the equivalent radius of an elliptic spot).
 double spot_radius(double area);

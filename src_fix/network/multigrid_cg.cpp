@@ -119,12 +119,12 @@ MultigridResult multigrid_cg(int n, const int *row_start, const int *columns, co
   HYPRE_BoomerAMGSetPrintLevel(h.amg, 0);
   HYPRE_BoomerAMGSetMaxIter(h.amg, 1);
   HYPRE_BoomerAMGSetTol(h.amg, 0.0);
-  HYPRE_BoomerAMGSetCoarsenType(h.amg, 10);      // HMIS
-  HYPRE_BoomerAMGSetInterpType(h.amg, 6);        // extended+i
+  HYPRE_BoomerAMGSetCoarsenType(h.amg, 10);  // HMIS
+  HYPRE_BoomerAMGSetInterpType(h.amg, 6);    // extended+i
   HYPRE_BoomerAMGSetPMaxElmts(h.amg, 4);
   HYPRE_BoomerAMGSetAggNumLevels(h.amg, 1);
   HYPRE_BoomerAMGSetStrongThreshold(h.amg, 0.25);
-  HYPRE_BoomerAMGSetRelaxType(h.amg, 6);         // symmetric hybrid Gauss-Seidel
+  HYPRE_BoomerAMGSetRelaxType(h.amg, 6);  // symmetric hybrid Gauss-Seidel
   HYPRE_BoomerAMGSetNumSweeps(h.amg, 1);
 
   HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &h.cg);

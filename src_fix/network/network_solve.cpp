@@ -59,8 +59,14 @@ class SystemSolver::Run {
  public:
   Run(SystemSolver &owner, const ReducedSystem &sys, const SolverOptions &opt,
       const WarmStart &warm, std::vector<double> &v, NetworkSolution &s)
-      : owner_(owner), sys_(sys), opt_(opt), warm_(warm), v_(v), s_(s),
-        n_(static_cast<int>(sys.adj.size())), m_(s.unknowns)
+      : owner_(owner),
+        sys_(sys),
+        opt_(opt),
+        warm_(warm),
+        v_(v),
+        s_(s),
+        n_(static_cast<int>(sys.adj.size())),
+        m_(s.unknowns)
   {
   }
   void assemble();
@@ -204,9 +210,9 @@ bool SystemSolver::Run::run_cg(int maxit, bool multigrid)
   if (multigrid) {
     A_.makeCompressed();  // symmetric: its compressed columns are its compressed rows
     y_ = y0;
-    const MultigridResult r = multigrid_cg(m_, A_.outerIndexPtr(), A_.innerIndexPtr(),
-                                           A_.valuePtr(), b_.data(), y_.data(),
-                                           opt_.cg_tolerance, maxit);
+    const MultigridResult r =
+        multigrid_cg(m_, A_.outerIndexPtr(), A_.innerIndexPtr(), A_.valuePtr(), b_.data(),
+                     y_.data(), opt_.cg_tolerance, maxit);
     s_.iterations = r.iterations;
     s_.method = SolveMethod::MultigridCG;
     return r.converged;
@@ -229,9 +235,9 @@ bool SystemSolver::Run::run_cg(int maxit, bool multigrid)
 // where R is still right to 1e-14).
 bool SystemSolver::Run::conjugate_gradient(SolverKind kind, bool chose)
 {
-  const bool multigrid = opt_.preconditioner == Preconditioner::Multigrid ||
-                         (chose && kind == SolverKind::ConjugateGradient &&
-                          m_ >= opt_.auto_multigrid_unknowns);
+  const bool multigrid =
+      opt_.preconditioner == Preconditioner::Multigrid ||
+      (chose && kind == SolverKind::ConjugateGradient && m_ >= opt_.auto_multigrid_unknowns);
   if (!(kind == SolverKind::ConjugateGradient &&
         run_cg(opt_.cg_max_iterations > 0 ? opt_.cg_max_iterations : std::max(1000, 2 * m_),
                multigrid) &&

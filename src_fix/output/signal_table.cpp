@@ -61,8 +61,10 @@ std::size_t truncate_signal_table(const std::string &path, const std::vector<std
         fail(path, "row " + std::to_string(lineno) + " does not start with a number");
       if (v >= t) cut = true;
     }
-    if (cut) ++dropped;
-    else keep = static_cast<std::uintmax_t>(in.tellg());
+    if (cut)
+      ++dropped;
+    else
+      keep = static_cast<std::uintmax_t>(in.tellg());
   }
   in.close();
   if (keep < std::filesystem::file_size(path)) std::filesystem::resize_file(path, keep);

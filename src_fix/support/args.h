@@ -15,7 +15,9 @@ namespace ohmdem {
 class StyleArgs {
  public:
   StyleArgs(LAMMPS_NS::Error *error, std::string style, int narg, char **arg, int first)
-      : error_(error), style_(std::move(style)), narg_(narg), arg_(arg), pos_(first) {}
+      : error_(error), style_(std::move(style)), narg_(narg), arg_(arg), pos_(first)
+  {
+  }
 
   bool done() const { return pos_ >= narg_; }
   const char *peek() const { return pos_ < narg_ ? arg_[pos_] : ""; }
@@ -76,8 +78,8 @@ class StyleArgs {
 
   [[noreturn]] void fail(const std::string &keyword, const std::string &what, const char *got)
   {
-    const std::string msg = style_ + ": keyword '" + keyword + "' expects " + what + ", got '" +
-                            got + "'";
+    const std::string msg =
+        style_ + ": keyword '" + keyword + "' expects " + what + ", got '" + got + "'";
     error_->all(FLERR, msg.c_str());
     std::abort();  // error->all does not return; this keeps the compiler informed
   }

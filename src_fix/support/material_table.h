@@ -4,8 +4,8 @@
 #define OHMDEM_MATERIAL_TABLE_H
 
 #include "atom.h"
-#include "fix_property_global.h"
 #include "contact/hertz_contact.h"
+#include "fix_property_global.h"
 #include "modify.h"
 
 namespace ohmdem {

@@ -18,16 +18,15 @@ inline void create_peratom_state(LAMMPS_NS::Modify *modify, const std::string &n
 {
   if (modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, caller, false))
     return;
-  std::vector<const char *> arg = {name.c_str(), "all", "property/atom", name.c_str(),
-                                   "vector",     "yes", "no",            "no"};
+  std::vector<const char *> arg = {
+      name.c_str(), "all", "property/atom", name.c_str(), "vector", "yes", "no", "no"};
   for (const auto &d : defaults) arg.push_back(d.c_str());
   modify->add_fix_property_atom(static_cast<int>(arg.size()), const_cast<char **>(arg.data()),
                                 caller);
 }
 
 inline LAMMPS_NS::FixPropertyAtom *find_peratom_state(LAMMPS_NS::Modify *modify,
-                                                       const std::string &name,
-                                                       const char *caller)
+                                                      const std::string &name, const char *caller)
 {
   return static_cast<LAMMPS_NS::FixPropertyAtom *>(
       modify->find_fix_property(name.c_str(), "property/atom", "vector", 0, 0, caller));

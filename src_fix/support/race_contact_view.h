@@ -12,9 +12,9 @@ class RaceContactView {
   enum Column { kFn, kDelta, kFt, kPointX, kPointY, kInDefect, kColumns };
 
   explicit RaceContactView(const double *row) : row_(row) {}
-  double fn() const { return row_[kFn]; }          // normal force (N), 0 without contact
-  double delta() const { return row_[kDelta]; }    // approach (m)
-  double ft() const { return row_[kFt]; }          // tangential force (N)
+  double fn() const { return row_[kFn]; }           // normal force (N), 0 without contact
+  double delta() const { return row_[kDelta]; }     // approach (m)
+  double ft() const { return row_[kFt]; }           // tangential force (N)
   double point_x() const { return row_[kPointX]; }  // contact point (m)
   double point_y() const { return row_[kPointY]; }
   bool in_defect() const { return row_[kInDefect] > 0.0; }  // the point lies in a defect zone

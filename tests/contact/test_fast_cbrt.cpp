@@ -13,8 +13,8 @@ namespace {
 // Distance in units in the last place of `ref`.
 double ulps(double value, double ref)
 {
-  const double ulp = std::nextafter(std::fabs(ref), std::numeric_limits<double>::infinity()) -
-                     std::fabs(ref);
+  const double ulp =
+      std::nextafter(std::fabs(ref), std::numeric_limits<double>::infinity()) - std::fabs(ref);
   return std::fabs(value - ref) / ulp;
 }
 
@@ -32,7 +32,8 @@ TEST(FastCbrt, WithinThreeUlpOverSixHundredDecades)
 
 TEST(FastCbrt, ExactCubesAndTheForcesOfABearing)
 {
-  for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-3, 123.0}) EXPECT_LE(ulps(ohmdem::cbrt_fast(r * r * r), r), 3.0);
+  for (double r : {1.0, 2.0, 3.0, 10.0, 0.5, 1e-3, 123.0})
+    EXPECT_LE(ulps(ohmdem::cbrt_fast(r * r * r), r), 3.0);
   // Products of two ball–race forces (N^2), the argument in the closed-form resistance.
   for (double q : {1e-12, 3.7e-6, 1.0, 625.0, 2.5e3, 1e8})
     EXPECT_LE(ulps(ohmdem::cbrt_fast(q), std::cbrt(q)), 3.0) << q;
@@ -42,7 +43,8 @@ TEST(FastCbrt, EdgeArgumentsAreLibmsAnswers)
 {
   const double inf = std::numeric_limits<double>::infinity();
   const double sub = std::numeric_limits<double>::denorm_min();
-  for (double x : {0.0, -0.0, -8.0, -1e-5, sub, 1e-310, 1e301, std::numeric_limits<double>::max(), inf, -inf})
+  for (double x :
+       {0.0, -0.0, -8.0, -1e-5, sub, 1e-310, 1e301, std::numeric_limits<double>::max(), inf, -inf})
     EXPECT_EQ(ohmdem::cbrt_fast(x), std::cbrt(x)) << x;
   EXPECT_TRUE(std::isnan(ohmdem::cbrt_fast(std::nan(""))));
   // The bounds of the fast range stay accurate.

@@ -67,9 +67,15 @@ TEST(SignalTable, ValuesReadBackBitForBit)
   {
     ohmdem::SignalTable t(options(path, {"time", "a", "b"}));
     // Random bit patterns over the whole finite range, plus the awkward ones.
-    const std::vector<double> special = {0.0, -0.0, 1e-310, -std::numeric_limits<double>::min(),
-                                         std::numeric_limits<double>::max(), 0.1, 1.0 / 3.0,
-                                         2.5e-7, -1.23456789012345678e300};
+    const std::vector<double> special = {0.0,
+                                         -0.0,
+                                         1e-310,
+                                         -std::numeric_limits<double>::min(),
+                                         std::numeric_limits<double>::max(),
+                                         0.1,
+                                         1.0 / 3.0,
+                                         2.5e-7,
+                                         -1.23456789012345678e300};
     for (int i = 0; i < 20000; ++i) {
       double v[3];
       for (double &x : v) {
