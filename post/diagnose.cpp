@@ -84,18 +84,27 @@ std::string times(int h, const char *name)
   return std::to_string(h) + "x" + name;
 }
 
+// Harmonics of f0 (at most --harmonics) whose comb, searched within the tolerance, and whose
+// decoys (up to 1.3 f0) stay below the highest resolved frequency f_top.
+int harmonics_below_nyquist(double f0, const DiagnoseOptions &opt, double f_top)
+{
+  const double reach = 1.3 * (1 + opt.tolerance) * f0;
+  const double fit = std::floor(f_top / reach);
+  return static_cast<int>(std::clamp(fit, 0.0, static_cast<double>(opt.harmonics)));
+}
+
 // Harmonic comb of a defect family on one spectrum: the fundamental is searched within the
 // slip tolerance; each harmonic counts by its prominence; sidebands (shaft for inner, cage for
 // ball) add up to a quarter.
 FamilyScore comb(const Analysed &a, const char *defect, const char *label, double f0,
-                 double sideband, const char *sb_label, const DiagnoseOptions &opt)
+                 double sideband, const char *sb_label, int H, const DiagnoseOptions &opt)
 {
   FamilyScore fs;
   fs.defect = defect;
   fs.label = label;
   fs.nominal_hz = f0;
   fs.spectrum = a.name;
-  const int H = opt.harmonics;
+  fs.harmonics = H;
   const double width = 1.5;  // bins around each harmonic
   const double step = a.s.df / 4;
   const int nsteps = static_cast<int>(std::ceil(opt.tolerance * f0 / step));
@@ -149,12 +158,21 @@ FamilyScore comb(const Analysed &a, const char *defect, const char *label, doubl
 FamilyScore family(const Analysed &a, const char *defect, const char *label, double f0,
                    double sideband, const char *sb_label, const DiagnoseOptions &opt)
 {
-  FamilyScore fs = comb(a, defect, label, f0, sideband, sb_label, opt);
+  const int H = harmonics_below_nyquist(f0, opt, a.s.df * static_cast<double>(a.s.bins() - 1));
+  if (H == 0) {  // even the fundamental lies beyond what the record resolves
+    FamilyScore fs;
+    fs.defect = defect;
+    fs.label = label;
+    fs.nominal_hz = fs.frequency_hz = f0;
+    fs.spectrum = a.name;
+    return fs;
+  }
+  FamilyScore fs = comb(a, defect, label, f0, sideband, sb_label, H, opt);
   std::vector<double> decoys;
   for (int i = -20; i <= 20; ++i) {
     const double r = 1 + 0.015 * i;
     if (std::fabs(r - 1) < 0.1 - 1e-9) continue;
-    decoys.push_back(comb(a, defect, label, f0 * r, sideband, sb_label, opt).comb);
+    decoys.push_back(comb(a, defect, label, f0 * r, sideband, sb_label, H, opt).comb);
   }
   std::sort(decoys.begin(), decoys.end());
   fs.chance = decoys[(decoys.size() * 3) / 4];
@@ -264,11 +282,13 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.kinematics = defect_frequencies(opt.geometry, opt.fr);
   const DefectFrequencies &k = d.kinematics;
   const double fmax = std::max({k.bpfi, k.bpfo, 2 * k.bsf});
-  if (opt.harmonics * fmax * (1 + opt.tolerance) + k.fr >= s.rate / 2)
-    throw Error("sampling rate " + format_number(s.rate) +
-                " Hz too low: " + std::to_string(opt.harmonics) + " harmonics of " +
-                format_number(fmax) + " Hz need more than " +
-                format_number(2 * (opt.harmonics * fmax + k.fr)) + " Hz (or lower --harmonics)");
+  const double fmin = std::min({k.bpfi, k.bpfo, k.bsf});
+  // A slow instrument sees fewer harmonics (each family is scored on those below Nyquist, with
+  // a warning); one that sees no race or ball fundamental cannot identify anything.
+  if (1.3 * (1 + opt.tolerance) * fmin >= s.rate / 2)
+    throw Error("sampling rate " + format_number(s.rate) + " Hz too low: the lowest defect " +
+                "frequency " + format_number(fmin) + " Hz needs more than " +
+                format_number(2.6 * (1 + opt.tolerance) * fmin) + " Hz");
   const double duration = s.duration();
   if (duration * k.ftf < 2)
     throw Error("record too short: " + format_number(duration) +
@@ -323,6 +343,12 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   }
   for (std::size_t i = 0; i < fe.size(); ++i)
     d.families.push_back(fe[i].margin >= fr[i].margin ? fe[i] : fr[i]);
+  for (const auto &f : d.families)
+    if (f.harmonics < opt.harmonics)
+      d.warnings.push_back(f.defect + " family (" + f.label + " " + format_number(f.nominal_hz) +
+                           " Hz) scored on " + std::to_string(f.harmonics) + " of " +
+                           std::to_string(opt.harmonics) + " harmonics: the sampling rate " +
+                           format_number(s.rate) + " Hz cuts the rest");
 
   // inner/outer/ball compete; cage lines are also the ball's modulation, so cage is only
   // reported when no race or ball family is present
@@ -340,6 +366,21 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.score = best->score;  // the best (insufficient) family score
     if (d.detection.fired) d.defect = "unidentified";
   }
+  // A family the rate cannot see might be the one that explains the record: naming another
+  // would be a guess (an inner defect sampled at 1 kHz scores as cage), so a fault stays
+  // unidentified.
+  for (const auto &f : d.families)
+    if (f.defect != "cage" && f.harmonics == 0 && d.defect != "none" &&
+        d.defect != "unidentified") {
+      d.warnings.push_back("the " + f.defect + " family lies above Nyquist: " + d.defect +
+                           " (score " + format_number(d.score, 3) +
+                           ") cannot be told from it, reported as unidentified");
+      d.defect = "unidentified";
+      d.label.clear();
+      d.frequency_hz = 0;
+      d.evidence.clear();
+      break;
+    }
   d.detected = d.defect != "none";
   if (opt.estimate_size) d.size = estimate_size(s, d, opt.geometry);
   return d;

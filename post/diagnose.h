@@ -52,6 +52,9 @@ struct FamilyScore {
   // above the baseline's spectrum at the same frequency; NaN without a baseline.
   double baseline_excess = std::numeric_limits<double>::quiet_NaN();
   std::string spectrum;     // which spectrum gave the score
+  // harmonics scored: --harmonics, fewer when the comb (and its decoys, up to 1.3 x) would
+  // pass Nyquist; 0 when even the fundamental does (the family cannot be seen at this rate)
+  int harmonics = 0;
   std::vector<Evidence> evidence;
 };
 
@@ -83,6 +86,7 @@ struct Diagnosis {
   double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
   bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
   SizeEstimate size;
+  std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
 };
 
 Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt);

@@ -114,7 +114,7 @@ int run_diagnose(const std::vector<std::string> &argv)
   const BearingChoice bc = bearing_choice(a, meta);
   if (!bc.geometry)
     throw Error(
-        "diagnose: give the bearing (--bearing 6208|6205 or --nb --db --dp) or a "
+        "diagnose: give the bearing (--bearing NAME of the catalog, or --nb --db --dp) or a "
         "run.json with it");
   // order tracking (issue 17): an angle/speed column whose speed varies by more than --tolerance
   // switches the diagnosis to the angle domain
@@ -161,6 +161,7 @@ int run_diagnose(const std::vector<std::string> &argv)
                 "diagnosed in the angle domain); give a record at constant speed");
   const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
+  for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);
 
   MetaList m = s.meta;
@@ -208,6 +209,7 @@ int run_diagnose(const std::vector<std::string> &argv)
       o2.set("comb", f.comb);
       o2.set("chance", f.chance);
       o2.set("margin_db", f.margin);
+      o2.set("harmonics", f.harmonics);
       if (std::isfinite(f.baseline_excess)) o2.set("baseline_excess_db", f.baseline_excess);
       o2.set("spectrum", f.spectrum);
       fams.set(f.defect, o2);

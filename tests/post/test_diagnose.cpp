@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "diagnose.h"
+#include "error.h"
 #include "synth.h"
 
 namespace ohmdem::post {
@@ -103,6 +104,41 @@ TEST(Diagnose, HealthySignalsAreNone)
   spec.kind = "none";
   const auto flat = test::defect_signal(bearing_preset("6208"), spec);
   EXPECT_EQ(diagnose(flat.signal, options_6208()).defect, "none");
+}
+
+// The record averaged over blocks of m samples: a slow instrument (the block mean is its
+// anti-alias filter).
+Signal block_mean(const Signal &s, std::size_t m)
+{
+  Signal out;
+  out.rate = s.rate / static_cast<double>(m);
+  for (std::size_t i = 0; i + m <= s.x.size(); i += m) {
+    double sum = 0;
+    for (std::size_t j = 0; j < m; ++j) sum += s.x[i + j];
+    out.x.push_back(sum / static_cast<double>(m));
+  }
+  return out;
+}
+
+TEST(Diagnose, AFamilyAboveNyquistLeavesTheFaultUnidentified)
+{
+  // 1.6 kHz: BPFI (625 Hz at 500 rad/s, its comb searched up to 1.3 x 1.05 x) is beyond the
+  // 800 Hz Nyquist frequency, BPFO (410 Hz) and 2 BSF (366 Hz) fit one harmonic each. An inner
+  // defect must not be named after a family it aliases onto.
+  const Diagnosis d = diagnose(block_mean(make("inner").signal, 625), options_6208());
+  EXPECT_TRUE(d.defect == "unidentified" || d.defect == "none") << d.defect;
+  ASSERT_EQ(d.families.size(), 4u);
+  EXPECT_EQ(d.families[0].harmonics, 0);  // inner
+  EXPECT_EQ(d.families[1].harmonics, 1);  // outer
+  bool warned = false;
+  for (const auto &w : d.warnings) warned |= w.find("inner family") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // at 1 MHz every family has its 5 harmonics and no warning
+  const Diagnosis full = diagnose(make("inner").signal, options_6208());
+  EXPECT_TRUE(full.warnings.empty());
+  for (const auto &f : full.families) EXPECT_EQ(f.harmonics, 5) << f.defect;
+  // below every race and ball line nothing can be said
+  EXPECT_THROW(diagnose(block_mean(make("inner").signal, 5000), options_6208()), Error);
 }
 
 TEST(Diagnose, CageTrainIsCage)
