@@ -49,7 +49,10 @@ template struct PrivateAccess<ComputeMapTag, &Modify::compute_map>;
 
 // LIGGGHTS' own creator idiom: the engine owns and deletes the object.
 template <typename T>
-Fix *make_fix(LAMMPS *lmp, int narg, char **arg) { return new T(lmp, narg, arg); }
+Fix *make_fix(LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
 template <typename T>
 Compute *make_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
 {
@@ -100,7 +103,8 @@ Fn liggghts_original(const char *mangled)
 // The hooks. Member functions of LAMMPS are called with `this` as first argument.
 void LAMMPS::post_create()
 {
-  static const auto original = liggghts_original<void (*)(LAMMPS *)>("_ZN9LAMMPS_NS6LAMMPS11post_createEv");
+  static const auto original =
+      liggghts_original<void (*)(LAMMPS *)>("_ZN9LAMMPS_NS6LAMMPS11post_createEv");
   original(this);
   register_styles(this);
 }

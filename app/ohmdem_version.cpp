@@ -1,4 +1,7 @@
 // The project version, one definition for the engine and the post tool.
 namespace ohmdem {
-const char *version() { return OHMDEM_VERSION; }
+const char *version()
+{
+  return OHMDEM_VERSION;
+}
 }  // namespace ohmdem

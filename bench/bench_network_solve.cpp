@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 #include "network_test_utils.h"
 
 using namespace ohmdem;

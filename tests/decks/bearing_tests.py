@@ -71,7 +71,7 @@ def sliding_end(sig, omega_inner, tol=0.01):
 
 
 def test_hertz_static(r):
-    # Exact Hertz constants of the 6208 contacts, from scipy (tests/hertz/make_reference.py,
+    # Exact Hertz constants of the 6208 contacts, from scipy (tests/contact/make_reference.py,
     # Johnson's elliptic solution with complete elliptic integrals), independent of our C++.
     k_ref = {"inner": 31035759069.643959, "outer": 29417740738.337234}
     geom = {"inner": (DINN / 2, 0.00655), "outer": (DEXT / 2, 0.00665)}
@@ -159,7 +159,8 @@ def test_resistance(r):
     err = np.max(np.abs(R / r_ref - 1))
     check(err < 1e-9, f"R equals the parallel sum of 13 eq. 1 ball resistors (max rel. error {err:.1e})")
     # The paper's healthy value (Machado et al. 2014, Fig. 9b): 1.39 ohm; F = 320 N is the load
-    # that the design note derives for it.
+    # that gives it with the Greenwood areas (inputs/bearing_6208/in.bearing,
+    # doc/bearing_catalog.md).
     check(abs(R.mean() / 1.39 - 1) < 0.03, f"R = {R.mean():.4f} ohm vs the paper's 1.39 ohm "
           f"({R.mean() / 1.39 - 1:+.2%})")
     check(fluct < 1e-6, "R is steady after the sliding phase")

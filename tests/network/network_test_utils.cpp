@@ -13,8 +13,8 @@
 #include <random>
 #include <sstream>
 
-#include "conductance_models.h"
-#include "network_export.h"
+#include "electric/conductance_laws.h"
+#include "network/network_export.h"
 
 namespace ohmdem_test {
 

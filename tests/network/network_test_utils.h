@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 
 namespace ohmdem_test {
 

@@ -1,5 +1,5 @@
-// CG preconditioned by algebraic multigrid (src_fix/multigrid_cg.*, hypre's BoomerAMG) and its
-// use by the network solver. References: a dense long-double solve (test utils), the sparse
+// CG preconditioned by algebraic multigrid (src_fix/network/multigrid_cg.*, hypre's BoomerAMG) and
+// its use by the network solver. References: a dense long-double solve (test utils), the sparse
 // direct solve, ngspice, and the analytic solution of a 1D Laplacian. A separate executable:
 // hypre brings MPI up, which the leak-checked (ASan) run of test_network must not see.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
-#include "multigrid_cg.h"
+#include "network/conduction_network.h"
+#include "network/multigrid_cg.h"
 #include "network_test_utils.h"
 
 using namespace ohmdem;
@@ -57,7 +57,8 @@ TEST(Multigrid, OneDimensionalLaplacianAgainstItsExactSolution)
       multigrid_cg(n, start.data(), cols.data(), vals.data(), b.data(), x.data(), 1e-10, 200);
   EXPECT_LE(again.iterations, 1);
   // An empty system is solved.
-  EXPECT_TRUE(multigrid_cg(0, start.data(), nullptr, nullptr, nullptr, nullptr, 1e-8, 10).converged);
+  EXPECT_TRUE(
+      multigrid_cg(0, start.data(), nullptr, nullptr, nullptr, nullptr, 1e-8, 10).converged);
 }
 
 TEST(Multigrid, MatchesTheDenseReference)
@@ -90,8 +91,8 @@ TEST(Multigrid, IterationsHardlyGrowWithSizeUnlikeDiagonalCG)
     (n == 7 ? amg_small : amg_large) = a.iterations;
     (n == 7 ? jac_small : jac_large) = j.iterations;
   }
-  std::printf("[ info ] iterations 7^3 -> 22^3: multigrid %d -> %d, diagonal %d -> %d\n",
-              amg_small, amg_large, jac_small, jac_large);
+  std::printf("[ info ] iterations 7^3 -> 22^3: multigrid %d -> %d, diagonal %d -> %d\n", amg_small,
+              amg_large, jac_small, jac_large);
   EXPECT_LT(amg_large, 2 * amg_small);
   EXPECT_GT(jac_large, 2 * jac_small);
   EXPECT_LT(4 * amg_large, jac_large);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <vector>
 
-#include "conductance_models.h"
-#include "conduction_network.h"
+#include "electric/conductance_laws.h"
+#include "network/conduction_network.h"
 
 using namespace ohmdem;
 

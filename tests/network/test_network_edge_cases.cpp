@@ -6,7 +6,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 
 using namespace ohmdem;
 

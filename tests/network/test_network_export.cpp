@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "conduction_network.h"
-#include "network_export.h"
+#include "network/conduction_network.h"
+#include "network/network_export.h"
 
 using namespace ohmdem;
 

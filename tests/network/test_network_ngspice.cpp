@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "conduction_network.h"
+#include "network/conduction_network.h"
 #include "network_test_utils.h"
 
 using namespace ohmdem;

@@ -8,8 +8,8 @@
 #include <random>
 #include <sstream>
 
-#include "conduction_network.h"
-#include "network_export.h"
+#include "network/conduction_network.h"
+#include "network/network_export.h"
 #include "network_test_utils.h"
 
 using namespace ohmdem;

@@ -1,0 +1,60 @@
+/* ----------------------------------------------------------------------
+   ohmdem - the common base of fix bearing/race and fix bearing/cage: a rigid
+   body of the bearing with its own degrees of freedom, a contact state per
+   ball kept in a fix property/atom, and defects that may act on its contacts.
+   Not a style of its own (no FixStyle line).
+------------------------------------------------------------------------- */
+
+#ifndef LMP_FIX_BEARING_BODY_H
+#define LMP_FIX_BEARING_BODY_H
+
+#include <string>
+#include <vector>
+
+#include "fix.h"
+#include "support/bearing_surface.h"
+
+namespace LAMMPS_NS {
+
+class FixBearingBody : public Fix, public ohmdem::BearingBody {
+ public:
+  int setmask() override;  // initial_integrate, post_force, final_integrate
+
+ protected:
+  // vector_size global values and peratom_cols per-atom columns of output; a global restart
+  // record. `state_name`: prefix of the per-ball state's fix property/atom (+ the fix ID).
+  FixBearingBody(class LAMMPS *, int narg, char **arg, int vector_size, int peratom_cols,
+                 const char *state_name);
+
+  // The per-ball state: created in post_create() with one default per column, found in init().
+  void create_state(const std::vector<std::string> &defaults);
+  void find_state();
+  // The defects that act on this kind of body (fix bearing/defect, through BearingDefect).
+  void find_defects(bool cage);
+
+  // Radius and type range of the balls of the group, over all processes.
+  struct GroupBalls {
+    bool empty;
+    double rmin, rmax;
+    int tmin, tmax;
+  };
+  GroupBalls scan_group() const;
+
+  // Right after read_restart: adds back the forces (columns fx, fy, and tz if >= 0) of the
+  // step the restart was written at, and returns true. Recomputing them would use full-step
+  // instead of half-step velocities in the damping and friction terms, and the split run
+  // would drift from the single run.
+  bool reapply_restored_forces(int fx, int fy, int tz);
+
+  class FixPropertyAtom *state_ = nullptr;  // per-ball contact state
+  bool restored_ = false;                   // state was just read from a restart file
+  std::vector<const ohmdem::BearingDefect *> defects_;
+  ohmdem::BearingSurface defect_surface_;  // this step's surface, set only if there are defects
+
+ private:
+  std::string state_name_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif

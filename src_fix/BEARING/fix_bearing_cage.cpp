@@ -1,0 +1,312 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/cage. Contact physics in cage_contact.{h,cpp}; this file
+   parses, assigns balls to pockets, integrates the cage rotation, reduces the
+   reactions in tag order (ordered_reduce.h) and handles restart.
+------------------------------------------------------------------------- */
+
+#include "BEARING/fix_bearing_cage.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "comm.h"
+#include "common/constants.h"
+#include "contact/cage_contact.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "modify.h"
+#include "support/args.h"
+#include "support/global_restart.h"
+#include "support/material_table.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+namespace {
+constexpr int kVectorSize = 8;
+// Per-atom state in a fix property/atom (migrates, restarts); the first kPeratomCols columns
+// are this fix's per-atom output.
+enum Col { POCKET, FORCE, FX, FY, NCOL };
+constexpr int kPeratomCols = 2;  // pocket index, pocket force on the ball (signed, N)
+constexpr int kRestartSize = 8;
+}  // namespace
+
+FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg)
+    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingCage_")
+{
+  parse(narg, arg);
+}
+
+FixBearingCage::~FixBearingCage() = default;
+
+void FixBearingCage::parse(int narg, char **arg)
+{
+  ohmdem::StyleArgs a(error, "fix bearing/cage", narg, arg, 3);
+  bool have[5] = {false, false, false, false, false};
+  while (!a.done()) {
+    const std::string kw = a.word("keyword", "a keyword");
+    if (kw == "pockets") {
+      npockets_ = a.integer(kw, "the number of pockets, an integer >= 2", 2, 100000);
+      have[0] = true;
+    } else if (kw == "radius") {
+      pitch_radius_ = a.positive(kw, "the pitch radius of the pockets, a positive length (m)");
+      have[1] = true;
+    } else if (kw == "clearance") {
+      clearance_ = a.non_negative(kw, "the pocket clearance per side, a length >= 0 (m)");
+      have[2] = true;
+    } else if (kw == "type") {
+      cage_type_ = a.integer(kw, "the cage material type, an atom type 1..ntypes", 1, 1 << 30);
+      have[3] = true;
+    } else if (kw == "mass") {
+      mass_ = a.positive(kw, "the cage mass, a positive mass (kg)");
+      have[4] = true;
+    } else if (kw == "inertia") {
+      inertia_ = a.positive(kw, "the cage moment of inertia about its axis, > 0 (kg m^2)");
+    } else if (kw == "drag") {
+      drag_ = a.non_negative(kw, "a rotational drag coefficient >= 0 (N m s)");
+    } else if (kw == "centre" || kw == "center") {
+      cx_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = a.number(kw, "two coordinates x y (m)");
+    } else if (kw == "angle") {
+      angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * ohmdem::kPi / 180.0;
+    } else {
+      a.unknown(kw.c_str(), "pockets radius clearance type mass inertia drag centre angle");
+    }
+  }
+  const char *names[5] = {"pockets", "radius", "clearance", "type", "mass"};
+  for (int k = 0; k < 5; ++k)
+    if (!have[k]) a.fail(names[k], "a value: the keyword is required", "nothing");
+  if (cage_type_ > atom->ntypes)
+    a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(atom->ntypes),
+           std::to_string(cage_type_).c_str());
+  // A thin ring at the pitch radius unless given.
+  if (inertia_ <= 0.0) inertia_ = mass_ * pitch_radius_ * pitch_radius_;
+  for (int k = 0; k < npockets_; ++k) {
+    pocket_cos_.push_back(std::cos(2.0 * ohmdem::kPi * k / npockets_));
+    pocket_sin_.push_back(std::sin(2.0 * ohmdem::kPi * k / npockets_));
+  }
+}
+
+void FixBearingCage::post_create()
+{
+  // Which pocket each ball sits in (fixed at the first run; -1 = not yet) and the last
+  // pocket force.
+  create_state({"-1.", "0.", "0.", "0."});  // POCKET, FORCE, FX, FY
+  init();
+}
+
+void FixBearingCage::init()
+{
+  if (!atom->sphere_flag || !atom->rmass_flag)
+    error->fix_error(FLERR, this, "requires atom_style sphere");
+  find_state();
+  find_defects(true);
+}
+
+void FixBearingCage::build_model()
+{
+  const GroupBalls g = scan_group();
+  if (g.empty) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  const double rg = g.rmax;
+  const int tg = g.tmax;
+  const ohmdem::MaterialTable mat(lmp, style, true, false);
+  try {
+    model_ = std::make_unique<ohmdem::CageContactModel>(rg, clearance_, mat.E_eff(tg, cage_type_),
+                                                        mat.restitution(tg, cage_type_));
+  } catch (const std::exception &ex) {
+    error->fix_error(FLERR, this, ex.what());
+  }
+  const double spacing = 2.0 * ohmdem::kPi * pitch_radius_ / npockets_;
+  if (2.0 * (rg + clearance_) >= spacing)
+    error->fix_error(FLERR, this,
+                     "pockets overlap: ball diameter + 2*clearance must be smaller than the "
+                     "pocket spacing 2*pi*radius/pockets");
+}
+
+// Each unassigned ball goes to the nearest pocket; two balls in one pocket is an error.
+void FixBearingCage::assign_pockets()
+{
+  double **state = state_->array_atom;
+  std::vector<ohmdem::TaggedValues<1>> mine;
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    double &pocket = state[i][POCKET];
+    if (pocket < 0.0) {
+      const double phi = std::atan2(atom->x[i][1] - cy_, atom->x[i][0] - cx_) - angle_ - angle0_;
+      long k = std::lround(phi * npockets_ / (2.0 * ohmdem::kPi));
+      k = ((k % npockets_) + npockets_) % npockets_;
+      pocket = static_cast<double>(k);
+    }
+    mine.push_back({static_cast<std::int64_t>(atom->tag[i]), {pocket}});
+  }
+  const auto all = ohmdem::gather_by_tag<1>(mine, world);
+  std::vector<std::int64_t> owner(npockets_, -1);
+  for (const auto &r : all) {
+    const int k = static_cast<int>(r.v[0]);
+    if (k < 0 || k >= npockets_) error->fix_error(FLERR, this, "invalid pocket index in restart");
+    if (owner[k] >= 0) {
+      const std::string msg = "atoms " + std::to_string(owner[k]) + " and " +
+                              std::to_string(r.tag) + " are both in pocket " + std::to_string(k) +
+                              ": place one ball per pocket (check 'pockets' and 'angle')";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    owner[k] = r.tag;
+  }
+}
+
+void FixBearingCage::setup(int vflag)
+{
+  build_model();
+  assign_pockets();
+  if (reapply_restored_forces(FX, FY, -1)) return;
+  post_force(vflag);
+}
+
+void FixBearingCage::initial_integrate(int)
+{
+  const double dt = update->dt;
+  omega_ += 0.5 * dt * (torque_ - drag_ * omega_) / inertia_;
+  angle_ += dt * omega_;
+}
+
+void FixBearingCage::final_integrate()
+{
+  omega_ += 0.5 * update->dt * (torque_ - drag_ * omega_) / inertia_;
+}
+
+void FixBearingCage::post_force(int)
+{
+  array_atom = state_->array_atom;  // may have moved when atoms were exchanged
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  ohmdem::CageContactState s;
+  s.centre = {cx_, cy_};
+  s.cage_omega = omega_;
+  const double cos_cage = std::cos(angle_ + angle0_), sin_cage = std::sin(angle_ + angle0_);
+  mine_.clear();
+  int masked = 0;
+  if (!defects_.empty()) defect_surface_ = surface();  // what the defects need, once per step
+  for (int i = 0; i < atom->nlocal; ++i) {
+    double *out = array_atom[i];
+    if (!(atom->mask[i] & groupbit)) continue;
+    out[FORCE] = out[FX] = out[FY] = 0.0;
+    const int k = static_cast<int>(out[POCKET]);
+    s.ball_x = {x[i][0], x[i][1]};
+    s.ball_v = {v[i][0], v[i][1]};
+    s.ball_mass = atom->rmass[i];
+    s.pocket_dir = {cos_cage * pocket_cos_[k] - sin_cage * pocket_sin_[k],
+                    sin_cage * pocket_cos_[k] + cos_cage * pocket_sin_[k]};
+    const auto c = ohmdem::cage_contact(*model_, s);
+    const double rx = x[i][0] - cx_, ry = x[i][1] - cy_;
+    const double r2 = rx * rx + ry * ry;
+    const double orbit = r2 > 0.0 ? (rx * v[i][1] - ry * v[i][0]) / r2 : 0.0;
+    // Built in place: a braced temporary costs a store-forwarding stall per ball.
+    auto &rec = mine_.emplace_back();
+    rec.tag = atom->tag[i];
+    rec.v = {0.0, 0.0, orbit};
+    if (!c.touching) continue;
+    if (!defects_.empty() && wall_broken(defect_surface_, k, c.offset > 0.0 ? 1 : -1)) {
+      ++masked;  // a broken bar: nothing to push on
+      continue;
+    }
+    f[i][0] += c.force_on_ball.x;
+    f[i][1] += c.force_on_ball.y;
+    out[FORCE] = c.offset > 0.0 ? -c.fn : c.fn;
+    out[FX] = c.force_on_ball.x;
+    out[FY] = c.force_on_ball.y;
+    rec.v[0] = c.fn;
+    rec.v[1] = c.torque_on_cage;
+  }
+  nmasked_ = masked;
+  if (!defects_.empty() && comm->nprocs > 1)
+    MPI_Allreduce(&masked, &nmasked_, 1, MPI_INT, MPI_SUM, world);
+  const auto &all = gather_.gather(mine_, world);
+  const auto sum = ohmdem::ordered_sum<3>(all);
+  sum_fn_ = sum[0];
+  torque_ = sum[1];
+  ball_orbit_ = all.empty() ? 0.0 : sum[2] / static_cast<double>(all.size());
+  ncontacts_ = 0;
+  max_fn_ = 0.0;
+  for (const auto &r : all) {
+    if (r.v[0] > 0.0) ++ncontacts_;
+    max_fn_ = std::max(max_fn_, r.v[0]);
+  }
+}
+
+bool FixBearingCage::wall_broken(const ohmdem::BearingSurface &surface, int pocket, int side) const
+{
+  for (const auto *d : defects_)
+    if (d->breaks_wall(surface, pocket, side)) return true;
+  return false;
+}
+
+ohmdem::BearingSurface FixBearingCage::surface() const
+{
+  ohmdem::BearingSurface s;
+  s.body = static_cast<const ohmdem::BearingBody *>(this);
+  s.kind = ohmdem::BodyKind::Cage;
+  s.centre[0] = cx_;
+  s.centre[1] = cy_;
+  s.radius = pitch_radius_;
+  s.angle = angle_;
+  s.pockets = npockets_;
+  return s;
+}
+
+double FixBearingCage::compute_vector(int n)
+{
+  switch (n) {
+    case 0:
+      return angle_;
+    case 1:
+      return omega_;
+    case 2:
+      return ncontacts_;
+    case 3:
+      return sum_fn_;
+    case 4:
+      return max_fn_;
+    case 5:
+      return torque_;
+    case 6:
+      return ball_orbit_;
+    case 7:
+      return nmasked_;
+    default:
+      return 0.0;
+  }
+}
+
+void FixBearingCage::write_restart(FILE *fp)
+{
+  const double list[kRestartSize] = {
+      angle_,  omega_,  static_cast<double>(npockets_),  torque_,
+      sum_fn_, max_fn_, static_cast<double>(ncontacts_), ball_orbit_};
+  ohmdem::write_global_restart(comm->me, fp, list);
+}
+
+void FixBearingCage::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  if (static_cast<int>(list[2]) != npockets_)
+    error->fix_error(FLERR, this, "restart data has a different number of pockets");
+  angle_ = list[0];
+  omega_ = list[1];
+  torque_ = list[3];
+  sum_fn_ = list[4];
+  max_fn_ = list[5];
+  ncontacts_ = static_cast<int>(list[6]);
+  ball_orbit_ = list[7];
+  restored_ = true;
+}
+
+double FixBearingCage::memory_usage()
+{
+  // Per-atom state lives in the fix property/atom, which reports its own.
+  return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage() +
+                             (pocket_cos_.capacity() + pocket_sin_.capacity()) * sizeof(double));
+}

@@ -1,0 +1,370 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/race: an analytic bearing ring with a toroidal groove.
+   Contact physics lives in contact/race_contact.{h,cpp}, the arguments in
+   fix_bearing_race_args.cpp; this file integrates the ring's own degrees of
+   freedom, reduces reactions and handles restart.
+------------------------------------------------------------------------- */
+
+#include "BEARING/fix_bearing_race.h"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "atom.h"
+#include "comm.h"
+#include "contact/race_contact.h"
+#include "error.h"
+#include "fix_property_atom.h"
+#include "force.h"
+#include "modify.h"
+#include "support/global_restart.h"
+#include "support/material_table.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using ohmdem::RaceContactModel;
+
+namespace {
+constexpr int kVectorSize = 15;
+// Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
+// restart files. The first kPeratomCols columns are this fix's per-atom output, the contact
+// that the electrical computes read through RaceContactView; the rest is private state.
+using View = ohmdem::RaceContactView;
+enum Col {
+  FN = View::kFn,
+  DELTA = View::kDelta,
+  FT = View::kFt,
+  PX = View::kPointX,
+  PY = View::kPointY,
+  MASKED = View::kInDefect,
+  FX = View::kColumns,
+  FY,
+  TZ,
+  SHEAR,
+  NCOL
+};
+constexpr int kPeratomCols = View::kColumns;  // fn, delta, ft, contact point x, y, masked
+constexpr int kRestartSize = 17;
+}  // namespace
+
+FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
+    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_")
+{
+  parse(narg, arg);
+}
+
+FixBearingRace::~FixBearingRace() = default;
+
+void FixBearingRace::post_create()
+{
+  // Per-ball contact state: the contact, the last forces, the tangential spring history.
+  create_state(std::vector<std::string>(NCOL, "0."));
+  init();
+}
+
+void FixBearingRace::init()
+{
+  if (!atom->sphere_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
+  find_state();
+  find_defects(false);  // only the defects that can touch a race contact
+}
+
+// Ball type and radius of the group, the materials, and the Hertz model built from them.
+void FixBearingRace::build_model()
+{
+  const GroupBalls g = scan_group();
+  if (g.empty) error->fix_error(FLERR, this, "the fix group contains no atoms");
+  if (g.rmax - g.rmin > 1e-12 * g.rmax)
+    error->fix_error(FLERR, this, "all balls of the group must have the same radius");
+  if (g.tmin != g.tmax)
+    error->fix_error(FLERR, this, "all balls of the group must have the same atom type");
+  ball_radius_ = g.rmax;
+  ball_type_ = g.tmin;
+
+  const ohmdem::MaterialTable mat(lmp, style, true, true);
+  try {
+    model_ = std::make_unique<RaceContactModel>(
+        inner_ ? ohmdem::RaceSide::Inner : ohmdem::RaceSide::Outer, ball_radius_, radius_, groove_,
+        mat.E_eff(ball_type_, race_type_), mat.G_eff(ball_type_, race_type_),
+        mat.restitution(ball_type_, race_type_), mat.friction(ball_type_, race_type_));
+  } catch (const std::exception &ex) {
+    const std::string msg = std::string("invalid race: ") + ex.what() + " (ball radius " +
+                            std::to_string(ball_radius_) + " m, groove " + std::to_string(groove_) +
+                            " m, race radius " + std::to_string(radius_) + " m)";
+    error->fix_error(FLERR, this, msg.c_str());
+  }
+
+  // Balls must fit between an inner and an outer race of the same bearing.
+  for (int k = 0; k < modify->nfix; ++k) {
+    auto *other = dynamic_cast<FixBearingRace *>(modify->fix[k]);
+    if (!other || other == this || other->inner_ == inner_) continue;
+    const double r_in = inner_ ? radius_ : other->radius_;
+    const double r_out = inner_ ? other->radius_ : radius_;
+    const double clearance = r_out - r_in - 2.0 * ball_radius_;
+    if (clearance < -1e-9 * r_out) {
+      const std::string msg = "balls of diameter " + std::to_string(2 * ball_radius_) +
+                              " m do not fit between the inner race (radius " +
+                              std::to_string(r_in) + " m) and the outer race (radius " +
+                              std::to_string(r_out) + " m): diametral clearance " +
+                              std::to_string(clearance) + " m < 0";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  }
+}
+
+void FixBearingRace::setup(int vflag)
+{
+  build_model();
+  if (reapply_restored_forces(FX, FY, TZ)) return;
+  post_force(vflag);
+}
+
+double FixBearingRace::target_omega(double t) const
+{
+  if (ramp_ > 0.0 && t < ramp_) return omega_ * t / ramp_;
+  return omega_;
+}
+
+double FixBearingRace::current_radius() const
+{
+  return inner_ ? radius_ + u_ : radius_ - u_;
+}
+
+ohmdem::BearingSurface FixBearingRace::surface() const
+{
+  ohmdem::BearingSurface s;
+  s.body = static_cast<const ohmdem::BearingBody *>(this);
+  s.kind = inner_ ? ohmdem::BodyKind::InnerRace : ohmdem::BodyKind::OuterRace;
+  s.centre[0] = cx_;
+  s.centre[1] = cy_;
+  s.radius = current_radius();
+  s.angle = angle_;
+  s.ball_radius = model_ ? model_->ball_radius : ball_radius_;
+  return s;
+}
+
+// Half a velocity-Verlet kick of the ring's free degrees of freedom.
+void FixBearingRace::ring_half_kick(double dt)
+{
+  const double h = 0.5 * dt;
+  if ((load_ == Load::Force || load_ == Load::Settle) && !frozen_) {
+    u_dot_ += h * (load_force_ - sum_fn_ - ring_damp_ * u_dot_) / ring_mass_;
+  } else if (load_ == Load::Radial) {
+    // The balls push the ring with the opposite of the forces the ring puts on them.
+    vcx_ += h * (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
+    vcy_ += h * (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
+  }
+}
+
+// The ring centre's acceleration at the end of the step: Newton's law with the forces of this
+// step and the velocity reached (zero unless the centre is free, load radial).
+void FixBearingRace::ring_acceleration(double &ax, double &ay) const
+{
+  ax = ay = 0.0;
+  if (load_ != Load::Radial) return;
+  ax = (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
+  ay = (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
+}
+
+void FixBearingRace::initial_integrate(int)
+{
+  const double dt = update->dt;
+  ring_half_kick(dt);
+  angle_ += dt * target_omega(time_ + 0.5 * dt);
+  u_ += dt * u_dot_;
+  cx_ += dt * vcx_;
+  cy_ += dt * vcy_;
+  time_ += dt;
+  if (load_ == Load::Settle && !frozen_ && time_ >= settle_time_) {
+    frozen_ = true;  // displacement control from now on, at the radius reached under F
+    u_dot_ = 0.0;
+  }
+}
+
+void FixBearingRace::final_integrate()
+{
+  ring_half_kick(update->dt);
+}
+
+void FixBearingRace::post_force(int)
+{
+  array_atom = state_->array_atom;  // may have moved when atoms were exchanged
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega;
+  double **torque = atom->torque;
+  const int nlocal = atom->nlocal;
+  const bool update_history = !update->setupflag;
+  const double dt = update->dt;
+
+  ohmdem::RaceContactState s;
+  s.race_centre = {cx_, cy_};
+  s.race_v = {vcx_, vcy_};
+  s.race_radius = current_radius();
+  s.race_radius_rate = u_dot_;
+  s.race_omega = target_omega(time_);
+
+  mine_.clear();
+  int masked = 0;
+  if (!defects_.empty()) defect_surface_ = surface();  // what the defects need, once per step
+  for (int i = 0; i < nlocal; ++i) {
+    double *out = array_atom[i];
+    if (!(atom->mask[i] & groupbit)) continue;
+    for (int k = FN; k <= TZ; ++k) out[k] = 0.0;
+    s.recess = 0.0;
+    if (!defects_.empty()) {
+      bool in_zone = false;
+      s.recess = defect_recess(i, defect_surface_, in_zone);
+      out[MASKED] = in_zone ? 1.0 : 0.0;
+      masked += in_zone;
+    }
+    s.ball_x = {x[i][0], x[i][1]};
+    s.ball_v = {v[i][0], v[i][1]};
+    s.ball_omega = omega[i][2];
+    s.ball_mass = atom->rmass[i];
+    const auto c = ohmdem::race_contact(*model_, s, dt, update_history, out[SHEAR]);
+    if (!c.touching) continue;
+    f[i][0] += c.force_on_ball.x;
+    f[i][1] += c.force_on_ball.y;
+    torque[i][2] += c.torque_on_ball;
+    out[FN] = c.fn;
+    out[DELTA] = c.delta;
+    out[FT] = c.ft;
+    out[PX] = c.point.x;
+    out[PY] = c.point.y;
+    out[FX] = c.force_on_ball.x;
+    out[FY] = c.force_on_ball.y;
+    out[TZ] = c.torque_on_ball;
+    // Built in place: a braced temporary costs a store-forwarding stall per ball.
+    auto &rec = mine_.emplace_back();
+    rec.tag = atom->tag[i];
+    rec.v = {c.force_on_ball.x, c.force_on_ball.y, c.fn, c.torque_on_race};
+  }
+  nmasked_ = masked;
+  if (!defects_.empty() && comm->nprocs > 1)
+    MPI_Allreduce(&masked, &nmasked_, 1, MPI_INT, MPI_SUM, world);
+  const auto &all = gather_.gather(mine_, world);
+  const auto sum = ohmdem::ordered_sum<4>(all);
+  fx_ = sum[0];
+  fy_ = sum[1];
+  sum_fn_ = sum[2];
+  torque_ = sum[3];
+  ncontacts_ = static_cast<int>(all.size());
+  max_fn_ = 0.0;
+  for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
+}
+
+// Sum of the recesses of the defects under ball i's contact with this race; in_zone is set
+// when the contact point lies in a defect zone (the contact then carries no current).
+double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surface,
+                                     bool &in_zone) const
+{
+  // The contact lies on the line from the race centre to the ball centre.
+  const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
+  double recess = 0.0;
+  for (const auto *d : defects_) recess += d->recess(surface, atom->tag[i], dx, dy, in_zone);
+  return recess;
+}
+
+double FixBearingRace::compute_vector(int n)
+{
+  switch (n) {
+    case 0:
+      return sum_fn_;
+    case 1:
+      return torque_;
+    case 2:
+      return u_;
+    case 3:
+      return cx_;
+    case 4:
+      return cy_;
+    case 5:
+      return ncontacts_;
+    case 6:
+      return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
+    case 7:
+      return max_fn_;
+    case 8:
+      return angle_;
+    case 9:
+      return target_omega(time_);
+    case 10:
+      return nmasked_;
+    default:
+      break;
+  }
+  // The vibration channel: centre velocity and acceleration along the load direction and
+  // across it (the direction turned +90 degrees about z).
+  double ax, ay;
+  ring_acceleration(ax, ay);
+  switch (n) {
+    case 11:
+      return vcx_ * dir_ux_ + vcy_ * dir_uy_;
+    case 12:
+      return -vcx_ * dir_uy_ + vcy_ * dir_ux_;
+    case 13:
+      return ax * dir_ux_ + ay * dir_uy_;
+    case 14:
+      return -ax * dir_uy_ + ay * dir_ux_;
+    default:
+      return 0.0;
+  }
+}
+
+void FixBearingRace::write_restart(FILE *fp)
+{
+  const double list[kRestartSize] = {time_,
+                                     angle_,
+                                     u_,
+                                     u_dot_,
+                                     cx_,
+                                     cy_,
+                                     vcx_,
+                                     vcy_,
+                                     frozen_ ? 1.0 : 0.0,
+                                     static_cast<double>(inner_),
+                                     sum_fn_,
+                                     torque_,
+                                     fx_,
+                                     fy_,
+                                     max_fn_,
+                                     static_cast<double>(ncontacts_),
+                                     static_cast<double>(nmasked_)};
+  ohmdem::write_global_restart(comm->me, fp, list);
+}
+
+void FixBearingRace::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  if (static_cast<bool>(list[9]) != inner_)
+    error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
+  time_ = list[0];
+  angle_ = list[1];
+  u_ = list[2];
+  u_dot_ = list[3];
+  cx_ = list[4];
+  cy_ = list[5];
+  vcx_ = list[6];
+  vcy_ = list[7];
+  frozen_ = list[8] != 0.0;
+  sum_fn_ = list[10];
+  torque_ = list[11];
+  fx_ = list[12];
+  fy_ = list[13];
+  max_fn_ = list[14];
+  ncontacts_ = static_cast<int>(list[15]);
+  nmasked_ = static_cast<int>(list[16]);
+  restored_ = true;
+}
+
+double FixBearingRace::memory_usage()
+{
+  // Per-atom state lives in the fix property/atom, which reports its own.
+  return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage());
+}

@@ -1,0 +1,127 @@
+/* ----------------------------------------------------------------------
+   ohmdem - fix bearing/race: its arguments (the keywords, what each load mode
+   needs, the load vector). The step is in fix_bearing_race.cpp.
+------------------------------------------------------------------------- */
+
+#include <cmath>
+#include <string>
+
+#include "BEARING/fix_bearing_race.h"
+#include "atom.h"
+#include "error.h"
+#include "support/args.h"
+
+using namespace LAMMPS_NS;
+
+void FixBearingRace::parse(int narg, char **arg)
+{
+  ohmdem::StyleArgs a(error, "fix bearing/race", narg, arg, 3);
+  const std::string side = a.word("side", "inner or outer as first argument");
+  if (side == "inner")
+    inner_ = true;
+  else if (side == "outer")
+    inner_ = false;
+  else
+    a.fail("side", "inner or outer as first argument", side.c_str());
+
+  bool have_radius = false, have_groove = false, have_type = false;
+  bool have_force = false, have_settle = false, have_interference = false;
+  double dir_x = 0.0, dir_y = -1.0;
+  while (!a.done()) {
+    const std::string kw = a.word("keyword", "a keyword");
+    if (kw == "radius") {
+      radius_ = a.positive(kw, "the race radius at the groove bottom, a positive length (m)");
+      have_radius = true;
+    } else if (kw == "groove") {
+      groove_ = a.positive(kw, "the groove radius of curvature, a positive length (m)");
+      have_groove = true;
+    } else if (kw == "type") {
+      race_type_ = a.integer(kw, "the race material type, an atom type 1..ntypes", 1, 1 << 30);
+      have_type = true;
+    } else if (kw == "centre" || kw == "center") {
+      cx_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = a.number(kw, "two coordinates x y (m)");
+    } else if (kw == "omega") {
+      omega_ = a.number(kw, "the ring angular speed about z (rad/s)");
+    } else if (kw == "ramp") {
+      ramp_ = a.non_negative(kw, "the duration of the linear speed ramp, a time >= 0 (s)");
+    } else if (kw == "mass") {
+      ring_mass_ = a.positive(kw, "the ring mass, a positive mass (kg)");
+    } else if (kw == "damp") {
+      ring_damp_ = a.non_negative(kw, "the ring damping coefficient >= 0 (N s/m)");
+    } else if (kw == "load") {
+      const std::string mode = a.word(kw, "none, force, fixed or radial");
+      if (mode == "none")
+        load_ = Load::None;
+      else if (mode == "force")
+        load_ = Load::Force;
+      else if (mode == "fixed")
+        load_ = Load::Fixed;
+      else if (mode == "radial")
+        load_ = Load::Radial;
+      else
+        a.fail(kw, "none, force, fixed or radial", mode.c_str());
+      // Shorthand: "load force F" / "load radial F" = "load force force F".
+      if ((load_ == Load::Force || load_ == Load::Radial) && a.next_is_number()) {
+        load_force_ = a.positive("load", "the load magnitude F > 0 (N)");
+        have_force = true;
+      }
+    } else if (kw == "force") {
+      load_force_ = a.positive(kw, "the load magnitude F > 0 (N)");
+      have_force = true;
+    } else if (kw == "settle") {
+      settle_time_ = a.positive(kw, "the settling time T > 0 (s)");
+      have_settle = true;
+    } else if (kw == "interference") {
+      interference_ = a.number(kw, "a radial interference toward the balls (m)");
+      have_interference = true;
+    } else if (kw == "direction") {
+      dir_x = a.number(kw, "the radial load direction dx dy");
+      dir_y = a.number(kw, "the radial load direction dx dy");
+      if (!(std::hypot(dir_x, dir_y) > 0.0)) a.fail(kw, "a non-zero direction dx dy", "0 0");
+    } else {
+      a.unknown(kw.c_str(),
+                "radius groove type centre omega ramp load force settle interference "
+                "direction mass damp");
+    }
+  }
+  if (!have_radius) a.fail("radius", "a value: the keyword is required", "nothing");
+  if (!have_groove) a.fail("groove", "a value: the keyword is required", "nothing");
+  if (!have_type) a.fail("type", "a value: the keyword is required", "nothing");
+  if (race_type_ > atom->ntypes)
+    a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(atom->ntypes),
+           std::to_string(race_type_).c_str());
+  check_load(a, have_force, have_settle, have_interference, dir_x, dir_y);
+}
+
+// Which load keywords each mode needs, and the load vector of a radial load.
+void FixBearingRace::check_load(ohmdem::StyleArgs &a, bool have_force, bool have_settle,
+                                bool have_interference, double dir_x, double dir_y)
+{
+  if ((load_ == Load::Force || load_ == Load::Radial) && !have_force)
+    a.fail("force", "a value: load force and load radial need 'force F'", "nothing");
+  if (load_ == Load::Fixed) {
+    if (have_settle == have_interference)
+      a.fail("load fixed", "exactly one of 'settle T' (with 'force F') or 'interference U'",
+             have_settle ? "both" : "neither");
+    if (have_settle && !have_force)
+      a.fail("force", "a value: load fixed with settle needs 'force F'", "nothing");
+    if (have_settle)
+      load_ = Load::Settle;
+    else
+      u_ = interference_;
+  }
+  {
+    const double n = std::hypot(dir_x, dir_y);
+    dir_ux_ = dir_x / n;
+    dir_uy_ = dir_y / n;
+  }
+  if (load_ == Load::Radial) {
+    load_fx_ = load_force_ * dir_ux_;
+    load_fy_ = load_force_ * dir_uy_;
+  }
+  const bool dynamic = load_ == Load::Force || load_ == Load::Settle || load_ == Load::Radial;
+  if (dynamic && ring_mass_ <= 0.0)
+    a.fail("mass", "a positive ring mass (kg): required by load force, fixed settle and radial",
+           "nothing");
+}

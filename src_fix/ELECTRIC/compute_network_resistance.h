@@ -1,0 +1,98 @@
+/* ----------------------------------------------------------------------
+   ohmdem - compute network/resistance: the electrical resistance of a
+   contact network between two electrodes (paper eq. 1, Kirchhoff + Ohm).
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+
+// clang-format off
+ComputeStyle(network/resistance,ComputeNetworkResistance)
+// clang-format on
+
+#else
+
+#ifndef LMP_COMPUTE_NETWORK_RESISTANCE_H
+#define LMP_COMPUTE_NETWORK_RESISTANCE_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/ordered_reduce.h"
+#include "compute.h"
+#include "electric/conduction_model.h"
+#include "electric/network_builder.h"
+
+namespace ohmdem {
+class ConductionNetwork;
+}
+
+namespace LAMMPS_NS {
+
+class ContactSet;
+class FixBearingRace;
+
+class ComputeNetworkResistance : public Compute {
+ public:
+  ComputeNetworkResistance(class LAMMPS *, int &iarg, int, char **);
+  ~ComputeNetworkResistance() override;
+  void init() override;
+  double compute_scalar() override;
+  void compute_vector() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  enum class ElectrodeKind { Race, Group };
+  struct Electrode {
+    ElectrodeKind kind = ElectrodeKind::Race;
+    std::string name;
+    int index = -1;  // race: index in the contact set's races; group: group bit
+  };
+
+  void parse(int narg, char **arg);
+  void evaluate();                // builds and solves the network once per time step
+  bool evaluate_between_races();  // closed form when every ball joins the two races
+  void build_and_solve();         // the general network
+  void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
+                    std::vector<ohmdem::ContactRecord> &contacts);
+  void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
+  void report(double resistance, int contacts, int dropped, int iterations, double residual);
+
+  double current_ = 0;
+  Electrode high_, low_;
+  ohmdem::ConductionModel model_;  // from the keyword `model` (conduction_model.h's table)
+  int solver_ = 0;                 // ohmdem::SolverKind
+  bool multigrid_ = false;         // solver amg: CG preconditioned by algebraic multigrid
+  bool area_exact_ = false;
+  int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
+  std::string netlist_, vtk_;
+  bool closed_form_ = true;  // keyword closedform: use the two-race closed form when it applies
+
+  std::unique_ptr<ContactSet> contacts_;
+  std::unique_ptr<ohmdem::ConductionNetwork> network_;
+  class FixPropertyGlobal *conductivity_ = nullptr;
+  bigint evaluated_step_ = -1;
+  double result_[7] = {0, 0, 0, 0, 0, 0, 0};
+  bool warned_no_path_ = false;
+  // closed form, per local ball: conductance, 1 if it joins the races, 1 if a dead end
+  std::vector<ohmdem::TaggedValues<3> > balls_;
+  ohmdem::OrderedGather<3> balls_gather_;
+  // Closed form: the model between the two electrode races, set at the first evaluation of
+  // a run (the races' geometry is known then).
+  bool geometry_ready_ = false;
+  ohmdem::BallBetweenRaces between_races_;
+  std::vector<const FixBearingRace *> other_races_;  // neither electrode: any contact -> network
+  std::vector<double> gamma_type_;  // conductivity of each atom type (S/m), 1-based
+  // General network: the scene and the build, members so that their memory is reused.
+  std::vector<ohmdem::ParticleRecord> particles_;
+  std::vector<ohmdem::ContactRecord> contact_records_;
+  std::vector<double> gamma_race_;
+  ohmdem::NetworkBuild built_;
+  int nmax_ = 0;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,50 @@
+// What flows between the bearing styles, as values (no style includes another): a body (a
+// race or the cage) describes its surface as a BearingSurface; a defect answers queries about
+// a contact on such a surface. fix bearing/race and fix bearing/cage implement BearingBody,
+// fix bearing/defect implements BearingDefect; each finds the others through these
+// interfaces (dynamic_cast over the fixes), so adding a body or a defect touches neither side.
+#ifndef OHMDEM_BEARING_SURFACE_H
+#define OHMDEM_BEARING_SURFACE_H
+
+#include <cstdint>
+
+namespace ohmdem {
+
+enum class BodyKind { InnerRace, OuterRace, Cage };
+
+struct BearingSurface {
+  const void *body = nullptr;  // which body this is (compared, never dereferenced)
+  BodyKind kind = BodyKind::InnerRace;
+  double centre[2] = {0, 0};  // body centre (m)
+  double radius = 0;          // race: radius at the groove bottom now; cage: pitch radius (m)
+  double angle = 0;           // rotation of the body about z (rad)
+  double ball_radius = 0;     // radius of the balls that touch it (m)
+  int pockets = 0;            // cage: number of pockets
+  bool is_race() const { return kind != BodyKind::Cage; }
+  bool inner() const { return kind == BodyKind::InnerRace; }
+};
+
+class BearingBody {
+ public:
+  virtual ~BearingBody() = default;
+  virtual BearingSurface surface() const = 0;
+};
+
+class BearingDefect {
+ public:
+  virtual ~BearingDefect() = default;
+  virtual bool acts_on_races() const = 0;
+  virtual bool acts_on_cage() const = 0;
+  // How far the surface falls away under the contact of ball `tag` with the race `race` (m);
+  // (dx, dy) is the vector from the race centre to the ball centre, on which the contact
+  // lies. `masked` is set when the contact point lies in the zone (no current).
+  virtual double recess(const BearingSurface &race, std::int64_t tag, double dx, double dy,
+                        bool &masked) const = 0;
+  // Whether the wall on `side` (+1 leading, -1 trailing, in the sense of increasing angle) of
+  // pocket `pocket` of `cage` is broken.
+  virtual bool breaks_wall(const BearingSurface &cage, int pocket, int side) const = 0;
+};
+
+}  // namespace ohmdem
+
+#endif
