@@ -18,6 +18,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "contact/race_contact.h"
+#include "contact/runaway.h"
 #include "error.h"
 #include "fix_property_atom.h"
 #include "force.h"
@@ -87,6 +88,10 @@ void FixBearingRace::build_model()
     error->fix_error(FLERR, this, "all balls of the group must have the same atom type");
   ball_radius_ = g.rmax;
   ball_type_ = g.tmin;
+  double m = 0;
+  for (int i = 0; i < atom->nlocal; ++i)
+    if (atom->mask[i] & groupbit) m = std::max(m, atom->rmass[i]);
+  MPI_Allreduce(&m, &ball_mass_, 1, MPI_DOUBLE, MPI_MAX, world);
 
   const ohmdem::MaterialTable mat(lmp, style, true, true);
   try {
@@ -257,6 +262,36 @@ void FixBearingRace::post_force(int)
   ncontacts_ = static_cast<int>(all.size());
   max_fn_ = 0.0;
   for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
+  check_runaway();
+}
+
+// Stops the run when the contacts ran away: the sums are global, so every process reaches the
+// same verdict.
+void FixBearingRace::check_runaway()
+{
+  ohmdem::RaceStepState s;
+  s.time = time_;
+  s.dt = update->dt;
+  s.max_fn = max_fn_;
+  s.sum_fn = sum_fn_;
+  s.fx = fx_;
+  s.fy = fy_;
+  s.torque = torque_;
+  s.u = u_;
+  s.cx = cx_;
+  s.cy = cy_;
+  s.ball_radius = ball_radius_;
+  s.ball_mass = ball_mass_;
+  s.ring_mass = load_ == Load::None || load_ == Load::Fixed ? 0.0 : ring_mass_;
+  s.ring_damping = ring_damp_;
+  s.balls = ncontacts_;
+  s.reference_fn = mean_fn_;
+  const std::string why = ohmdem::race_runaway(model_->hertz, s);
+  if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
+  if (ncontacts_ > 0) {
+    ++sound_steps_;
+    mean_fn_ += (sum_fn_ / ncontacts_ - mean_fn_) / static_cast<double>(sound_steps_);
+  }
 }
 
 // Sum of the recesses of the defects under ball i's contact with this race; in_zone is set

@@ -5,9 +5,10 @@
   interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
                (the last row of signal.txt); the forced restart file in the run's folder, none
                in the working folder
-  failed       an unstable step (dt 2e-5, the deck says it is): the lost balls stop the run
-               (exit 1); run.json "failed" with the time reached; the rows written before the
-               failure are kept in signal.txt
+  failed       unstable settings (dt 2e-5, a ring of 1e-9 kg, a ring damping of 1e9, a density
+               of 1): fix bearing/race stops the run naming the cause (exit 1); run.json
+               "failed" with the time reached; the rows written before the failure are kept in
+               signal.txt, none of them garbage
   deck_errors  impossible deck variables stop before the run with a message naming the
                variable (exit 1)
 
@@ -20,6 +21,8 @@ import signal
 import subprocess
 import tempfile
 import time
+
+import numpy as np
 
 from deck_checks import check, finish, read_signal
 
@@ -72,18 +75,34 @@ def test_interrupted(a, work):
 
 
 def test_failed(a, work):
-    out = os.path.join(work, "failed")
-    r = subprocess.run(command(a, out, tend=0.05, dt=2e-5), cwd=work, capture_output=True,
-                       text=True)
-    m = meta(out)
-    log = open(os.path.join(out, "log.txt"), errors="replace").read()
-    rows = read_signal(os.path.join(out, "signal.txt"))["time"]
-    check(r.returncode == 1, f"failed: exit status {r.returncode} (1)")
-    check("Lost atoms" in log, "failed: the lost balls stop the run (log: Lost atoms)")
-    check(m["status"] == "failed", f"failed: run.json status {m['status']}")
-    check(0 < m["time_reached"] < 0.05 and abs(rows[-1] - m["time_reached"]) < 1e-12,
-          f"failed: time reached {m['time_reached']}, signal.txt kept up to {rows[-1]} "
-          f"({len(rows)} rows)")
+    # unstable settings the issue tried: each stops with the cause named, nothing garbage in
+    # signal.txt (R = inf at t = 0 is physical: the balls start exactly touching)
+    cases = [({"dt": 2e-5}, "sqrt(m/k)"),
+             ({"Mring": 1e-9, "load": "radial"}, "M = 1e-09 kg"),
+             ({"Cring": 1e9, "load": "radial"}, "2M/C"),
+             ({"rho": 1}, "m = 1.05e-06 kg")]
+    for var, cause in cases:
+        name = "_".join(f"{k}{v}" for k, v in var.items())
+        out = os.path.join(work, "failed_" + name)
+        r = subprocess.run(command(a, out, tend=0.05, **var), cwd=work, capture_output=True,
+                           text=True)
+        m = meta(out)
+        log = open(os.path.join(out, "log.txt"), errors="replace").read()
+        data = np.loadtxt(os.path.join(out, "signal.txt"), ndmin=2).reshape(-1, 18)
+        rows = np.concatenate([[0.0], data[:, 0]])  # the start, then the rows written
+        garbage = int(np.sum(~np.isfinite(np.delete(data, 9, axis=1)))) + \
+            int(np.sum(np.isnan(data[:, 9])))  # column 10, R: inf is physical, NaN never
+        check(r.returncode == 1, f"failed {var}: exit status {r.returncode} (1)")
+        check("ran away" in log and cause in log,
+              f"failed {var}: the run stops saying the contacts ran away and '{cause}'")
+        check(m["status"] == "failed", f"failed {var}: run.json status {m['status']}")
+        # the step that failed is not written: the last row is the step before it
+        dt = var.get("dt", 1e-6)
+        check(0 < m["time_reached"] < 0.05 and
+              abs(rows[-1] + dt - m["time_reached"]) < 1e-9 * m["time_reached"],
+              f"failed {var}: time reached {m['time_reached']}, signal.txt kept up to "
+              f"{rows[-1]} ({len(data)} rows)")
+        check(garbage == 0, f"failed {var}: no NaN or inf from garbage in signal.txt ({garbage})")
 
 
 def test_deck_errors(a, work):
