@@ -36,7 +36,7 @@
 using namespace LAMMPS_NS;
 
 namespace {
-constexpr int kVectorSize = 7;
+constexpr int kVectorSize = 8;
 }  // namespace
 
 ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int narg, char **arg)
@@ -178,6 +178,26 @@ void ComputeNetworkResistance::init()
       multigrid_ ? ohmdem::Preconditioner::Multigrid : ohmdem::Preconditioner::Diagonal;
   network_->set_options(opt);
   evaluated_step_ = -1;
+  check_export_files();
+}
+
+// The netlist and VTK files are written by process 0 during the run; a path that cannot be
+// written stops the run here, on every process alike, with the message in the log (an error
+// raised on one process only aborts MPI before the log is written).
+void ComputeNetworkResistance::check_export_files()
+{
+  for (const auto &[kw, path] : {std::pair<const char *, const std::string &>{"netlist", netlist_},
+                                 {"vtk", vtk_}}) {
+    if (path.empty()) continue;
+    int ok = 1;
+    if (comm->me == 0) ok = std::ofstream(path, std::ios::app) ? 1 : 0;
+    MPI_Bcast(&ok, 1, MPI_INT, 0, world);
+    if (!ok) {
+      const std::string msg = std::string("compute network/resistance: keyword '") + kw +
+                              "': cannot open '" + path + "' for writing";
+      error->all(FLERR, msg.c_str());
+    }
+  }
 }
 
 void ComputeNetworkResistance::evaluate()
@@ -202,12 +222,32 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
   result_[4] = dropped;
   result_[5] = iterations;
   result_[6] = residual;
-  if (!std::isfinite(resistance) && !warned_no_path_ && comm->me == 0) {
-    error->warning(FLERR,
-                   "compute network/resistance: no conducting path between the "
-                   "electrodes: R = inf (said once)");
+  if (std::isfinite(resistance)) {
+    had_path_ = true;
+  } else if (had_path_) {
+    // Conduction lost after it was established (a blow-up, a ring lifted off): said at the 1st,
+    // 10th, 100th, ... such evaluation, and counted in output 8.
+    ++lost_evaluations_;
+    long long said = 1;
+    while (said < lost_evaluations_) said *= 10;
+    if (said == lost_evaluations_ && comm->me == 0) {
+      const std::string msg = "compute network/resistance: conduction lost at step " +
+                              std::to_string(update->ntimestep) +
+                              ": no conducting path between the electrodes, R = inf (" +
+                              std::to_string(lost_evaluations_) +
+                              " evaluations so far; said at 1, 10, 100, ...)";
+      error->warning(FLERR, msg.c_str());
+    }
+  } else if (!update->setupflag && !warned_no_path_) {
+    // Never a path: said once, but not at the start of a run, where the balls of a bearing
+    // start exactly touching and carry no current yet.
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "compute network/resistance: no conducting path between the "
+                     "electrodes: R = inf (said once)");
     warned_no_path_ = true;
   }
+  result_[7] = static_cast<double>(lost_evaluations_);
 }
 
 // A bearing: every conducting ball touches the high race, the low race, or both, and nothing

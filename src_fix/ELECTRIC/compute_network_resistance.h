@@ -58,6 +58,7 @@ class ComputeNetworkResistance : public Compute {
                     std::vector<ohmdem::ContactRecord> &contacts);
   void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
+  void check_export_files();
 
   double current_ = 0;
   Electrode high_, low_;
@@ -73,8 +74,10 @@ class ComputeNetworkResistance : public Compute {
   std::unique_ptr<ohmdem::ConductionNetwork> network_;
   class FixPropertyGlobal *conductivity_ = nullptr;
   bigint evaluated_step_ = -1;
-  double result_[7] = {0, 0, 0, 0, 0, 0, 0};
+  double result_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
+  bool had_path_ = false;           // a conducting path existed at some evaluation
+  long long lost_evaluations_ = 0;  // evaluations without a path after one existed
   // closed form, per local ball: conductance, 1 if it joins the races, 1 if a dead end
   std::vector<ohmdem::TaggedValues<3> > balls_;
   ohmdem::OrderedGather<3> balls_gather_;

@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """Deck-level tests of how a run ends (doc/run_status.md).
 
-  finished     exit 0; run.json "status": "finished", "time_reached" = tend
+  finished     exit 0; run.json "status": "finished", "time_reached" = tend; no warning about
+               the conducting path (the balls start exactly touching)
+  conduction_lost  a path lost after it existed is warned at the 1st, 10th, 100th, ...
+               evaluation without it
   interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
                (the last row of signal.txt); the forced restart file in the run's folder, none
                in the working folder
@@ -48,6 +51,27 @@ def test_finished(a, work):
     check(r.returncode == 0, f"finished: exit status {r.returncode} (0)")
     check(m["status"] == "finished", f"finished: run.json status {m['status']}")
     check(abs(m["time_reached"] - 0.002) < 1e-12, f"finished: time reached {m['time_reached']}")
+    log = open(os.path.join(out, "log.txt"), errors="replace").read()
+    # the balls start exactly touching: no current at step 0 is no news
+    check("no conducting path" not in log, "finished: no conducting-path warning")
+
+
+def test_conduction_lost(a, work):
+    # two balls and a 200 deg inner pit: at times both contacts are in the pit and no current
+    # flows, after it did. Said at the 1st, 10th, 100th, 1000th evaluation without a path.
+    out = os.path.join(work, "lost")
+    r = subprocess.run(command(a, out, tend=0.03, Nb=2, defect="inner", size=200, position=90),
+                       cwd=work)
+    log = open(os.path.join(out, "log.txt"), errors="replace").read()
+    R = np.loadtxt(os.path.join(out, "signal.txt"), ndmin=2)[:, 9]
+    first = int(np.argmax(np.isfinite(R)))
+    lost = int(np.sum(~np.isfinite(R[first:])))
+    said = [n for n in (1, 10, 100, 1000, 10000) if f"({n} evaluations so far" in log]
+    expected = [n for n in (1, 10, 100, 1000, 10000) if n <= lost]
+    check(r.returncode == 0, f"conduction_lost: exit status {r.returncode} (0)")
+    check(lost > 0 and said == expected,
+          f"conduction_lost: {lost} rows without a path after one existed, warned at {said} "
+          f"(expected {expected})")
 
 
 def test_interrupted(a, work):
