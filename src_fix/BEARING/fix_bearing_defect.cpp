@@ -9,6 +9,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "atom.h"
@@ -16,6 +17,7 @@
 #include "common/constants.h"
 #include "contact/defect_geometry.h"
 #include "error.h"
+#include "group.h"
 #include "modify.h"
 #include "support/args.h"
 #include "update.h"
@@ -25,6 +27,14 @@ using namespace FixConst;
 
 namespace {
 constexpr double kDeg = ohmdem::kDegree;
+
+// A number as a user would write it (6 significant digits, no trailing zeros).
+std::string number_text(double v)
+{
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
 }
 
 FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
@@ -86,6 +96,13 @@ FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
   const bool zone = kind_ == Kind::Inner || kind_ == Kind::Outer || kind_ == Kind::Ball;
   if (zone && !have_size)
     a.fail("size", "a value: 'size DEGREES' or 'arc LENGTH' is required", "nothing");
+  // A zone that covers its whole surface is no defect: a race zone below one turn, a ball zone
+  // below half a turn (the ball's contacts with the two races are half a turn apart).
+  const std::string got = number_text(size_ / kDeg);
+  if ((kind_ == Kind::Inner || kind_ == Kind::Outer) && size_ >= 2.0 * ohmdem::kPi)
+    a.fail("size", "the angular size of a race zone, in (0, 360) degrees", got.c_str());
+  if (kind_ == Kind::Ball && size_ >= ohmdem::kPi)
+    a.fail("size", "the angular size of a ball zone, in (0, 180) degrees", got.c_str());
   if ((kind_ == Kind::Inner || kind_ == Kind::Outer) && races_.empty())
     a.fail("race", "the ID of the defective fix bearing/race: the keyword is required", "nothing");
   if (kind_ == Kind::Ball && ball_ == 0)
@@ -144,6 +161,20 @@ void FixBearingDefect::init()
 
 void FixBearingDefect::setup(int)
 {
+  if (kind_ == Kind::Inner || kind_ == Kind::Outer) {
+    // Legal but odd: a race zone wider than the ball spacing holds two balls at times.
+    const bigint balls = group->count(igroup);
+    const double spacing = balls > 0 ? 2.0 * ohmdem::kPi / static_cast<double>(balls) : 0.0;
+    if (balls > 0 && size_ > spacing && comm->me == 0 && !warned_wide_) {
+      const std::string msg = "fix bearing/defect: the zone (" + number_text(size_ / kDeg) +
+                              " deg) is wider than the ball spacing (360/" +
+                              std::to_string(balls) + " = " + number_text(spacing / kDeg) +
+                              " deg): two balls can be in it at once";
+      error->warning(FLERR, msg.c_str());
+    }
+    warned_wide_ = true;
+    return;
+  }
   if (kind_ != Kind::Ball) return;
   // The defective ball must exist; its radius sets the size of an angular zone. (map() does
   // not check its argument: stay within the IDs it knows.)

@@ -68,6 +68,7 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   int pocket_ = 0, side_ = 1;                  // cage defect
   double spin_ = 0;  // ball defect: the ball's rotation angle about z (rad)
   double ball_radius_ = 0;
+  bool warned_wide_ = false;  // the wide-zone warning, once per fix
 };
 
 }  // namespace LAMMPS_NS
