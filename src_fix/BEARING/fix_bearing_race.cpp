@@ -10,6 +10,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -22,6 +23,7 @@
 #include "error.h"
 #include "fix_property_atom.h"
 #include "force.h"
+#include "group.h"
 #include "modify.h"
 #include "support/global_restart.h"
 #include "support/material_table.h"
@@ -105,6 +107,8 @@ void FixBearingRace::build_model()
                             " m, race radius " + std::to_string(radius_) + " m)";
     error->fix_error(FLERR, this, msg.c_str());
   }
+
+  check_load_in_elastic_range();
 
   // Balls must fit between an inner and an outer race of the same bearing.
   for (int k = 0; k < modify->nfix; ++k) {
@@ -263,6 +267,28 @@ void FixBearingRace::post_force(int)
   max_fn_ = 0.0;
   for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
   check_runaway();
+}
+
+// A load the balls cannot carry elastically would drive the ring through them from the first
+// steps: the most loaded ball (F/Nb isotropic; 5 F/Nb under a radial load, above Stribeck's
+// 4.37) must stay within the runaway limit of the approach.
+void FixBearingRace::check_load_in_elastic_range()
+{
+  if (load_ != Load::Force && load_ != Load::Settle && load_ != Load::Radial) return;
+  const bigint balls = group->count(igroup);
+  if (balls <= 0) return;
+  const double per_ball = (load_ == Load::Radial ? 5.0 : 1.0) * load_force_ / balls;
+  const double delta = model_->hertz.approach(per_ball);
+  if (delta > ohmdem::kRunawayApproachFraction * ball_radius_) {
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "keyword 'force': F = %g N on %lld balls drives the ring through them: the "
+                  "most loaded ball (%g N) would need an approach of %g m, %g of the ball radius "
+                  "(limit %g, far beyond the elastic range)",
+                  load_force_, static_cast<long long>(balls), per_ball, delta,
+                  delta / ball_radius_, ohmdem::kRunawayApproachFraction);
+    error->fix_error(FLERR, this, msg);
+  }
 }
 
 // Stops the run when the contacts ran away: the sums are global, so every process reaches the

@@ -106,6 +106,7 @@ class FixBearingRace : public FixBearingBody {
   double mean_fn_ = 0;             // running mean load per touching ball (N), for messages
   long long sound_steps_ = 0;      // steps that passed the runaway check
   void check_runaway();            // error->all when the contacts ran away (contact/runaway.h)
+  void check_load_in_elastic_range();
   int ball_type_ = 0;
 };
 
