@@ -133,18 +133,39 @@ void FixBearingCage::assign_pockets()
 {
   double **state = state_->array_atom;
   std::vector<ohmdem::TaggedValues<1>> mine;
+  double misplaced = 0.0;  // the largest distance of a newly placed ball off its pocket (m)
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & groupbit)) continue;
     double &pocket = state[i][POCKET];
     if (pocket < 0.0) {
       const double phi = std::atan2(atom->x[i][1] - cy_, atom->x[i][0] - cx_) - angle_ - angle0_;
-      long k = std::lround(phi * npockets_ / (2.0 * ohmdem::kPi));
-      k = ((k % npockets_) + npockets_) % npockets_;
+      const double step = 2.0 * ohmdem::kPi / npockets_;
+      const long nearest = std::lround(phi / step);
+      // A ball placed off its pocket by more than the play sits on a bar.
+      const double off = std::fabs(phi - static_cast<double>(nearest) * step) * pitch_radius_;
+      if (off > clearance_ * (1.0 + 1e-9) + 1e-12) misplaced = std::max(misplaced, off);
+      long k = ((nearest % npockets_) + npockets_) % npockets_;
       pocket = static_cast<double>(k);
     }
     mine.push_back({static_cast<std::int64_t>(atom->tag[i]), {pocket}});
   }
+  double worst = 0.0;
+  MPI_Allreduce(&misplaced, &worst, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (worst > 0.0) {
+    const std::string msg = "a ball lies " + std::to_string(worst) +
+                            " m (along the pitch circle) from the centre of its pocket, more "
+                            "than the pocket play 'clearance' " + std::to_string(clearance_) +
+                            " m: it would sit on a bar; align the pockets with the balls ('angle' "
+                            "in degrees, 'pockets' = the number of balls)";
+    error->fix_error(FLERR, this, msg.c_str());
+  }
   const auto all = ohmdem::gather_by_tag<1>(mine, world);
+  if (static_cast<int>(all.size()) < npockets_ && comm->me == 0 && !warned_empty_) {
+    const std::string msg = "fix bearing/cage: " + std::to_string(npockets_) + " pockets for " +
+                            std::to_string(all.size()) + " balls: some pockets stay empty";
+    error->warning(FLERR, msg.c_str());
+  }
+  warned_empty_ = true;
   std::vector<std::int64_t> owner(npockets_, -1);
   for (const auto &r : all) {
     const int k = static_cast<int>(r.v[0]);

@@ -163,9 +163,9 @@ def test_natural_frequency(r):
     # 2. The vibration channel's own mode: the ring centre under a static radial load, one ball
     # on the load line (Stribeck's load zone), light damping, no friction. Each loaded ball is
     # a mass between its two spring-dashpots along its radial direction at angle psi from the
-    # load line. The balls outside the load zone float free at zero clearance and knock on the
-    # ring as it swings (the race contact count varies), which the linear model leaves out:
-    # 6 % here.
+    # load line. The balls outside the load zone float free at zero clearance and may touch the
+    # ring as it swings, which the linear model leaves out: 0.2 % here. (Before the deck turned
+    # the cage with `phase`, the balls sat on the cage bars and the difference was 5 %.)
     F, C = 2000.0, 500.0
     out, _ = r.run("natural", load="radial", F=F, Cring=C, omega=0.0, phase=90.0, mu=0.0,
                    tend=0.006, dumpraces=6000)
@@ -200,9 +200,9 @@ def test_natural_frequency(r):
     print(f"radial: loaded balls {nl}, loads {np.round(q_out[loaded], 1)} N; race contacts "
           f"{int(contacts.min())}..{int(contacts.max())} in the window")
     print(f"radial: simulated {f_sim:.1f} Hz, Hertz spring-dashpot model {f_model:.1f} Hz")
-    check(nz >= 8 and abs(f_sim / f_model - 1) < 0.06,
+    check(nz >= 8 and abs(f_sim / f_model - 1) < 0.01,
           f"radial: ring centre frequency {f_sim:.1f} Hz vs Hertz model {f_model:.1f} Hz "
-          f"({f_sim / f_model - 1:+.2%}; free balls knocking, see the comment)")
+          f"({f_sim / f_model - 1:+.2%})")
 
 
 def main():
