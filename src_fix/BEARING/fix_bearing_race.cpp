@@ -131,6 +131,7 @@ void FixBearingRace::build_model()
 void FixBearingRace::setup(int vflag)
 {
   build_model();
+  if (restored_) check_restart_geometry();
   if (reapply_restored_forces(FX, FY, TZ)) return;
   post_force(vflag);
 }
@@ -287,6 +288,33 @@ void FixBearingRace::check_load_in_elastic_range()
                   "(limit %g, far beyond the elastic range)",
                   load_force_, static_cast<long long>(balls), per_ball, delta,
                   delta / ball_radius_, ohmdem::kRunawayApproachFraction);
+    error->fix_error(FLERR, this, msg);
+  }
+}
+
+// After read_restart the balls are where the restart left them: a race whose radius or ball
+// size changed since (other Dinn, Dext, Db in the deck) would not touch them, or would be inside
+// them. Their gap to this race must be the micrometres of a contact.
+void FixBearingRace::check_restart_geometry()
+{
+  const double r = current_radius();
+  double worst = 0.0;  // largest |gap| of a ball to the race surface (m)
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double d = std::hypot(atom->x[i][0] - cx_, atom->x[i][1] - cy_);
+    const double gap = inner_ ? d - r - atom->radius[i] : r - d - atom->radius[i];
+    worst = std::max(worst, std::fabs(gap));
+  }
+  double all = 0.0;
+  MPI_Allreduce(&worst, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  if (all > 0.01 * ball_radius_) {
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "the balls read from the restart file are up to %g m off this race (radius %g m, "
+                  "ball radius %g m): the bearing geometry (race diameter, groove, ball "
+                  "diameter) changed since the restart was written; continue with the same "
+                  "geometry",
+                  all, radius_, ball_radius_);
     error->fix_error(FLERR, this, msg);
   }
 }

@@ -107,6 +107,7 @@ class FixBearingRace : public FixBearingBody {
   long long sound_steps_ = 0;      // steps that passed the runaway check
   void check_runaway();            // error->all when the contacts ran away (contact/runaway.h)
   void check_load_in_elastic_range();
+  void check_restart_geometry();
   int ball_type_ = 0;
 };
 

@@ -3,6 +3,8 @@
 
   finished     exit 0; run.json "status": "finished", "time_reached" = tend; no warning about
                the conducting path (the balls start exactly touching)
+  restart_geometry  a restart continued with another Nb, Db or race diameter is refused; another
+               speed is not
   conduction_lost  a path lost after it existed is warned at the 1st, 10th, 100th, ...
                evaluation without it
   interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
@@ -127,6 +129,32 @@ def test_failed(a, work):
               f"failed {var}: time reached {m['time_reached']}, signal.txt kept up to "
               f"{rows[-1]} ({len(data)} rows)")
         check(garbage == 0, f"failed {var}: no NaN or inf from garbage in signal.txt ({garbage})")
+
+
+def test_restart_geometry(a, work):
+    # a run continued from a restart file with another geometry is refused, naming it
+    out = os.path.join(work, "first")
+    first = [a.exe, "-in", os.path.join(a.src, "tests", "decks", "in.restart_first"),
+             "-var", "bearing_deck", os.path.join(a.src, "inputs", "bearing_6208", "in.bearing"),
+             "-var", "out", out, "-var", "tend", "0.001", "-log", "none", "-screen", "none"]
+    os.makedirs(out, exist_ok=True)
+    check(subprocess.run(first, cwd=work).returncode == 0, "restart_geometry: first half ran")
+    restart = os.path.join(out, "half.restart")
+    cases = [({"Nb": 12}, "deck variable Nb: 12, but the restart file has 13 balls"),
+             ({"Db": 0.0125}, "deck variables Db and rho: a ball of 0.0125 m"),
+             ({"Dext": 0.0735, "Dinn": 0.0483}, "the balls read from the restart file are up to"),
+             ({"omega": 600}, None)]  # the operating point may change
+    for var, msg in cases:
+        name = "_".join(f"{k}{v}" for k, v in var.items())
+        cont = os.path.join(work, "cont_" + name)
+        r = subprocess.run(command(a, cont, tend=0.002, start="restart", restart_file=restart,
+                                   **var), cwd=work)
+        log = open(os.path.join(cont, "log.txt"), errors="replace").read()
+        if msg is None:
+            check(r.returncode == 0, f"restart_geometry: {var} continues (exit {r.returncode})")
+        else:
+            check(r.returncode == 1 and msg in log,
+                  f"restart_geometry: {var} -> exit {r.returncode}, '{msg}' in the log")
 
 
 def test_deck_errors(a, work):
