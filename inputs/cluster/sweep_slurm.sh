@@ -4,7 +4,7 @@
 # numbers). Submit from the repository root:
 #   sbatch inputs/cluster/sweep_slurm.sh                  (then, when all are done:)
 #   build/ohmdem-post collect --format csv --output out/sweep/collected.csv out/sweep/size_*
-# A resubmitted array skips the cases whose folder says they finished (status.lmp), like the
+# A resubmitted array skips the cases finished with the same parameters (run.done.json), like the
 # partition sweep.
 #SBATCH --job-name=ohmdem-sweep
 #SBATCH --array=0-3
@@ -18,11 +18,10 @@ TEND=${TEND:-0.05}
 size=${SIZES[$SLURM_ARRAY_TASK_ID]}
 out="$ROOT/size_$size"
 mkdir -p "$out"
-if grep -qs 'variable done equal 1' "$out/status.lmp"; then
-  echo "case size=$size already finished: skipped"
-  exit 0
-fi
+# Resume: in.bearing skips the case when its run.done.json has the same parameters; an
+# interrupted or failed run exits non-zero and stops here (set -e), before the done mark.
 srun build/ohmdem -in inputs/bearing_6208/in.bearing -var out "$out" -var tend "$TEND" \
-  -var defect inner -var size "$size" -log "$out/log.liggghts" -screen none
-echo "variable done equal 1" >> "$out/status.lmp"
+  -var defect inner -var size "$size" -var resume 1 -var here inputs/bearing_6208 \
+  -log "$out/log.liggghts" -screen none
+cp "$out/run.json" "$out/run.done.json"
 echo "case size=$size done"

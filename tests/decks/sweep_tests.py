@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The partition sweep (inputs/bearing_6208/in.sweep): folders, identical signals whatever
-runs the case, resume after a kill, and a bad case failing alone.
+runs the case, resume after a kill (only the cases finished with the same parameters are
+skipped), per-case logs, and a bad case failing alone.
 Usage: sweep_tests.py --exe OHMDEM --src SOURCE_DIR"""
 import argparse
 import hashlib
@@ -67,16 +68,26 @@ def main():
         before = {f: digest(os.path.join(f, "signal.txt")) for f in folders}
         stamps = {f: os.stat(os.path.join(f, "signal.txt")).st_mtime_ns for f in folders}
         killed = folders[2]
-        with open(os.path.join(killed, "status.lmp"), "w") as fh:
-            fh.write("# sweep status of this case (read by in.sweep)\n")
+        os.remove(os.path.join(killed, "run.done.json"))  # what a kill leaves: no done mark,
         with open(os.path.join(killed, "signal.txt"), "w") as fh:
-            fh.write("# time\n0.0\n")  # what a kill leaves: a truncated file
+            fh.write("# time\n0.0\n")  # and a truncated file
         rc, out = sweep(wd, root)
         untouched = all(os.stat(os.path.join(f, "signal.txt")).st_mtime_ns == stamps[f]
                         for f in folders if f != killed)
         check(rc == 0 and untouched, "resume: finished cases skipped, their files untouched")
+        check(out.count("already finished with the same parameters: skipped") == 3,
+              "resume: the three finished cases said skipped")
         check(digest(os.path.join(killed, "signal.txt")) == before[killed],
               "resume: the killed case ran again and gives the same signal")
+        check(all(os.path.exists(os.path.join(f, "log.liggghts")) for f in folders),
+              "each case logs into its own folder")
+
+        # Other parameters into the same root: every case runs again.
+        rc, out = sweep(wd, root, "-var", "F", "400")
+        rerun = all(os.stat(os.path.join(f, "signal.txt")).st_mtime_ns != stamps[f]
+                    for f in folders if f != killed)
+        check(rc == 0 and rerun and out.count("finished before with other parameters") == 4,
+              "another F into the same root: the four cases run again, said so")
 
         # A bad case fails alone.
         root2 = os.path.join(wd, "bad")
