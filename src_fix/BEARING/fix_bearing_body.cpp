@@ -7,8 +7,11 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "atom.h"
+#include "error.h"
 #include "fix_property_atom.h"
 #include "modify.h"
 #include "support/peratom_state.h"
@@ -87,4 +90,20 @@ bool FixBearingBody::reapply_restored_forces(int fx, int fy, int tz)
     if (tz >= 0) torque[i][2] += array_atom[i][tz];
   }
   return true;
+}
+
+void FixBearingBody::check_common_axis(double scale)
+{
+  for (int k = 0; k < modify->nfix; ++k) {
+    const auto *other = dynamic_cast<const FixBearingBody *>(modify->fix[k]);
+    if (!other || other == this ||
+        std::hypot(axis_x_ - other->axis_x_, axis_y_ - other->axis_y_) <= 1e-9 * scale)
+      continue;
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "keyword 'centre': this body turns about (%g, %g) m and fix %s '%s' about "
+                  "(%g, %g) m: the races and the cage of a bearing share one axis",
+                  axis_x_, axis_y_, other->style, other->id, other->axis_x_, other->axis_y_);
+    error->fix_error(FLERR, this, msg);
+  }
 }

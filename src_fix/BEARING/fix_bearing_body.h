@@ -19,6 +19,9 @@ namespace LAMMPS_NS {
 class FixBearingBody : public Fix, public ohmdem::BearingBody {
  public:
   int setmask() override;  // initial_integrate, post_force, final_integrate
+  // The bearing axis given by 'centre' (a race's centre moves from it under load radial).
+  double axis_x() const { return axis_x_; }
+  double axis_y() const { return axis_y_; }
 
  protected:
   // vector_size global values and peratom_cols per-atom columns of output; a global restart
@@ -45,6 +48,11 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
   // instead of half-step velocities in the damping and friction terms, and the split run
   // would drift from the single run.
   bool reapply_restored_forces(int fx, int fy, int tz);
+
+  // Stops the run when another race or cage turns about another axis (`scale`: the length
+  // below which two axes are the same, a millionth of a nanometre of the body's size).
+  void check_common_axis(double scale);
+  double axis_x_ = 0, axis_y_ = 0;  // keyword centre
 
   class FixPropertyAtom *state_ = nullptr;  // per-ball contact state
   bool restored_ = false;                   // state was just read from a restart file

@@ -70,8 +70,8 @@ void FixBearingCage::parse(int narg, char **arg)
     } else if (kw == "drag") {
       drag_ = a.non_negative(kw, "a rotational drag coefficient >= 0 (N m s)");
     } else if (kw == "centre" || kw == "center") {
-      cx_ = a.number(kw, "two coordinates x y (m)");
-      cy_ = a.number(kw, "two coordinates x y (m)");
+      cx_ = axis_x_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = axis_y_ = a.number(kw, "two coordinates x y (m)");
     } else if (kw == "angle") {
       angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * ohmdem::kPi / 180.0;
     } else {
@@ -121,6 +121,7 @@ void FixBearingCage::build_model()
   } catch (const std::exception &ex) {
     error->fix_error(FLERR, this, ex.what());
   }
+  check_common_axis(pitch_radius_);
   const double spacing = 2.0 * ohmdem::kPi * pitch_radius_ / npockets_;
   if (2.0 * (rg + clearance_) >= spacing)
     error->fix_error(FLERR, this,

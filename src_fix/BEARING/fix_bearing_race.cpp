@@ -109,6 +109,7 @@ void FixBearingRace::build_model()
   }
 
   check_load_in_elastic_range();
+  check_common_axis(radius_);
 
   // Balls must fit between an inner and an outer race of the same bearing.
   for (int k = 0; k < modify->nfix; ++k) {

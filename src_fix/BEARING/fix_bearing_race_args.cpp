@@ -39,8 +39,8 @@ void FixBearingRace::parse(int narg, char **arg)
       race_type_ = a.integer(kw, "the race material type, an atom type 1..ntypes", 1, 1 << 30);
       have_type = true;
     } else if (kw == "centre" || kw == "center") {
-      cx_ = a.number(kw, "two coordinates x y (m)");
-      cy_ = a.number(kw, "two coordinates x y (m)");
+      cx_ = axis_x_ = a.number(kw, "two coordinates x y (m)");
+      cy_ = axis_y_ = a.number(kw, "two coordinates x y (m)");
     } else if (kw == "omega") {
       omega_ = a.number(kw, "the ring angular speed about z (rad/s)");
     } else if (kw == "ramp") {
