@@ -143,12 +143,16 @@ def test_restart_geometry(a, work):
     cases = [({"Nb": 12}, "deck variable Nb: 12, but the restart file has 13 balls"),
              ({"Db": 0.0125}, "deck variables Db and rho: a ball of 0.0125 m"),
              ({"Dext": 0.0735, "Dinn": 0.0483}, "the balls read from the restart file are up to"),
+             ({"tend": 0.0005}, "deck variable tend: 0.0005 s lies before the time the run "
+                                "starts from, 0.001 s"),
+             ({"restart_file": os.path.join(work, "none.restart")},
+              "deck variable restart_file: no file"),
              ({"omega": 600}, None)]  # the operating point may change
     for var, msg in cases:
-        name = "_".join(f"{k}{v}" for k, v in var.items())
+        name = "_".join(f"{k}{os.path.basename(str(v))}" for k, v in var.items())
         cont = os.path.join(work, "cont_" + name)
-        r = subprocess.run(command(a, cont, tend=0.002, start="restart", restart_file=restart,
-                                   **var), cwd=work)
+        opts = {"tend": 0.002, "start": "restart", "restart_file": restart, **var}
+        r = subprocess.run(command(a, cont, **opts), cwd=work)
         log = open(os.path.join(cont, "log.txt"), errors="replace").read()
         if msg is None:
             check(r.returncode == 0, f"restart_geometry: {var} continues (exit {r.returncode})")
