@@ -31,9 +31,12 @@ int g_rank = -1;  // rank in the world, read while MPI runs (error->all finalize
 const char *status_name(RunEnd end)
 {
   switch (end) {
-    case RunEnd::Finished: return "finished";
-    case RunEnd::Interrupted: return "interrupted";
-    case RunEnd::Failed: return "failed";
+    case RunEnd::Finished:
+      return "finished";
+    case RunEnd::Interrupted:
+      return "interrupted";
+    case RunEnd::Failed:
+      return "failed";
   }
   return "failed";
 }
@@ -81,9 +84,12 @@ void move_forced_restart(LAMMPS_NS::LAMMPS *lmp, const fs::path &out)
 int exit_status(RunEnd end)
 {
   switch (end) {
-    case RunEnd::Finished: return 0;
-    case RunEnd::Interrupted: return 3;
-    case RunEnd::Failed: return 1;
+    case RunEnd::Finished:
+      return 0;
+    case RunEnd::Interrupted:
+      return 3;
+    case RunEnd::Failed:
+      return 1;
   }
   return 1;
 }
@@ -94,7 +100,8 @@ void record_unfinished_run(LAMMPS_NS::LAMMPS *lmp, RunEnd end)
   // exit() skips the fixes' end of run: the rows fix signal/table still buffers would be lost
   if (end == RunEnd::Failed && lmp->modify)
     for (int i = 0; i < lmp->modify->nfix; ++i)
-      if (std::string(lmp->modify->fix[i]->style) == "signal/table") lmp->modify->fix[i]->post_run();
+      if (std::string(lmp->modify->fix[i]->style) == "signal/table")
+        lmp->modify->fix[i]->post_run();
   if (g_rank < 0) MPI_Comm_rank(lmp->world, &g_rank);
   if (g_rank != 0) return;
   char name[] = "out";

@@ -22,6 +22,7 @@
 #include "support/args.h"
 #include "support/global_restart.h"
 #include "support/material_table.h"
+#include "support/require_si.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -102,6 +103,7 @@ void FixBearingCage::post_create()
 
 void FixBearingCage::init()
 {
+  ohmdem::require_si_units(lmp, "fix bearing/cage");
   if (!atom->sphere_flag || !atom->rmass_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere");
   find_state();
@@ -155,7 +157,8 @@ void FixBearingCage::assign_pockets()
   if (worst > 0.0) {
     const std::string msg = "a ball lies " + std::to_string(worst) +
                             " m (along the pitch circle) from the centre of its pocket, more "
-                            "than the pocket play 'clearance' " + std::to_string(clearance_) +
+                            "than the pocket play 'clearance' " +
+                            std::to_string(clearance_) +
                             " m: it would sit on a bar; align the pockets with the balls ('angle' "
                             "in degrees, 'pockets' = the number of balls)";
     error->fix_error(FLERR, this, msg.c_str());

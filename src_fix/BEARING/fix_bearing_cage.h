@@ -56,7 +56,7 @@ class FixBearingCage : public FixBearingBody {
   int cage_type_ = 0;
   double mass_ = 0, inertia_ = 0, drag_ = 0;
   double cx_ = 0, cy_ = 0;
-  double angle0_ = 0;  // pocket 0 at this angle when the cage angle is 0
+  double angle0_ = 0;          // pocket 0 at this angle when the cage angle is 0
   bool warned_empty_ = false;  // the empty-pockets warning, once per fix
   // cos, sin of 2 pi k / npockets: pocket k's direction is the cage rotation applied to it,
   // so a step needs one sincos, not one per ball.

@@ -20,6 +20,7 @@
 #include "group.h"
 #include "modify.h"
 #include "support/args.h"
+#include "support/require_si.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -35,7 +36,7 @@ std::string number_text(double v)
   std::snprintf(b, sizeof b, "%g", v);
   return b;
 }
-}
+}  // namespace
 
 FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp, narg, arg)
 {
@@ -134,6 +135,7 @@ const ohmdem::BearingBody *FixBearingDefect::find_body(const std::string &id, bo
 
 void FixBearingDefect::init()
 {
+  ohmdem::require_si_units(lmp, "fix bearing/defect");
   race_ = nullptr;
   cage_ = nullptr;
   auto fail = [&](const std::string &msg) {
@@ -167,8 +169,8 @@ void FixBearingDefect::setup(int)
     const double spacing = balls > 0 ? 2.0 * ohmdem::kPi / static_cast<double>(balls) : 0.0;
     if (balls > 0 && size_ > spacing && comm->me == 0 && !warned_wide_) {
       const std::string msg = "fix bearing/defect: the zone (" + number_text(size_ / kDeg) +
-                              " deg) is wider than the ball spacing (360/" +
-                              std::to_string(balls) + " = " + number_text(spacing / kDeg) +
+                              " deg) is wider than the ball spacing (360/" + std::to_string(balls) +
+                              " = " + number_text(spacing / kDeg) +
                               " deg): two balls can be in it at once";
       error->warning(FLERR, msg.c_str());
     }

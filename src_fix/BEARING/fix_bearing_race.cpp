@@ -27,6 +27,7 @@
 #include "modify.h"
 #include "support/global_restart.h"
 #include "support/material_table.h"
+#include "support/require_si.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -73,6 +74,7 @@ void FixBearingRace::post_create()
 
 void FixBearingRace::init()
 {
+  ohmdem::require_si_units(lmp, "fix bearing/race");
   if (!atom->sphere_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
   find_state();
@@ -287,8 +289,8 @@ void FixBearingRace::check_load_in_elastic_range()
                   "keyword 'force': F = %g N on %lld balls drives the ring through them: the "
                   "most loaded ball (%g N) would need an approach of %g m, %g of the ball radius "
                   "(limit %g, far beyond the elastic range)",
-                  load_force_, static_cast<long long>(balls), per_ball, delta,
-                  delta / ball_radius_, ohmdem::kRunawayApproachFraction);
+                  load_force_, static_cast<long long>(balls), per_ball, delta, delta / ball_radius_,
+                  ohmdem::kRunawayApproachFraction);
     error->fix_error(FLERR, this, msg);
   }
 }

@@ -102,10 +102,10 @@ class FixBearingRace : public FixBearingBody {
 
   std::unique_ptr<ohmdem::RaceContactModel> model_;
   double ball_radius_ = 0;
-  double ball_mass_ = 0;           // largest ball mass of the group (kg)
-  double mean_fn_ = 0;             // running mean load per touching ball (N), for messages
-  long long sound_steps_ = 0;      // steps that passed the runaway check
-  void check_runaway();            // error->all when the contacts ran away (contact/runaway.h)
+  double ball_mass_ = 0;       // largest ball mass of the group (kg)
+  double mean_fn_ = 0;         // running mean load per touching ball (N), for messages
+  long long sound_steps_ = 0;  // steps that passed the runaway check
+  void check_runaway();        // error->all when the contacts ran away (contact/runaway.h)
   void check_load_in_elastic_range();
   void check_restart_geometry();
   int ball_type_ = 0;

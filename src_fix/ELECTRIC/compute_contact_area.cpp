@@ -11,6 +11,7 @@
 #include "ELECTRIC/contact_set.h"
 #include "memory.h"
 #include "support/args.h"
+#include "support/require_si.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -55,6 +56,7 @@ ComputeContactArea::~ComputeContactArea()
 
 void ComputeContactArea::init()
 {
+  ohmdem::require_si_units(lmp, "compute contact/area");
   contacts_->init(groupbit);
 }
 

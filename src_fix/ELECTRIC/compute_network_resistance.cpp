@@ -31,6 +31,7 @@
 #include "network/conduction_network.h"
 #include "network/network_export.h"
 #include "support/args.h"
+#include "support/require_si.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -116,7 +117,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       netlist_ = a.word(kw, "a file name");
     } else if (kw == "vtk") {
       vtk_ = a.word(kw, "a file name");
-    } else if (kw == "closedform") {
+    } else if (kw == "closedform" || kw == "closed_form") {
       closed_form_ = a.yes_no(kw);
     } else {
       a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk closedform");
@@ -132,6 +133,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
 
 void ComputeNetworkResistance::init()
 {
+  ohmdem::require_si_units(lmp, "compute network/resistance");
   // auto: particle–particle contacts when a granular pair style computes them.
   if (pair_mode_ < 0) pair_mode_ = 1;
   contacts_->init(groupbit);
@@ -186,8 +188,8 @@ void ComputeNetworkResistance::init()
 // raised on one process only aborts MPI before the log is written).
 void ComputeNetworkResistance::check_export_files()
 {
-  for (const auto &[kw, path] : {std::pair<const char *, const std::string &>{"netlist", netlist_},
-                                 {"vtk", vtk_}}) {
+  for (const auto &[kw, path] :
+       {std::pair<const char *, const std::string &>{"netlist", netlist_}, {"vtk", vtk_}}) {
     if (path.empty()) continue;
     int ok = 1;
     if (comm->me == 0) ok = std::ofstream(path, std::ios::app) ? 1 : 0;
