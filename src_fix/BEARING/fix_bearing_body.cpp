@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "atom.h"
 #include "error.h"
@@ -106,4 +107,11 @@ void FixBearingBody::check_common_axis(double scale)
                   axis_x_, axis_y_, other->style, other->id, other->axis_x_, other->axis_y_);
     error->fix_error(FLERR, this, msg);
   }
+}
+
+void FixBearingBody::set_extensive(std::vector<int> flags)
+{
+  extensive_ = std::move(flags);
+  extvector = -1;
+  extlist = extensive_.data();
 }

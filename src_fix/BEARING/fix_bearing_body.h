@@ -52,6 +52,9 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
   // Stops the run when another race or cage turns about another axis (`scale`: the length
   // below which two axes are the same, a millionth of a nanometre of the body's size).
   void check_common_axis(double scale);
+  // Which global outputs are sums over the balls (extensive: thermo_modify norm divides them
+  // by the atom count), one flag per output.
+  void set_extensive(std::vector<int> flags);
   double axis_x_ = 0, axis_y_ = 0;  // keyword centre
 
   class FixPropertyAtom *state_ = nullptr;  // per-ball contact state
@@ -61,6 +64,7 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
 
  private:
   std::string state_name_;
+  std::vector<int> extensive_;  // LIGGGHTS' extlist points here
 };
 
 }  // namespace LAMMPS_NS

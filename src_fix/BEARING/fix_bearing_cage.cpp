@@ -41,6 +41,8 @@ FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg)
     : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingCage_")
 {
   parse(narg, arg);
+  // sums over the balls: contacts, pocket forces, torque, broken-bar contacts
+  set_extensive({0, 0, 1, 1, 0, 1, 0, 1});
 }
 
 FixBearingCage::~FixBearingCage() = default;

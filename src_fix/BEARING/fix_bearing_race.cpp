@@ -61,6 +61,8 @@ FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
     : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_")
 {
   parse(narg, arg);
+  // sums over the balls: total normal force, torque, contacts, masked contacts
+  set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0});
 }
 
 FixBearingRace::~FixBearingRace() = default;
