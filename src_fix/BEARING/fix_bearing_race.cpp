@@ -143,7 +143,7 @@ void FixBearingRace::setup(int vflag)
 
 double FixBearingRace::target_omega(double t) const
 {
-  if (ramp_ > 0.0 && t < ramp_) return omega_ * t / ramp_;
+  if (ramp_ > 0.0 && t < ramp_) return omega_start_ + (omega_ - omega_start_) * t / ramp_;
   return omega_;
 }
 

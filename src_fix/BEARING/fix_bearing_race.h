@@ -75,6 +75,7 @@ class FixBearingRace : public FixBearingBody {
   double radius_ = 0, groove_ = 0;
   int race_type_ = 0;
   double omega_ = 0, ramp_ = 0;
+  double omega_start_ = 0;  // the ramp goes from omega_start_ to omega_ (run-up or coast-down)
   Load load_ = Load::None;
   double load_force_ = 0;             // force / settle: isotropic F (N)
   double load_fx_ = 0, load_fy_ = 0;  // radial load vector (N)

@@ -45,6 +45,8 @@ void FixBearingRace::parse(int narg, char **arg)
       omega_ = a.number(kw, "the ring angular speed about z (rad/s)");
     } else if (kw == "ramp") {
       ramp_ = a.non_negative(kw, "the duration of the linear speed ramp, a time >= 0 (s)");
+    } else if (kw == "omega_start") {
+      omega_start_ = a.number(kw, "the ring angular speed at the start of the ramp (rad/s)");
     } else if (kw == "mass") {
       ring_mass_ = a.positive(kw, "the ring mass, a positive mass (kg)");
     } else if (kw == "damp") {
@@ -81,7 +83,7 @@ void FixBearingRace::parse(int narg, char **arg)
       if (!(std::hypot(dir_x, dir_y) > 0.0)) a.fail(kw, "a non-zero direction dx dy", "0 0");
     } else {
       a.unknown(kw.c_str(),
-                "radius groove type centre omega ramp load force settle interference "
+                "radius groove type centre omega ramp omega_start load force settle interference "
                 "direction mass damp");
     }
   }

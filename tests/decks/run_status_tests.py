@@ -65,7 +65,7 @@ def test_conduction_lost(a, work):
     r = subprocess.run(command(a, out, tend=0.03, Nb=2, defect="inner", size=200, position=90),
                        cwd=work)
     log = open(os.path.join(out, "log.txt"), errors="replace").read()
-    R = np.loadtxt(os.path.join(out, "signal.txt"), ndmin=2)[:, 9]
+    R = read_signal(os.path.join(out, "signal.txt"))["R"]
     first = int(np.argmax(np.isfinite(R)))
     lost = int(np.sum(~np.isfinite(R[first:])))
     said = [n for n in (1, 10, 100, 1000, 10000) if f"({n} evaluations so far" in log]
@@ -114,10 +114,13 @@ def test_failed(a, work):
                            text=True)
         m = meta(out)
         log = open(os.path.join(out, "log.txt"), errors="replace").read()
-        data = np.loadtxt(os.path.join(out, "signal.txt"), ndmin=2).reshape(-1, 18)
+        path = os.path.join(out, "signal.txt")
+        names = open(path).readline().lstrip("#").split()
+        data = np.loadtxt(path, ndmin=2).reshape(-1, len(names))
         rows = np.concatenate([[0.0], data[:, 0]])  # the start, then the rows written
-        garbage = int(np.sum(~np.isfinite(np.delete(data, 9, axis=1)))) + \
-            int(np.sum(np.isnan(data[:, 9])))  # column 10, R: inf is physical, NaN never
+        r = names.index("R")  # R = inf is physical (no contact), NaN never
+        garbage = int(np.sum(~np.isfinite(np.delete(data, r, axis=1)))) + \
+            int(np.sum(np.isnan(data[:, r])))
         check(r.returncode == 1, f"failed {var}: exit status {r.returncode} (1)")
         check("ran away" in log and cause in log,
               f"failed {var}: the run stops saying the contacts ran away and '{cause}'")
