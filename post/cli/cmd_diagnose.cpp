@@ -127,23 +127,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   o.geometry = *bc.geometry;
   o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
   o.tolerance = a.number("--tolerance", 0.02);
-  const long long h = a.integer("--harmonics", 5);
-  if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
-  o.harmonics = static_cast<int>(h);
+  o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
-  const long long levels = a.integer("--levels", 7);
-  if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
-  o.kurtogram_levels = static_cast<int>(levels);
-  if (a.has("--band")) {
-    const auto v = a.values("--band");
-    o.band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
-    if (!(o.band.hi > o.band.lo) || o.band.lo < 0)
-      throw Error("option --band expects 0 <= F1 < F2");
-  }
+  o.kurtogram_levels = levels_option(a);
+  if (a.has("--band")) o.band = band_option(a);
   o.estimate_size = !a.has("--no-size");
-  o.false_alarm = a.number("--false-alarm", 1e-3);
-  if (!(o.false_alarm > 0 && o.false_alarm < 0.5))
-    throw Error("option --false-alarm expects a probability in (0, 0.5)");
+  o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
   Signal base;
   if (a.has("--baseline")) {
     // the record's input options and time window (its sliding phase too), its step length

@@ -53,30 +53,26 @@ int run_envelope(const std::vector<std::string> &argv)
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 64);
   Output out(a);
-  const std::string show = a.get("--show");
-  if (show != "peaks" && show != "bins" && show != "envelope" && show != "kurtogram")
-    throw Error("option --show expects peaks|bins|envelope|kurtogram, got '" + show + "'");
+  const std::string show = a.choice("--show", {"peaks", "bins", "envelope", "kurtogram"});
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<DefectFrequencies> kin;
   if (bc.geometry && bc.fr) kin = defect_frequencies(*bc.geometry, *bc.fr);
   MetaList m = s.meta;
   Band band{0, s.rate / 2};
   if (a.has("--band")) {
-    const auto v = a.values("--band");
-    band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+    band = band_option(a);
     m.emplace_back("band (Hz)", format_number(band.lo) + " to " + format_number(band.hi));
   }
   if (a.has("--kurtogram") || show == "kurtogram") {
     if (a.has("--band") && show != "kurtogram")
       throw Error("give either --band or --kurtogram, not both");
-    const long long levels = a.integer("--levels", 7);
-    if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
+    const int levels = levels_option(a);
     // bands wide enough to carry 5 harmonics of the defect frequencies when they are known
     const double min_bw = a.number(
         "--min-bandwidth",
         kin ? std::min(s.rate / 4, 1.1 * 5 * std::max({kin->bpfi, kin->bpfo, 2 * kin->bsf})) : 0);
     std::vector<double> x = s.x;
-    const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), min_bw);
+    const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {
       Report r;
       r.meta = m;

@@ -29,8 +29,7 @@ int run_frequencies(const std::vector<std::string> &argv)
   const BearingChoice bc = bearing_choice(a, meta);
   if (!bc.geometry) throw Error("frequencies: give a bearing (--bearing NAME or --nb --db --dp)");
   if (!bc.fr) throw Error("frequencies: give the shaft speed (--rpm, --shaft-hz or --omega)");
-  const long long harmonics = a.integer("--harmonics", 1);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const int harmonics = harmonics_option(a, 1);
   const BearingGeometry &g = *bc.geometry;
   const DefectFrequencies f = defect_frequencies(g, *bc.fr);
   Output out(a);
@@ -70,7 +69,7 @@ int run_frequencies(const std::vector<std::string> &argv)
       Json h = Json::object();
       for (const auto &r : rows) {
         Json arr = Json::array();
-        for (long long k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.value);
+        for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.value);
         h.set(r.key, arr);
       }
       j.set("harmonics_hz", h);
@@ -83,9 +82,9 @@ int run_frequencies(const std::vector<std::string> &argv)
   rep.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
   rep.table_digits = 7;
   for (const auto &r : rows)
-    for (long long k = 1; k <= harmonics; ++k) {
+    for (int k = 1; k <= harmonics; ++k) {
       const double v = static_cast<double>(k) * r.value;
-      rep.rows.push_back({r.label, static_cast<int>(k), v, v / f.fr, r.formula});
+      rep.rows.push_back({r.label, k, v, v / f.fr, r.formula});
     }
   write_report(out.stream(), rep, out.format());
   return 0;

@@ -81,9 +81,7 @@ int run_orders(const std::vector<std::string> &argv)
           "constant speed (--rpm, --shaft-hz, --omega, --rpm-variable, run.json omega_inner)");
     sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
   }
-  const std::string show = a.get("--show");
-  if (show != "peaks" && show != "bins" && show != "resampled")
-    throw Error("option --show expects peaks|bins|resampled, got '" + show + "'");
+  const std::string show = a.choice("--show", {"peaks", "bins", "resampled"});
   MetaList m = s.meta;
   const MetaList sm = speed_meta(*sa);
   m.insert(m.end(), sm.begin(), sm.end());
@@ -95,19 +93,17 @@ int run_orders(const std::vector<std::string> &argv)
     std::string how = "whole band";
     if (a.has("--band")) {
       if (a.has("--kurtogram")) throw Error("give either --band or --kurtogram, not both");
-      const auto v = a.values("--band");
-      band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+      band = band_option(a);
       how = "--band";
     } else if (a.has("--kurtogram")) {
-      const long long levels = a.integer("--levels", 7);
-      if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
+      const int levels = levels_option(a);
       // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
       double min_bw = 0;
       if (bc.geometry) {
         const DefectFrequencies k = defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi));
         min_bw = std::min(s.rate / 4, 1.1 * 5 * std::max({k.bpfi, k.bpfo, 2 * k.bsf}));
       }
-      const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), min_bw);
+      const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram, spectral kurtosis " + format_number(kg.best.kurtosis, 4);
     }
@@ -156,16 +152,13 @@ int run_orders(const std::vector<std::string> &argv)
                        format_number(2 * orders->bsf, 6) + " (" + bc.geometry->name + ")");
   }
   PeakOptions po;
-  const long long npk = a.integer("--peaks", 10);
-  if (npk < 0 || npk > 100000) throw Error("option --peaks expects 0..100000");
-  po.max_peaks = static_cast<std::size_t>(npk);
+  po.max_peaks = peaks_option(a);
   po.min_prominence_db = a.number("--min-prominence", 6);
   po.fmin = a.number("--order-min", 0);
   po.fmax = a.number("--order-max", r.flat_order);
   if (!(po.fmax > po.fmin)) throw Error("--order-max must exceed --order-min");
   const double tol = a.number("--tolerance", 0.02);
-  const long long harmonics = a.integer("--harmonics", 5);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const int harmonics = harmonics_option(a, 5);
   const std::string vname = with_unit(scaling_name(sp.scaling), unit);
   Report rep;
   rep.meta = m;
@@ -187,7 +180,7 @@ int run_orders(const std::vector<std::string> &argv)
     for (const Peak &p : find_peaks(sp, po)) {
       std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
       if (orders)
-        row.emplace_back(label_frequency(p.frequency, *orders, static_cast<int>(harmonics), tol));
+        row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
       rep.rows.push_back(row);
     }
   }

@@ -54,8 +54,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<DefectFrequencies> kin;
   if (bc.geometry && bc.fr) kin = defect_frequencies(*bc.geometry, *bc.fr);
-  const long long harmonics = a.integer("--harmonics", 3);
-  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
+  const int harmonics = harmonics_option(a, 3);
   double fmax = a.number("--fmax", NAN);
   if (!std::isfinite(fmax))
     fmax = kin ? std::min(s.rate / 2, (harmonics + 0.5) * std::max(kin->bpfi, kin->bpfo) * 1.1)
@@ -67,8 +66,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
     Band band{0, s.rate / 2};
     std::string how = "whole band";
     if (a.has("--band")) {
-      const auto v = a.values("--band");
-      band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+        band = band_option(a);
       how = "band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
     } else if (!a.has("--no-kurtogram")) {
       const double min_bw =
@@ -96,7 +94,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
   ser.x = xo;
   ser.y = yo;
   fig.series.push_back(ser);
-  if (kin) fig.markers = defect_markers(*kin, static_cast<int>(harmonics), fmax);
+  if (kin) fig.markers = defect_markers(*kin, harmonics, fmax);
   const std::string unit = unit_of(a, s.name);
   fig.xlabel = "frequency (Hz)";
   fig.ylabel = std::string(scaling_name(sp.scaling)) + " of " + s.name +
@@ -117,16 +115,13 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
   if (!sa && bc.fr) sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
-  const long long harmonics = a.integer("--harmonics", 3);
-  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
+  const int harmonics = harmonics_option(a, 3);
   const std::size_t n = s.size();
   std::size_t seg = 64;  // default: about n/64 samples, a power of two in [64, 8192]
   while (seg * 2 <= std::min<std::size_t>(8192, n / 64)) seg *= 2;
   if (a.has("--segment")) {
-    const long long v = a.integer("--segment", 0);
-    if (v < 16 || static_cast<std::size_t>(v) > n)
-      throw Error("option --segment expects 16.." + std::to_string(n) + " samples");
-    seg = static_cast<std::size_t>(v);
+    seg = static_cast<std::size_t>(
+        a.integer_in("--segment", 0, 16, static_cast<long long>(n), "a sample count"));
   }
   if (seg > n) seg = n;
   std::size_t hop = std::max<std::size_t>(1, seg / 4);
@@ -323,20 +318,18 @@ int run_plot(const std::vector<std::string> &argv)
   a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
-  const std::string kind = a.get("--kind");
+  const std::string kind =
+      a.choice("--kind", {"signal", "spectrum", "envelope", "spectrogram", "indicators"});
   Figure fig;
   if (kind == "indicators") {
     fig = indicators_figure(a);
   } else if (kind == "spectrogram") {
     const RunMetadata meta = run_metadata(a);
     fig = spectrogram_figure(a, load_input(a, meta, 64), meta);
-  } else if (kind == "signal" || kind == "spectrum" || kind == "envelope") {
+  } else {  // signal, spectrum or envelope
     const RunMetadata meta = run_metadata(a);
     const Signal s = load_input(a, meta, kind == "signal" ? 2 : 64);
     fig = kind == "signal" ? signal_figure(a, s) : spectrum_figure(a, s, meta, kind == "envelope");
-  } else {
-    throw Error("option --kind expects signal|spectrum|envelope|spectrogram|indicators, got '" +
-                kind + "'");
   }
   if (a.has("--title")) fig.title = a.get("--title");
   const std::string size = a.get("--size");

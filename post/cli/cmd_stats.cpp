@@ -34,9 +34,8 @@ int run_stats(const std::vector<std::string> &argv)
   // windows [i0, i1)
   std::vector<std::pair<std::size_t, std::size_t>> windows;
   if (a.has("--window-length")) {
-    const double len = a.number("--window-length");
-    const double step = a.has("--step") ? a.number("--step") : len;
-    if (!(len > 0) || !(step > 0)) throw Error("--window-length and --step must be > 0 s");
+    const double len = a.number_in("--window-length", NAN, Range::above(0), "a length", "s");
+    const double step = a.number_in("--step", len, Range::above(0), "a hop", "s");
     const auto wl = static_cast<std::size_t>(std::llround(len * s.rate));
     const auto ws = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
     if (wl < 2 || wl > s.size())

@@ -1,5 +1,6 @@
 #include "spectrum_options.h"
 
+#include <climits>
 #include <cmath>
 #include <limits>
 
@@ -33,22 +34,15 @@ SpectrumOptions spectrum_options(const Args &a, std::size_t n, double rate)
   o.detrend = parse_detrend(a.get("--detrend"));
   o.scaling = parse_scaling(a.get("--scale"));
   if (a.has("--segment")) {
-    const long long seg = a.integer("--segment", 0);
-    if (seg < 4) throw Error("option --segment expects at least 4 samples");
+    const long long seg = a.integer_in("--segment", 0, 4, LLONG_MAX, "a sample count");
     o.segment = static_cast<std::size_t>(seg);
     if (o.segment > n)
       throw Error("option --segment " + std::to_string(seg) + " exceeds the signal (" +
                   std::to_string(n) + " samples)");
   }
   o.overlap = a.number("--overlap", 0.5);
-  const long long pad = a.integer("--pad", 1);
-  if (pad < 1 || pad > 64) throw Error("option --pad expects an integer 1..64");
-  o.pad = static_cast<std::size_t>(pad);
-  if (a.has("--nfft")) {
-    const long long nfft = a.integer("--nfft", 0);
-    if (nfft < 4) throw Error("option --nfft expects an integer >= 4");
-    o.nfft = static_cast<std::size_t>(nfft);
-  }
+  o.pad = static_cast<std::size_t>(a.integer_in("--pad", 1, 1, 64));
+  if (a.has("--nfft")) o.nfft = static_cast<std::size_t>(a.integer_in("--nfft", 0, 4));
   return o;
 }
 
@@ -72,9 +66,7 @@ void add_peak_options(Args &a)
 PeakOptions peak_options(const Args &a)
 {
   PeakOptions p;
-  const long long n = a.integer("--peaks", 10);
-  if (n < 0 || n > 100000) throw Error("option --peaks expects 0..100000");
-  p.max_peaks = static_cast<std::size_t>(n);
+  p.max_peaks = peaks_option(a);
   p.min_prominence_db = a.number("--min-prominence", 6);
   p.interpolate = !a.has("--no-interpolate");
   p.fmin = a.number("--fmin", 0);
@@ -171,8 +163,7 @@ void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Sp
 {
   const PeakOptions po = peak_options(a);
   const double tol = a.number("--tolerance", 0.02);
-  const long long harmonics = a.integer("--harmonics", 5);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const int harmonics = harmonics_option(a, 5);
   const std::string vunit = s.scaling == Scaling::Amplitude ? unit
                             : unit.empty() ? std::string(s.scaling == Scaling::Psd ? "per_Hz" : "")
                                            : unit + scaling_unit(s.scaling);
@@ -206,7 +197,7 @@ void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Sp
   if (a.has("--fault-bands")) {
     if (!kin)
       throw Error("--fault-bands needs the bearing and the shaft speed (options or run.json)");
-    write_fault_bands(out, fmt, s, std::move(meta), unit, *kin, static_cast<int>(harmonics), tol);
+    write_fault_bands(out, fmt, s, std::move(meta), unit, *kin, harmonics, tol);
     return;
   }
   const std::vector<Peak> peaks = find_peaks(s, po);
@@ -222,7 +213,7 @@ void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Sp
   int rank = 0;
   for (const Peak &p : peaks) {
     std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-    if (kin) row.emplace_back(label_frequency(p.frequency, *kin, static_cast<int>(harmonics), tol));
+    if (kin) row.emplace_back(label_frequency(p.frequency, *kin, harmonics, tol));
     r.rows.push_back(row);
   }
   write_report(out, r, fmt);
