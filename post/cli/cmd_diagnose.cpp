@@ -229,8 +229,8 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (out.format() == OutputFormat::Csv) {
     Report r;
     r.meta = m;
-    r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
-                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
+    r.columns = {"defect", "score", "frequency_Hz", "kinematic_Hz", "size_deg", "pulse_width_s"};
+    for (const auto &f : d.families) r.columns.push_back(f.defect + "_score");
     r.columns.insert(r.columns.end(),
                      {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
     std::vector<Cell> row{d.defect,

@@ -1,6 +1,7 @@
 // ohmdem-post frequencies: kinematic defect frequencies from geometry and shaft speed.
 #include <iostream>
 
+#include "../defect_lines.h"
 #include "../error.h"
 #include "commands.h"
 #include "common.h"
@@ -34,18 +35,6 @@ int run_frequencies(const std::vector<std::string> &argv)
   const DefectFrequencies f = defect_frequencies(g, *bc.fr);
   Output out(a);
 
-  struct Row {
-    const char *key, *label, *formula;
-    double value;
-  };
-  const Row rows[] = {
-      {"fr", "shaft", "fr", f.fr},
-      {"ftf", "FTF (cage)", "fr/2 (1 - d/D cos b)", f.ftf},
-      {"bpfo", "BPFO (outer race)", "Nb FTF", f.bpfo},
-      {"bpfi", "BPFI (inner race)", "Nb fr/2 (1 + d/D cos b)", f.bpfi},
-      {"bsf", "BSF (ball spin)", "D/(2d) fr (1 - (d/D cos b)^2)", f.bsf},
-      {"two_bsf", "2xBSF (ball defect)", "2 BSF", 2 * f.bsf},
-  };
   MetaList meta_out = {
       {"bearing", g.name},
       {"geometry from", bc.geometry_source},
@@ -64,12 +53,12 @@ int run_frequencies(const std::vector<std::string> &argv)
     b.set("dp_m", g.dp);
     b.set("contact_angle_deg", g.contact_angle_deg);
     j.set("bearing", b);
-    for (const auto &r : rows) j.set(std::string(r.key) + "_hz", r.value);
+    for (const DefectLine &r : defect_lines()) j.set(std::string(r.key) + "_hz", r.of(f));
     if (harmonics > 1) {
       Json h = Json::object();
-      for (const auto &r : rows) {
+      for (const DefectLine &r : defect_lines()) {
         Json arr = Json::array();
-        for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.value);
+        for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.of(f));
         h.set(r.key, arr);
       }
       j.set("harmonics_hz", h);
@@ -81,10 +70,10 @@ int run_frequencies(const std::vector<std::string> &argv)
   rep.meta = meta_out;
   rep.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
   rep.table_digits = 7;
-  for (const auto &r : rows)
+  for (const DefectLine &r : defect_lines())
     for (int k = 1; k <= harmonics; ++k) {
-      const double v = static_cast<double>(k) * r.value;
-      rep.rows.push_back({r.label, k, v, v / f.fr, r.formula});
+      const double v = static_cast<double>(k) * r.of(f);
+      rep.rows.push_back({r.title, k, v, v / f.fr, r.formula});
     }
   write_report(out.stream(), rep, out.format());
   return 0;

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <limits>
 
+#include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
 #include "../order_tracking.h"
@@ -145,11 +146,12 @@ int run_orders(const std::vector<std::string> &argv)
   std::optional<DefectFrequencies> orders;
   if (bc.geometry) {
     orders = defect_frequencies(*bc.geometry, 1.0);
-    m.emplace_back("defect orders (x fr)",
-                   "FTF " + format_number(orders->ftf, 6) + ", BPFO " +
-                       format_number(orders->bpfo, 6) + ", BPFI " + format_number(orders->bpfi, 6) +
-                       ", BSF " + format_number(orders->bsf, 6) + ", 2BSF " +
-                       format_number(2 * orders->bsf, 6) + " (" + bc.geometry->name + ")");
+    std::string list;
+    for (const DefectLine &line : defect_lines())
+      if (line.defect[0] != '\0')
+        list += (list.empty() ? "" : ", ") + std::string(line.name) + " " +
+                format_number(line.of(*orders), 6);
+    m.emplace_back("defect orders (x fr)", list + " (" + bc.geometry->name + ")");
   }
   PeakOptions po;
   po.max_peaks = peaks_option(a);

@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
 #include "../gnuplot.h"
@@ -29,23 +30,15 @@ std::vector<std::string> split_list(const std::string &s)
   return out;
 }
 
-// Defect-frequency markers up to fmax: harmonics 1..h of FTF, BPFO, BPFI and 2 BSF.
+// Defect-frequency markers up to fmax: harmonics 1..h of the fault lines (FTF, BPFO, BPFI, 2BSF).
 std::vector<PlotMarker> defect_markers(const DefectFrequencies &k, int harmonics, double fmax)
 {
-  struct Fam {
-    const char *name;
-    double f;
-    const char *color;
-  };
-  const Fam fams[] = {{"FTF", k.ftf, "#7f8c8d"},
-                      {"BPFO", k.bpfo, "#2471a3"},
-                      {"BPFI", k.bpfi, "#c0392b"},
-                      {"2BSF", 2 * k.bsf, "#239b56"}};
   std::vector<PlotMarker> m;
-  for (const auto &f : fams)
-    for (int h = 1; h <= harmonics; ++h)
-      if (h * f.f <= fmax)
-        m.push_back({h * f.f, (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name, f.color});
+  for (const DefectLine &line : defect_lines())
+    if (line.fault_line)
+      for (int h = 1; h <= harmonics; ++h)
+        if (h * line.of(k) <= fmax)
+          m.push_back({h * line.of(k), harmonic_label(h, line, false), line.color});
   return m;
 }
 
@@ -185,23 +178,16 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
   im.zlabel = "amplitude (dB re 1" + (unit.empty() ? std::string() : " " + unit) + ")";
   fig.ylabel = "frequency (Hz)";
   if (sa && orders) {
-    struct Fam {
-      const char *name;
-      double order;
-    };
-    const Fam fams[] = {{"FTF", orders->ftf},
-                        {"BPFO", orders->bpfo},
-                        {"BPFI", orders->bpfi},
-                        {"2BSF", 2 * orders->bsf}};
-    for (const auto &f : fams)
+    for (const DefectLine &line : defect_lines()) {
+      if (!line.fault_line) continue;
       for (int h = 1; h <= harmonics; ++h) {
         PlotSeries ser;
-        ser.title = (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name;
+        ser.title = harmonic_label(h, line, false);
         for (std::size_t c = 0; c < cols; ++c) {
           const std::size_t i0 = c * hop, i1 = c * hop + seg - 1;
           const double fr = (sa->theta[i1] - sa->theta[i0]) * s.rate /
                             static_cast<double>(i1 - i0) / (2 * 3.14159265358979323846);
-          const double y = h * f.order * fr;
+          const double y = h * line.of(*orders) * fr;
           if (y >= fmin && y <= fmax) {
             ser.x.push_back(im.x[c]);
             ser.y.push_back(y);
@@ -209,6 +195,7 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
         }
         if (!ser.x.empty()) fig.series.push_back(ser);
       }
+    }
   }
   fig.xmin = im.x.front();
   fig.xmax = im.x.back();

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "../defect_lines.h"
 #include "../error.h"
 #include "common.h"
 
@@ -92,35 +93,23 @@ MetaList spectrum_meta(const Spectrum &s, Detrend d)
 
 std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tol)
 {
-  struct Fam {
-    const char *name;
-    double f;
-  };
-  const Fam fams[] = {{"fr", k.fr},     {"FTF", k.ftf}, {"BPFO", k.bpfo},
-                      {"BPFI", k.bpfi}, {"BSF", k.bsf}, {"2BSF", 2 * k.bsf}};
   std::string best;
   double best_err = tol;
-  for (const auto &fam : fams)
+  for (const DefectLine &line : defect_lines())
     for (int h = 1; h <= harmonics; ++h) {
-      const double err = std::fabs(f - h * fam.f) / (h * fam.f);
+      const double err = std::fabs(f - h * line.of(k)) / (h * line.of(k));
       if (err <= best_err) {
         best_err = err;
-        best = std::to_string(h) + "x" + fam.name;
+        best = harmonic_label(h, line);
       }
     }
   return best;
 }
 
 void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, MetaList meta,
-                       const std::string &unit, const DefectFrequencies &k, int harmonics,
-                       double tol)
+                        const std::string &unit, const DefectFrequencies &k, int harmonics,
+                        double tol)
 {
-  struct Fam {
-    const char *name;
-    double f;
-  };
-  const Fam fams[] = {{"fr", k.fr},     {"FTF", k.ftf}, {"BPFO", k.bpfo},
-                      {"BPFI", k.bpfi}, {"BSF", k.bsf}, {"2BSF", 2 * k.bsf}};
   // a windowed sine spreads its power A^2/2 over ENBW/df bins of the amplitude spectrum
   const double enbw_bins = s.enbw_hz / s.df;
   Report r;
@@ -135,9 +124,9 @@ void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, M
                with_unit("peak_amplitude", unit),
                "peak_frequency_Hz",
                with_unit("band_power", unit.empty() ? "" : unit + "^2")};
-  for (const auto &fam : fams)
+  for (const DefectLine &line : defect_lines())
     for (int h = 1; h <= harmonics; ++h) {
-      const double c = h * fam.f, half = std::max(tol * c, s.df);
+      const double c = h * line.of(k), half = std::max(tol * c, s.df);
       const double lo = c - half, hi = c + half;
       if (hi >= s.rate / 2) continue;
       std::size_t best = 0;
@@ -150,7 +139,7 @@ void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, M
       }
       if (best == 0) continue;
       const Peak p = refine_peak(s, best);
-      r.rows.push_back({std::to_string(h) + "x" + fam.name, lo, hi, c,
+      r.rows.push_back({harmonic_label(h, line), lo, hi, c,
                         s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best),
                         p.frequency, power / enbw_bins});
     }
