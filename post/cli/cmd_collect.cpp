@@ -297,10 +297,10 @@ int run_collect(const std::vector<std::string> &argv)
     return std::find(fixed.begin(), fixed.end(), k) != fixed.end() ? "param_" + k : k;
   };
 
-  Report rep;
-  rep.columns = {"run", "status"};
-  for (const auto &k : keys) rep.columns.push_back(param_column(k));
-  rep.columns.insert(rep.columns.end(), fixed.begin() + 2, fixed.end());
+  Result rep;
+  rep.table.columns = {"run", "status"};
+  for (const auto &k : keys) rep.table.columns.push_back(param_column(k));
+  rep.table.columns.insert(rep.table.columns.end(), fixed.begin() + 2, fixed.end());
   for (const auto &r : results) {
     std::vector<Cell> row{r.run, r.status};
     for (const auto &k : keys) row.push_back(param_cell(find_param(r, k)));
@@ -316,7 +316,7 @@ int run_collect(const std::vector<std::string> &argv)
       row.emplace_back(d.defect == "none" ? kNaN : d.frequency_hz);
       row.emplace_back(d.size.valid ? d.size.size_deg : kNaN);
     }
-    rep.rows.push_back(std::move(row));
+    rep.table.rows.push_back(std::move(row));
   }
 
   MetaList &m = rep.meta;
@@ -358,7 +358,7 @@ int run_collect(const std::vector<std::string> &argv)
     m.emplace_back("diagnosis", "as ohmdem-post diagnose with its default options, same window");
 
   Output out(a);
-  write_report(out.stream(), rep, out.format());
+  out.write(rep);
   return 0;
 }
 

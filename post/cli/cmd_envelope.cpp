@@ -74,7 +74,7 @@ int run_envelope(const std::vector<std::string> &argv)
     std::vector<double> x = s.x;
     const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {
-      Report r;
+      Result r;
       r.meta = m;
       r.meta.emplace_back("spectral kurtosis",
                           "E|c|^4/(E|c|^2)^2 - 2 of the band's complex "
@@ -82,10 +82,10 @@ int run_envelope(const std::vector<std::string> &argv)
       r.meta.emplace_back("best band (Hz)",
                           format_number(kg.best.lo) + " to " + format_number(kg.best.hi));
       r.meta.emplace_back("band kurtosis significant", significance(kg));
-      r.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
+      r.table.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
       for (const auto &c : kg.cells)
-        r.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
-      write_report(out.stream(), r, out.format());
+        r.table.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
+      out.write(r);
       return 0;
     }
     band = {kg.best.lo, kg.best.hi};
@@ -97,21 +97,21 @@ int run_envelope(const std::vector<std::string> &argv)
   const std::vector<double> env = envelope(s.x, s.rate, band);
   const std::string unit = unit_of(a, s.name);
   if (show == "envelope") {
-    Report r;
+    Result r;
     r.meta = m;
     r.meta.emplace_back("envelope", "|analytic signal| of the band-passed signal");
-    r.columns = {"time_s", with_unit("envelope", unit)};
-    for (std::size_t i = 0; i < env.size(); ++i) r.rows.push_back({s.time(i), env[i]});
-    r.table_digits = 10;
-    write_report(out.stream(), r, out.format());
+    r.table.columns = {"time_s", with_unit("envelope", unit)};
+    for (std::size_t i = 0; i < env.size(); ++i) r.table.rows.push_back({s.time(i), env[i]});
+    r.table.table_digits = 10;
+    out.write(r);
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, env.size(), s.rate);
   const Spectrum sp = spectrum(env, s.rate, so);
   const MetaList sm = spectrum_meta(sp, so.detrend);
   m.insert(m.end(), sm.begin(), sm.end());
-  write_spectrum(out.stream(), out.format(), a, sp, m, unit, kin, "envelope spectrum peaks",
-                 show == "bins" || a.has("--bins"));
+  out.write(spectrum_result(a, sp, m, unit, kin, "envelope spectrum peaks",
+                            show == "bins" || a.has("--bins")));
   return 0;
 }
 

@@ -35,7 +35,8 @@ int run_frequencies(const std::vector<std::string> &argv)
   const DefectFrequencies f = defect_frequencies(g, *bc.fr);
   Output out(a);
 
-  MetaList meta_out = {
+  Result r;
+  r.meta = {
       {"bearing", g.name},
       {"geometry from", bc.geometry_source},
       {"balls", std::to_string(g.nb)},
@@ -44,38 +45,33 @@ int run_frequencies(const std::vector<std::string> &argv)
       {"contact angle (deg)", format_number(g.contact_angle_deg)},
       {"shaft frequency (Hz)", format_number(f.fr, 10)},
   };
-  if (out.format() == OutputFormat::Json) {
-    Json j = Json::object();
-    Json b = Json::object();
-    b.set("name", g.name);
-    b.set("nb", g.nb);
-    b.set("db_m", g.db);
-    b.set("dp_m", g.dp);
-    b.set("contact_angle_deg", g.contact_angle_deg);
-    j.set("bearing", b);
-    for (const DefectLine &r : defect_lines()) j.set(std::string(r.key) + "_hz", r.of(f));
-    if (harmonics > 1) {
-      Json h = Json::object();
-      for (const DefectLine &r : defect_lines()) {
-        Json arr = Json::array();
-        for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.of(f));
-        h.set(r.key, arr);
-      }
-      j.set("harmonics_hz", h);
-    }
-    out.stream() << j.dump(2) << '\n';
-    return 0;
-  }
-  Report rep;
-  rep.meta = meta_out;
-  rep.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
-  rep.table_digits = 7;
-  for (const DefectLine &r : defect_lines())
+  r.table.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
+  r.table.table_digits = 7;
+  for (const DefectLine &line : defect_lines())
     for (int k = 1; k <= harmonics; ++k) {
-      const double v = static_cast<double>(k) * r.of(f);
-      rep.rows.push_back({r.title, k, v, v / f.fr, r.formula});
+      const double v = static_cast<double>(k) * line.of(f);
+      r.table.rows.push_back({line.title, k, v, v / f.fr, line.formula});
     }
-  write_report(out.stream(), rep, out.format());
+  // JSON: the bearing, then each line by key, its harmonics as arrays
+  Json b = Json::object();
+  b.set("name", g.name);
+  b.set("nb", g.nb);
+  b.set("db_m", g.db);
+  b.set("dp_m", g.dp);
+  b.set("contact_angle_deg", g.contact_angle_deg);
+  r.json = Json::object();
+  r.json.set("bearing", b);
+  for (const DefectLine &line : defect_lines()) r.json.set(std::string(line.key) + "_hz", line.of(f));
+  if (harmonics > 1) {
+    Json h = Json::object();
+    for (const DefectLine &line : defect_lines()) {
+      Json arr = Json::array();
+      for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * line.of(f));
+      h.set(line.key, arr);
+    }
+    r.json.set("harmonics_hz", h);
+  }
+  out.write(r);
   return 0;
 }
 

@@ -129,15 +129,15 @@ int run_orders(const std::vector<std::string> &argv)
   const std::string unit = unit_of(a, s.name);
   Output out(a);
   if (show == "resampled") {
-    Report rep;
+    Result rep;
     rep.meta = m;
-    rep.columns = {"revolution", "angle_rad", with_unit(s.name, unit)};
+    rep.table.columns = {"revolution", "angle_rad", with_unit(s.name, unit)};
     for (std::size_t k = 0; k < r.x.size(); ++k) {
       const double ang = r.theta0 + 2 * kPi * static_cast<double>(k) / spr;
-      rep.rows.push_back({ang / (2 * kPi), ang, r.x[k]});
+      rep.table.rows.push_back({ang / (2 * kPi), ang, r.x[k]});
     }
-    rep.table_digits = 10;
-    write_report(out.stream(), rep, out.format());
+    rep.table.table_digits = 10;
+    out.write(rep);
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, r.x.size(), spr);
@@ -162,31 +162,31 @@ int run_orders(const std::vector<std::string> &argv)
   const double tol = a.number("--tolerance", 0.02);
   const int harmonics = harmonics_option(a, 5);
   const std::string vname = with_unit(scaling_name(sp.scaling), unit);
-  Report rep;
+  Result rep;
   rep.meta = m;
   const MetaList spm = spectrum_meta(sp, so.detrend);
   rep.meta.insert(rep.meta.end(), spm.begin(), spm.end());
   if (show == "bins") {
-    rep.columns = {"order", vname};
+    rep.table.columns = {"order", vname};
     for (std::size_t k = 0; k < sp.bins(); ++k)
       if (sp.frequency(k) >= po.fmin && sp.frequency(k) <= po.fmax)
-        rep.rows.push_back({sp.frequency(k), sp.value[k]});
-    rep.table_digits = 8;
+        rep.table.rows.push_back({sp.frequency(k), sp.value[k]});
+    rep.table.table_digits = 8;
   } else {
     rep.meta.emplace_back(
         "peaks", what + ", largest first, prominence >= " + format_number(po.min_prominence_db) +
                      " dB over the local median, interpolated");
-    rep.columns = {"rank", "order", vname, "prominence_dB"};
-    if (orders) rep.columns.push_back("label");
+    rep.table.columns = {"rank", "order", vname, "prominence_dB"};
+    if (orders) rep.table.columns.push_back("label");
     int rank = 0;
     for (const Peak &p : find_peaks(sp, po)) {
       std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
       if (orders)
         row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
-      rep.rows.push_back(row);
+      rep.table.rows.push_back(row);
     }
   }
-  write_report(out.stream(), rep, out.format());
+  out.write(rep);
   return 0;
 }
 

@@ -56,54 +56,52 @@ int run_stats(const std::vector<std::string> &argv)
     }
     res.push_back(indicators(buf));
   }
-  MetaList meta_out = s.meta;
-  meta_out.emplace_back("mean removed", remove_mean ? "yes" : "no");
-  meta_out.emplace_back("kurtosis", "Pearson (normal law = 3)");
-
-  if (out.format() == OutputFormat::Json) {
-    auto one = [&](std::size_t w) {
-      Json o = Json::object();
-      o.set("t_start_s", s.time(windows[w].first));
-      o.set("t_end_s", s.time(windows[w].second - 1));
-      o.set("n", res[w].n);
-      for (const auto &f : indicator_fields()) o.set(f.key, res[w].*f.value);
-      return o;
-    };
-    Json j = windows.size() == 1 && !a.has("--window-length") ? one(0) : Json::object();
-    if (a.has("--window-length")) {
-      Json arr = Json::array();
-      for (std::size_t w = 0; w < windows.size(); ++w) arr.push_back(one(w));
-      j.set("windows", arr);
-    }
-    j.set("unit", unit);
-    j.set("mean_removed", remove_mean);
-    j.set("meta", meta_json(meta_out));
-    out.stream() << j.dump(2) << '\n';
-    return 0;
+  const bool windowed = a.has("--window-length");
+  Result r;
+  r.meta = s.meta;
+  r.meta.emplace_back("mean removed", remove_mean ? "yes" : "no");
+  r.meta.emplace_back("kurtosis", "Pearson (normal law = 3)");
+  // one row per window
+  r.table.columns = {"t_start_s", "t_end_s", "n"};
+  for (const auto &f : indicator_fields())
+    r.table.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
+    for (const auto &f : indicator_fields()) row.emplace_back(res[w].*f.value);
+    r.table.rows.push_back(row);
   }
-
-  Report r;
-  r.meta = meta_out;
-  if (out.format() == OutputFormat::Table && !a.has("--window-length")) {
-    r.columns = {"indicator", with_unit("value", ""), "definition"};
+  // one window reads better as one indicator a line, with its definition
+  if (!windowed) {
+    Table t;
+    t.columns = {"indicator", "value", "definition"};
     for (const auto &f : indicator_fields())
-      r.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
+      t.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
                         res[0].*f.value, f.definition});
-    r.rows.push_back(
+    t.rows.push_back(
         {"samples", res[0].n,
          "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});
-    r.table_digits = 10;
-  } else {
-    r.columns = {"t_start_s", "t_end_s", "n"};
-    for (const auto &f : indicator_fields())
-      r.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
-    for (std::size_t w = 0; w < windows.size(); ++w) {
-      std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
-      for (const auto &f : indicator_fields()) row.emplace_back(res[w].*f.value);
-      r.rows.push_back(row);
-    }
+    t.table_digits = 10;
+    r.text.push_back({"", t});
   }
-  write_report(out.stream(), r, out.format());
+  // JSON: the window's indicators as fields, or the windows as an array
+  auto window_json = [&](std::size_t w) {
+    Json o = Json::object();
+    o.set("t_start_s", s.time(windows[w].first));
+    o.set("t_end_s", s.time(windows[w].second - 1));
+    o.set("n", res[w].n);
+    for (const auto &f : indicator_fields()) o.set(f.key, res[w].*f.value);
+    return o;
+  };
+  r.json = windowed ? Json::object() : window_json(0);
+  if (windowed) {
+    Json arr = Json::array();
+    for (std::size_t w = 0; w < windows.size(); ++w) arr.push_back(window_json(w));
+    r.json.set("windows", arr);
+  }
+  r.json.set("unit", unit);
+  r.json.set("mean_removed", remove_mean);
+  r.json.set("meta", meta_json(r.meta));
+  out.write(r);
   return 0;
 }
 

@@ -33,6 +33,7 @@ class Output {
   explicit Output(const Args &a);  // --output FILE or stdout; --format
   std::ostream &stream() { return file_ ? *file_ : *out_; }
   OutputFormat format() const { return format_; }
+  void write(const Result &r) { write_result(stream(), r, format_); }
 
  private:
   std::unique_ptr<std::ofstream> file_;

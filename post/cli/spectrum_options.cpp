@@ -106,18 +106,19 @@ std::string label_frequency(double f, const DefectFrequencies &k, int harmonics,
   return best;
 }
 
-void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, MetaList meta,
-                        const std::string &unit, const DefectFrequencies &k, int harmonics,
-                        double tol)
+namespace {
+
+Result fault_band_result(const Spectrum &s, MetaList meta, const std::string &unit,
+                         const DefectFrequencies &k, int harmonics, double tol)
 {
   // a windowed sine spreads its power A^2/2 over ENBW/df bins of the amplitude spectrum
   const double enbw_bins = s.enbw_hz / s.df;
-  Report r;
+  Result r;
   r.meta = std::move(meta);
   r.meta.emplace_back("fault bands", "harmonic h x f, +-" + format_number(100 * tol) +
                                          " % (at least one bin); band power = sum of A^2/2 "
                                          "over the band / ENBW in bins");
-  r.columns = {"label",
+  r.table.columns = {"label",
                "f_low_Hz",
                "f_high_Hz",
                "center_Hz",
@@ -139,16 +140,17 @@ void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, M
       }
       if (best == 0) continue;
       const Peak p = refine_peak(s, best);
-      r.rows.push_back({harmonic_label(h, line), lo, hi, c,
+      r.table.rows.push_back({harmonic_label(h, line), lo, hi, c,
                         s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best),
                         p.frequency, power / enbw_bins});
     }
-  write_report(out, r, fmt);
+  return r;
 }
 
-void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Spectrum &s,
-                    MetaList meta, const std::string &unit,
-                    const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
+}  // namespace
+
+Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const std::string &unit,
+                       const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
 {
   const PeakOptions po = peak_options(a);
   const double tol = a.number("--tolerance", 0.02);
@@ -158,54 +160,45 @@ void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Sp
                                            : unit + scaling_unit(s.scaling);
   const std::string vname = with_unit(scaling_name(s.scaling), vunit);
   if (bins) {
-    Report r;
+    Result r;
     r.meta = std::move(meta);
-    r.columns = {"frequency_Hz", vname};
+    r.table.columns = {"frequency_Hz", vname};
+    r.table.table_digits = 8;
+    Json fs = Json::array(), vs = Json::array();  // JSON: the two columns as arrays
     for (std::size_t k = 0; k < s.bins(); ++k) {
       const double f = s.frequency(k);
       if (f < po.fmin || f > po.fmax) continue;
-      r.rows.push_back({f, s.value[k]});
+      r.table.rows.push_back({f, s.value[k]});
+      fs.push_back(f);
+      vs.push_back(s.value[k]);
     }
-    if (fmt == OutputFormat::Json) {
-      Json j = Json::object();
-      j.set("meta", meta_json(r.meta));
-      Json fs = Json::array(), vs = Json::array();
-      for (const auto &row : r.rows) {
-        fs.push_back(row[0].number);
-        vs.push_back(row[1].number);
-      }
-      j.set("frequency_hz", fs);
-      j.set(vname, vs);
-      out << j.dump(2) << '\n';
-    } else {
-      r.table_digits = 8;
-      write_report(out, r, fmt);
-    }
-    return;
+    r.json = Json::object();
+    r.json.set("meta", meta_json(r.meta));
+    r.json.set("frequency_hz", fs);
+    r.json.set(vname, vs);
+    return r;
   }
   if (a.has("--fault-bands")) {
     if (!kin)
       throw Error("--fault-bands needs the bearing and the shaft speed (options or run.json)");
-    write_fault_bands(out, fmt, s, std::move(meta), unit, *kin, harmonics, tol);
-    return;
+    return fault_band_result(s, std::move(meta), unit, *kin, harmonics, tol);
   }
-  const std::vector<Peak> peaks = find_peaks(s, po);
-  Report r;
+  Result r;
   r.meta = std::move(meta);
   r.meta.emplace_back("peaks", std::string(what) + ", largest first, prominence >= " +
                                    format_number(po.min_prominence_db) +
                                    " dB over the local "
                                    "median, " +
                                    (po.interpolate ? "interpolated" : "bin values"));
-  r.columns = {"rank", "frequency_Hz", vname, "prominence_dB"};
-  if (kin) r.columns.push_back("label");
+  r.table.columns = {"rank", "frequency_Hz", vname, "prominence_dB"};
+  if (kin) r.table.columns.push_back("label");
   int rank = 0;
-  for (const Peak &p : peaks) {
+  for (const Peak &p : find_peaks(s, po)) {
     std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
     if (kin) row.emplace_back(label_frequency(p.frequency, *kin, harmonics, tol));
-    r.rows.push_back(row);
+    r.table.rows.push_back(row);
   }
-  write_report(out, r, fmt);
+  return r;
 }
 
 }  // namespace ohmdem::post::cli
