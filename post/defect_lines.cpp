@@ -1,5 +1,8 @@
 #include "defect_lines.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace ohmdem::post {
 
 const std::vector<DefectLine> &defect_lines()
@@ -25,6 +28,31 @@ const std::vector<DefectLine> &defect_lines()
 std::string harmonic_label(int h, const DefectLine &line, bool always)
 {
   return (always || h > 1 ? std::to_string(h) + "x" : std::string()) + line.name;
+}
+
+std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tol)
+{
+  std::string best;
+  double best_err = tol;
+  for (const DefectLine &line : defect_lines())
+    for (int h = 1; h <= harmonics; ++h) {
+      const double err = std::fabs(f - h * line.of(k)) / (h * line.of(k));
+      if (err <= best_err) {
+        best_err = err;
+        best = harmonic_label(h, line);
+      }
+    }
+  return best;
+}
+
+double highest_defect_frequency(const DefectFrequencies &k)
+{
+  return std::max({k.bpfi, k.bpfo, 2 * k.bsf});
+}
+
+double defect_band_width(const DefectFrequencies &k, int harmonics, double rate)
+{
+  return std::min(rate / 4, 1.1 * harmonics * highest_defect_frequency(k));
 }
 
 }  // namespace ohmdem::post

@@ -28,6 +28,18 @@ const std::vector<DefectLine> &defect_lines();
 // "hxNAME" (h > 1) or "NAME"; `always` writes "1xNAME" too (peak labels, fault bands).
 std::string harmonic_label(int h, const DefectLine &line, bool always = true);
 
+// The nearest harmonic h = 1..harmonics of a line within relative `tolerance` of f
+// ("3xBPFO"), "" if none; on a tie the earlier line of the table wins.
+std::string label_frequency(double f, const DefectFrequencies &k, int harmonics,
+                            double tolerance);
+
+// The fastest defect line: max(BPFI, BPFO, 2 BSF).
+double highest_defect_frequency(const DefectFrequencies &k);
+
+// The narrowest kurtogram band that carries `harmonics` harmonics of the fastest defect line
+// (10 % margin), at most a quarter of the sampling rate.
+double defect_band_width(const DefectFrequencies &k, int harmonics, double rate);
+
 }  // namespace ohmdem::post
 
 #endif

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "defect_lines.h"
 #include "error.h"
 #include "peaks.h"
 #include "pulses.h"
@@ -263,7 +264,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   Diagnosis d;
   d.kinematics = defect_frequencies(opt.geometry, opt.fr);
   const DefectFrequencies &k = d.kinematics;
-  const double fmax = std::max({k.bpfi, k.bpfo, 2 * k.bsf});
+  const double fmax = highest_defect_frequency(k);
   if (opt.harmonics * fmax * (1 + opt.tolerance) + k.fr >= s.rate / 2)
     throw Error("sampling rate " + format_number(s.rate) +
                 " Hz too low: " + std::to_string(opt.harmonics) + " harmonics of " +
@@ -284,7 +285,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
   std::size_t bands_searched = 1;
   if (!(d.band.hi > d.band.lo)) {
-    const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
+    const double min_bw = defect_band_width(k, opt.harmonics, s.rate);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;

@@ -101,8 +101,8 @@ int run_orders(const std::vector<std::string> &argv)
       // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
       double min_bw = 0;
       if (bc.geometry) {
-        const DefectFrequencies k = defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi));
-        min_bw = std::min(s.rate / 4, 1.1 * 5 * std::max({k.bpfi, k.bpfo, 2 * k.bsf}));
+        min_bw = defect_band_width(defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi)),
+                                   5, s.rate);
       }
       const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
       band = {kg.best.lo, kg.best.hi};

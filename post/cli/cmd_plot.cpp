@@ -8,6 +8,7 @@
 #include "../envelope.h"
 #include "../error.h"
 #include "../gnuplot.h"
+#include "../spectrogram.h"
 #include "../read_table.h"
 #include "../table_select.h"
 #include "../text_scan.h"
@@ -59,11 +60,11 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
     Band band{0, s.rate / 2};
     std::string how = "whole band";
     if (a.has("--band")) {
-        band = band_option(a);
+      band = band_option(a);
       how = "band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
     } else if (!a.has("--no-kurtogram")) {
       const double min_bw =
-          kin ? std::min(s.rate / 4, 1.1 * 5 * std::max(kin->bpfi, kin->bpfo)) : s.rate / 256;
+          kin ? defect_band_width(*kin, 5, s.rate) : s.rate / 256;
       const Kurtogram kg = kurtogram(x, s.rate, 7, min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
@@ -109,86 +110,44 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
   std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
   if (!sa && bc.fr) sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
   const int harmonics = harmonics_option(a, 3);
-  const std::size_t n = s.size();
-  std::size_t seg = 64;  // default: about n/64 samples, a power of two in [64, 8192]
-  while (seg * 2 <= std::min<std::size_t>(8192, n / 64)) seg *= 2;
-  if (a.has("--segment")) {
-    seg = static_cast<std::size_t>(
-        a.integer_in("--segment", 0, 16, static_cast<long long>(n), "a sample count"));
-  }
-  if (seg > n) seg = n;
-  std::size_t hop = std::max<std::size_t>(1, seg / 4);
-  if ((n - seg) / hop + 1 > 400) hop = std::max<std::size_t>(1, (n - seg) / 399);
-  const std::size_t cols = (n - seg) / hop + 1;
-  SpectrumOptions so;
+  SpectrogramOptions so;
+  if (a.has("--segment"))
+    so.segment = static_cast<std::size_t>(
+        a.integer_in("--segment", 0, 16, static_cast<long long>(s.size()), "a sample count"));
   so.window = parse_window(a.get("--window"));
-  so.detrend = Detrend::Mean;
   std::optional<DefectFrequencies> orders;
   if (bc.geometry) orders = defect_frequencies(*bc.geometry, 1.0);
   const double fr_max = sa ? sa->speed.max / (2 * 3.14159265358979323846) : 0;
-  double fmax = a.number("--fmax", NAN);
-  if (!std::isfinite(fmax))
-    fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *
-                                                   std::max(orders->bpfi, orders->bpfo))
-                        : s.rate / 2;
-  const double fmin = a.number("--fmin", 0);
+  so.fmax = a.number("--fmax", NAN);
+  if (!std::isfinite(so.fmax))
+    so.fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *
+                                                      std::max(orders->bpfi, orders->bpfo))
+                           : s.rate / 2;
+  so.fmin = a.number("--fmin", 0);
+  const Spectrogram sg = spectrogram(s, so);
   Figure fig;
   PlotImage &im = fig.image;
-  std::vector<std::size_t> rows;  // first bin of each image row (bins grouped, max taken)
-  std::size_t group = 1;
-  double peak_db = -INFINITY;
-  std::vector<std::vector<double>> colvals;
-  std::vector<double> piece(seg);
-  for (std::size_t c = 0; c < cols; ++c) {
-    const std::size_t start = c * hop;
-    std::copy(s.x.begin() + static_cast<long>(start), s.x.begin() + static_cast<long>(start + seg),
-              piece.begin());
-    const Spectrum sp = spectrum(piece, s.rate, so);
-    if (c == 0) {
-      std::size_t inside = 0;
-      for (std::size_t k = 0; k < sp.bins(); ++k)
-        inside += sp.frequency(k) >= fmin && sp.frequency(k) <= fmax;
-      if (inside == 0) throw Error("plot: no frequency bin in [--fmin, --fmax]");
-      group = (inside + 599) / 600;
-      for (std::size_t k = 0; k < sp.bins(); ++k)
-        if (sp.frequency(k) >= fmin && sp.frequency(k) <= fmax) {
-          if ((rows.empty() || k >= rows.back() + group)) rows.push_back(k);
-        }
-      for (std::size_t k : rows) im.y.push_back(sp.frequency(k));
-      fig.xlabel = "time (s)";
-      fig.title = "Spectrogram of " + s.name + ", " + window_name(so.window) + " window, " +
-                  std::to_string(seg) + " samples (df " + format_number(sp.df, 4) + " Hz)" +
-                  (sa && orders ? ", defect frequencies at the speed from " + sa->source : "");
-    }
-    std::vector<double> v;
-    for (std::size_t k : rows) {
-      double m = 0;
-      for (std::size_t j = k; j < k + group && j < sp.bins(); ++j) m = std::max(m, sp.value[j]);
-      v.push_back(20 * std::log10(std::max(m, 1e-300)));
-      peak_db = std::max(peak_db, v.back());
-    }
-    colvals.push_back(v);
-    im.x.push_back(s.time(start) + 0.5 * static_cast<double>(seg) / s.rate);
-  }
-  im.z.resize(im.x.size() * im.y.size());
-  for (std::size_t c = 0; c < cols; ++c)
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      im.z[r * cols + c] = std::max(colvals[c][r], peak_db - 100);  // 100 dB of range
+  im.x = sg.t;
+  im.y = sg.f;
+  im.z = sg.db;
+  fig.xlabel = "time (s)";
+  fig.title = "Spectrogram of " + s.name + ", " + window_name(so.window) + " window, " +
+              std::to_string(sg.segment) + " samples (df " + format_number(sg.df, 4) + " Hz)" +
+              (sa && orders ? ", defect frequencies at the speed from " + sa->source : "");
   const std::string unit = unit_of(a, s.name);
   im.zlabel = "amplitude (dB re 1" + (unit.empty() ? std::string() : " " + unit) + ")";
   fig.ylabel = "frequency (Hz)";
   if (sa && orders) {
+    // the fault lines h x order x fr(t), fr the mean shaft frequency over each segment
+    const std::vector<double> fr = segment_shaft_hz(sg, sa->theta, s.rate);
     for (const DefectLine &line : defect_lines()) {
       if (!line.fault_line) continue;
       for (int h = 1; h <= harmonics; ++h) {
         PlotSeries ser;
         ser.title = harmonic_label(h, line, false);
-        for (std::size_t c = 0; c < cols; ++c) {
-          const std::size_t i0 = c * hop, i1 = c * hop + seg - 1;
-          const double fr = (sa->theta[i1] - sa->theta[i0]) * s.rate /
-                            static_cast<double>(i1 - i0) / (2 * 3.14159265358979323846);
-          const double y = h * line.of(*orders) * fr;
-          if (y >= fmin && y <= fmax) {
+        for (std::size_t c = 0; c < sg.t.size(); ++c) {
+          const double y = h * line.of(*orders) * fr[c];
+          if (y >= so.fmin && y <= so.fmax) {
             ser.x.push_back(im.x[c]);
             ser.y.push_back(y);
           }

@@ -31,32 +31,18 @@ int run_stats(const std::vector<std::string> &argv)
   const std::string unit = unit_of(a, s.name);
   const bool remove_mean = a.has("--remove-mean");
 
-  // windows [i0, i1)
-  std::vector<std::pair<std::size_t, std::size_t>> windows;
-  if (a.has("--window-length")) {
+  const bool windowed = a.has("--window-length");
+  std::size_t length = s.size(), hop = s.size();
+  if (windowed) {
     const double len = a.number_in("--window-length", NAN, Range::above(0), "a length", "s");
     const double step = a.number_in("--step", len, Range::above(0), "a hop", "s");
-    const auto wl = static_cast<std::size_t>(std::llround(len * s.rate));
-    const auto ws = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
-    if (wl < 2 || wl > s.size())
-      throw Error("--window-length " + format_number(len) + " s gives " + std::to_string(wl) +
+    length = static_cast<std::size_t>(std::llround(len * s.rate));
+    hop = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
+    if (length < 2 || length > s.size())
+      throw Error("--window-length " + format_number(len) + " s gives " + std::to_string(length) +
                   " samples; it must hold 2 to " + std::to_string(s.size()) + " samples");
-    for (std::size_t i0 = 0; i0 + wl <= s.size(); i0 += ws) windows.emplace_back(i0, i0 + wl);
-  } else {
-    windows.emplace_back(0, s.size());
   }
-
-  std::vector<Indicators> res;
-  std::vector<double> buf;
-  for (auto [i0, i1] : windows) {
-    buf.assign(s.x.begin() + static_cast<long>(i0), s.x.begin() + static_cast<long>(i1));
-    if (remove_mean) {
-      const double m = indicators(buf).mean;
-      for (double &v : buf) v -= m;
-    }
-    res.push_back(indicators(buf));
-  }
-  const bool windowed = a.has("--window-length");
+  const std::vector<WindowIndicators> windows = sliding_indicators(s.x, length, hop, remove_mean);
   Result r;
   r.meta = s.meta;
   r.meta.emplace_back("mean removed", remove_mean ? "yes" : "no");
@@ -66,8 +52,9 @@ int run_stats(const std::vector<std::string> &argv)
   for (const auto &f : indicator_fields())
     r.table.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
   for (std::size_t w = 0; w < windows.size(); ++w) {
-    std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
-    for (const auto &f : indicator_fields()) row.emplace_back(res[w].*f.value);
+    const WindowIndicators &win = windows[w];
+    std::vector<Cell> row{s.time(win.first), s.time(win.last - 1), win.ind.n};
+    for (const auto &f : indicator_fields()) row.emplace_back(win.ind.*f.value);
     r.table.rows.push_back(row);
   }
   // one window reads better as one indicator a line, with its definition
@@ -76,9 +63,9 @@ int run_stats(const std::vector<std::string> &argv)
     t.columns = {"indicator", "value", "definition"};
     for (const auto &f : indicator_fields())
       t.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
-                        res[0].*f.value, f.definition});
+                        windows[0].ind.*f.value, f.definition});
     t.rows.push_back(
-        {"samples", res[0].n,
+        {"samples", windows[0].ind.n,
          "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});
     t.table_digits = 10;
     r.text.push_back({"", t});
@@ -87,9 +74,9 @@ int run_stats(const std::vector<std::string> &argv)
   auto window_json = [&](std::size_t w) {
     Json o = Json::object();
     o.set("t_start_s", s.time(windows[w].first));
-    o.set("t_end_s", s.time(windows[w].second - 1));
-    o.set("n", res[w].n);
-    for (const auto &f : indicator_fields()) o.set(f.key, res[w].*f.value);
+    o.set("t_end_s", s.time(windows[w].last - 1));
+    o.set("n", windows[w].ind.n);
+    for (const auto &f : indicator_fields()) o.set(f.key, windows[w].ind.*f.value);
     return o;
   };
   r.json = windowed ? Json::object() : window_json(0);

@@ -6,6 +6,7 @@
 
 #include "../defect_lines.h"
 #include "../error.h"
+#include "../fault_bands.h"
 #include "common.h"
 
 namespace ohmdem::post::cli {
@@ -91,59 +92,26 @@ MetaList spectrum_meta(const Spectrum &s, Detrend d)
           {"ENBW (Hz)", format_number(s.enbw_hz)}};
 }
 
-std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tol)
-{
-  std::string best;
-  double best_err = tol;
-  for (const DefectLine &line : defect_lines())
-    for (int h = 1; h <= harmonics; ++h) {
-      const double err = std::fabs(f - h * line.of(k)) / (h * line.of(k));
-      if (err <= best_err) {
-        best_err = err;
-        best = harmonic_label(h, line);
-      }
-    }
-  return best;
-}
-
 namespace {
 
 Result fault_band_result(const Spectrum &s, MetaList meta, const std::string &unit,
                          const DefectFrequencies &k, int harmonics, double tol)
 {
-  // a windowed sine spreads its power A^2/2 over ENBW/df bins of the amplitude spectrum
-  const double enbw_bins = s.enbw_hz / s.df;
   Result r;
   r.meta = std::move(meta);
   r.meta.emplace_back("fault bands", "harmonic h x f, +-" + format_number(100 * tol) +
                                          " % (at least one bin); band power = sum of A^2/2 "
                                          "over the band / ENBW in bins");
   r.table.columns = {"label",
-               "f_low_Hz",
-               "f_high_Hz",
-               "center_Hz",
-               with_unit("peak_amplitude", unit),
-               "peak_frequency_Hz",
-               with_unit("band_power", unit.empty() ? "" : unit + "^2")};
-  for (const DefectLine &line : defect_lines())
-    for (int h = 1; h <= harmonics; ++h) {
-      const double c = h * line.of(k), half = std::max(tol * c, s.df);
-      const double lo = c - half, hi = c + half;
-      if (hi >= s.rate / 2) continue;
-      std::size_t best = 0;
-      double power = 0;
-      for (std::size_t b = static_cast<std::size_t>(std::max(0.0, std::ceil(lo / s.df)));
-           b < s.bins() && s.frequency(b) <= hi; ++b) {
-        const double amp = amplitude_of(s, b);
-        power += amp * amp / 2;
-        if (best == 0 || amp > amplitude_of(s, best)) best = b;
-      }
-      if (best == 0) continue;
-      const Peak p = refine_peak(s, best);
-      r.table.rows.push_back({harmonic_label(h, line), lo, hi, c,
-                        s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best),
-                        p.frequency, power / enbw_bins});
-    }
+                     "f_low_Hz",
+                     "f_high_Hz",
+                     "center_Hz",
+                     with_unit("peak_amplitude", unit),
+                     "peak_frequency_Hz",
+                     with_unit("band_power", unit.empty() ? "" : unit + "^2")};
+  for (const FaultBand &b : fault_bands(s, k, harmonics, tol))
+    r.table.rows.push_back(
+        {b.label, b.lo, b.hi, b.center, b.peak_amplitude, b.peak_frequency, b.power});
   return r;
 }
 
