@@ -29,7 +29,7 @@ const std::vector<DefectLine> &defect_lines();
 std::string harmonic_label(int h, const DefectLine &line, bool always = true);
 
 // The nearest harmonic h = 1..harmonics of a line within relative `tolerance` of f
-// ("3xBPFO"), "" if none; on a tie the earlier line of the table wins.
+// ("3xBPFO"), "" if none; on a tie the later line of the table wins.
 std::string label_frequency(double f, const DefectFrequencies &k, int harmonics,
                             double tolerance);
 
