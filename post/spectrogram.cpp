@@ -4,14 +4,11 @@
 #include <cmath>
 #include <string>
 
+#include "constants.h"
 #include "error.h"
 #include "spectrum.h"
 
 namespace ohmdem::post {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 std::size_t spectrogram_segment(std::size_t n)
 {

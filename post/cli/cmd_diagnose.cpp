@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "../constants.h"
 #include "../diagnose.h"
 #include "../error.h"
 #include "../order_diagnose.h"
@@ -70,7 +71,6 @@ std::string percent_off(double f, double nominal)
 {
   return format_number(100 * (f / nominal - 1), 3) + " %";
 }
-
 
 // What the three forms of the diagnosis show besides the Diagnosis itself.
 struct DiagnosisContext {
@@ -287,7 +287,7 @@ int run_diagnose(const std::vector<std::string> &argv)
         "with omega_inner");
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
-  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
+  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * kPi);
   o.tolerance = a.number("--tolerance", 0.02);
   o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
@@ -311,7 +311,7 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error("diagnose: --baseline is not supported when the speed varies (the record is "
                 "diagnosed in the angle domain); give a record at constant speed");
   const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
-  if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
+  if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   Output out(a);
 
   MetaList m = s.meta;

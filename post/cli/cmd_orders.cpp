@@ -5,6 +5,7 @@
 #include <iostream>
 #include <limits>
 
+#include "../constants.h"
 #include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
@@ -19,8 +20,6 @@
 namespace ohmdem::post::cli {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 MetaList speed_meta(const ShaftAngle &sa)
 {

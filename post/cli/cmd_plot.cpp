@@ -4,6 +4,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "../constants.h"
 #include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
@@ -117,7 +118,7 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
   so.window = parse_window(a.get("--window"));
   std::optional<DefectFrequencies> orders;
   if (bc.geometry) orders = defect_frequencies(*bc.geometry, 1.0);
-  const double fr_max = sa ? sa->speed.max / (2 * 3.14159265358979323846) : 0;
+  const double fr_max = sa ? sa->speed.max / (2 * kPi) : 0;
   so.fmax = a.number("--fmax", NAN);
   if (!std::isfinite(so.fmax))
     so.fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *

@@ -11,7 +11,6 @@
 
 namespace ohmdem::post::cli {
 
-
 int run_stats(const std::vector<std::string> &argv)
 {
   Args a("stats", "[options] FILE...",

@@ -4,16 +4,13 @@
 #include <cmath>
 #include <iostream>
 
+#include "../constants.h"
 #include "../error.h"
 #include "../read_log.h"
 #include "../read_mat.h"
 #include "../text_scan.h"
 
 namespace ohmdem::post::cli {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 void add_input_options(Args &a, const std::string &rate_option)
 {
