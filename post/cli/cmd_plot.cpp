@@ -22,16 +22,6 @@ namespace ohmdem::post::cli {
 
 namespace {
 
-std::vector<std::string> split_list(const std::string &s)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
 // Defect-frequency markers up to fmax: harmonics 1..h of the fault lines (FTF, BPFO, BPFI, 2BSF).
 std::vector<PlotMarker> defect_markers(const DefectFrequencies &k, int harmonics, double fmax)
 {
@@ -203,7 +193,7 @@ Figure indicators_figure(const Args &a)
   Figure fig;
   fig.xlabel = t.names[xc];
   std::string ys;
-  for (const std::string &name : split_list(a.get("--y"))) {
+  for (const std::string &name : split_commas(a.get("--y"))) {
     const std::size_t yc = t.find(name);
     std::vector<std::size_t> order = defined_rows(t, yc, with_x, &undefined);
     if (undefined)
