@@ -158,8 +158,7 @@ RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursiv
   return r;
 }
 
-RunParameters run_parameters(const std::string &path,
-                                                         std::vector<std::string> *nonscalar)
+RunParameters run_parameters(const std::string &path, std::vector<std::string> *nonscalar)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open metadata file '" + path + "'");

@@ -8,8 +8,7 @@ namespace ohmdem::post {
 const std::vector<DefectLine> &defect_lines()
 {
   static const std::vector<DefectLine> table = {
-      {"fr", "fr", "shaft", "fr", "", false, "",
-       [](const DefectFrequencies &k) { return k.fr; }},
+      {"fr", "fr", "shaft", "fr", "", false, "", [](const DefectFrequencies &k) { return k.fr; }},
       {"ftf", "FTF", "FTF (cage)", "fr/2 (1 - d/D cos b)", "cage", true, "#7f8c8d",
        [](const DefectFrequencies &k) { return k.ftf; }},
       {"bpfo", "BPFO", "BPFO (outer race)", "Nb FTF", "outer", true, "#2471a3",

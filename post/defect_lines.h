@@ -30,8 +30,7 @@ std::string harmonic_label(int h, const DefectLine &line, bool always = true);
 
 // The nearest harmonic h = 1..harmonics of a line within relative `tolerance` of f
 // ("3xBPFO"), "" if none; on a tie the later line of the table wins.
-std::string label_frequency(double f, const DefectFrequencies &k, int harmonics,
-                            double tolerance);
+std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tolerance);
 
 // The fastest defect line: max(BPFI, BPFO, 2 BSF).
 double highest_defect_frequency(const DefectFrequencies &k);

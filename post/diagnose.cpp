@@ -264,7 +264,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   Diagnosis d;
   d.kinematics = defect_frequencies(opt.geometry, opt.fr);
   const DefectFrequencies &k = d.kinematics;
-  const double fmax = highest_defect_frequency(k);
+  const double fmax = std::max({k.bpfi, k.bpfo, 2 * k.bsf});
   if (opt.harmonics * fmax * (1 + opt.tolerance) + k.fr >= s.rate / 2)
     throw Error("sampling rate " + format_number(s.rate) +
                 " Hz too low: " + std::to_string(opt.harmonics) + " harmonics of " +

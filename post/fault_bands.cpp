@@ -29,8 +29,8 @@ std::vector<FaultBand> fault_bands(const Spectrum &s, const DefectFrequencies &k
       if (best == 0) continue;
       const Peak p = refine_peak(s, best);
       out.push_back({harmonic_label(h, line), lo, hi, c,
-                     s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best),
-                     p.frequency, power / enbw_bins});
+                     s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best), p.frequency,
+                     power / enbw_bins});
     }
   return out;
 }

@@ -12,11 +12,11 @@
 namespace ohmdem::post {
 
 struct FaultBand {
-  std::string label;  // "2xBPFO"
+  std::string label;                  // "2xBPFO"
   double lo = 0, hi = 0, center = 0;  // Hz
-  double peak_amplitude = 0;  // interpolated amplitude (amplitude scaling), else the bin's
-  double peak_frequency = 0;  // Hz
-  double power = 0;           // sum of A^2/2 over the band's bins / ENBW in bins
+  double peak_amplitude = 0;          // interpolated amplitude (amplitude scaling), else the bin's
+  double peak_frequency = 0;          // Hz
+  double power = 0;                   // sum of A^2/2 over the band's bins / ENBW in bins
 };
 
 // Harmonics 1..harmonics of every line of defect_lines(), in table order; the band is at least

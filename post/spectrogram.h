@@ -14,18 +14,18 @@ namespace ohmdem::post {
 struct SpectrogramOptions {
   std::size_t segment = 0;  // samples per segment; 0: spectrogram_segment(n)
   WindowKind window = WindowKind::Hann;
-  double fmin = 0, fmax = 0;       // the rows shown (Hz); each segment's mean is removed
-  std::size_t max_columns = 400;   // the hop grows beyond a quarter segment to stay below
-  std::size_t max_rows = 600;      // neighbouring bins are grouped (largest kept) to stay below
-  double range_db = 100;           // values below the peak minus this are raised to it
+  double fmin = 0, fmax = 0;      // the rows shown (Hz); each segment's mean is removed
+  std::size_t max_columns = 400;  // the hop grows beyond a quarter segment to stay below
+  std::size_t max_rows = 600;     // neighbouring bins are grouped (largest kept) to stay below
+  double range_db = 100;          // values below the peak minus this are raised to it
 };
 
 struct Spectrogram {
   std::size_t segment = 0, hop = 0;
-  double df = 0;                 // bin spacing (Hz)
-  std::vector<double> t;         // centre of each column's segment (s)
-  std::vector<double> f;         // frequency of each row's first bin (Hz)
-  std::vector<double> db;        // 20 log10 amplitude, row-major: db[row * t.size() + column]
+  double df = 0;           // bin spacing (Hz)
+  std::vector<double> t;   // centre of each column's segment (s)
+  std::vector<double> f;   // frequency of each row's first bin (Hz)
+  std::vector<double> db;  // 20 log10 amplitude, row-major: db[row * t.size() + column]
   std::size_t first(std::size_t column) const { return column * hop; }  // segment's 1st sample
 };
 

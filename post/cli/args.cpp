@@ -162,12 +162,12 @@ std::string Range::text() const
 {
   if (std::isinf(hi)) return (lo_open ? "> " : ">= ") + format_number(lo);
   if (std::isinf(lo)) return (hi_open ? "< " : "<= ") + format_number(hi);
-  return std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " +
-         format_number(hi) + (hi_open ? ")" : "]");
+  return std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
+         (hi_open ? ")" : "]");
 }
 
-long long Args::integer_in(const std::string &name, long long fallback, long long lo,
-                           long long hi, const std::string &what) const
+long long Args::integer_in(const std::string &name, long long fallback, long long lo, long long hi,
+                           const std::string &what) const
 {
   const long long v = integer(name, fallback);
   if (v < lo || v > hi)

@@ -32,7 +32,8 @@ AcquireSettings settings(const Args &a)
   AcquireSettings s;
   s.scale = a.number("--scale", 1);
   s.offset = a.number("--offset", 0);
-  if (a.has("--lowpass")) s.lowpass = a.number_in("--lowpass", 0, Range::above(0), "a cut-off", "Hz");
+  if (a.has("--lowpass"))
+    s.lowpass = a.number_in("--lowpass", 0, Range::above(0), "a cut-off", "Hz");
   s.order = static_cast<int>(a.integer_in("--order", 4, 1, kMaxButterworthOrder, "a filter order"));
   if (a.has("--order") && !a.has("--lowpass")) throw Error("option --order needs --lowpass HZ");
   s.steady_start = a.choice("--filter-start", {"steady", "zero"}) == "steady";

@@ -198,16 +198,18 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
          ")");
   else if (chosen)
     line("size:          n/a (" + d.size.method + ")");
-  line("# detection: each test at false-alarm probability " +
-       format_number(c.options.false_alarm) + ", at most " +
-       format_number(d.detection.false_alarm_bound) + " for the " +
+  line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
+       ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
        std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);
   line("");
   Table dt;
   dt.columns = {"test", "against", "value", "threshold", "p_value", "samples", "fired", "note"};
   for (const auto &t : d.detection.tests)
     dt.rows.push_back({t.name, t.reference, t.value, t.threshold, t.p_value, t.samples,
-                       !t.applicable ? "n/a" : t.fired ? "yes" : "no", t.note.empty() ? "-" : t.note});
+                       !t.applicable ? "n/a"
+                       : t.fired     ? "yes"
+                                     : "no",
+                       t.note.empty() ? "-" : t.note});
   b.push_back({"", dt});
   line("");
   const bool baseline = c.options.baseline != nullptr;
@@ -288,7 +290,7 @@ int run_diagnose(const std::vector<std::string> &argv)
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
   o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * kPi);
-  o.tolerance = a.number("--tolerance", 0.02);
+  o.tolerance = tolerance_option(a);
   o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
   o.kurtogram_levels = levels_option(a);

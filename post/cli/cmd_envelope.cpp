@@ -69,8 +69,7 @@ int run_envelope(const std::vector<std::string> &argv)
       throw Error("give either --band or --kurtogram, not both");
     const int levels = levels_option(a);
     // bands wide enough to carry 5 harmonics of the defect frequencies when they are known
-    const double min_bw =
-        a.number("--min-bandwidth", kin ? defect_band_width(*kin, 5, s.rate) : 0);
+    const double min_bw = a.number("--min-bandwidth", kin ? defect_band_width(*kin, 5, s.rate) : 0);
     std::vector<double> x = s.x;
     const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {

@@ -61,7 +61,8 @@ int run_frequencies(const std::vector<std::string> &argv)
   b.set("contact_angle_deg", g.contact_angle_deg);
   r.json = Json::object();
   r.json.set("bearing", b);
-  for (const DefectLine &line : defect_lines()) r.json.set(std::string(line.key) + "_hz", line.of(f));
+  for (const DefectLine &line : defect_lines())
+    r.json.set(std::string(line.key) + "_hz", line.of(f));
   if (harmonics > 1) {
     Json h = Json::object();
     for (const DefectLine &line : defect_lines()) {

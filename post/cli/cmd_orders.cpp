@@ -100,8 +100,8 @@ int run_orders(const std::vector<std::string> &argv)
       // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
       double min_bw = 0;
       if (bc.geometry) {
-        min_bw = defect_band_width(defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi)),
-                                   5, s.rate);
+        min_bw = defect_band_width(defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi)), 5,
+                                   s.rate);
       }
       const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
       band = {kg.best.lo, kg.best.hi};
@@ -158,7 +158,7 @@ int run_orders(const std::vector<std::string> &argv)
   po.fmin = a.number("--order-min", 0);
   po.fmax = a.number("--order-max", r.flat_order);
   if (!(po.fmax > po.fmin)) throw Error("--order-max must exceed --order-min");
-  const double tol = a.number("--tolerance", 0.02);
+  const double tol = tolerance_option(a);
   const int harmonics = harmonics_option(a, 5);
   const std::string vname = with_unit(scaling_name(sp.scaling), unit);
   Result rep;
@@ -180,8 +180,7 @@ int run_orders(const std::vector<std::string> &argv)
     int rank = 0;
     for (const Peak &p : find_peaks(sp, po)) {
       std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-      if (orders)
-        row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
+      if (orders) row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
       rep.table.rows.push_back(row);
     }
   }

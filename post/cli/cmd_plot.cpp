@@ -9,8 +9,8 @@
 #include "../envelope.h"
 #include "../error.h"
 #include "../gnuplot.h"
-#include "../spectrogram.h"
 #include "../read_table.h"
+#include "../spectrogram.h"
 #include "../table_select.h"
 #include "../text_scan.h"
 #include "commands.h"
@@ -54,8 +54,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
       band = band_option(a);
       how = "band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
     } else if (!a.has("--no-kurtogram")) {
-      const double min_bw =
-          kin ? defect_band_width(*kin, 5, s.rate) : s.rate / 256;
+      const double min_bw = kin ? defect_band_width(*kin, 5, s.rate) : s.rate / 256;
       const Kurtogram kg = kurtogram(x, s.rate, 7, min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";

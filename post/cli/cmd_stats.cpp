@@ -61,8 +61,9 @@ int run_stats(const std::vector<std::string> &argv)
     Table t;
     t.columns = {"indicator", "value", "definition"};
     for (const auto &f : indicator_fields())
-      t.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
-                        windows[0].ind.*f.value, f.definition});
+      t.rows.push_back(
+          {std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
+           windows[0].ind.*f.value, f.definition});
     t.rows.push_back(
         {"samples", windows[0].ind.n,
          "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});

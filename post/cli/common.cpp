@@ -218,6 +218,11 @@ std::size_t peaks_option(const Args &a)
   return static_cast<std::size_t>(a.integer_in("--peaks", 10, 0, 100000));
 }
 
+double tolerance_option(const Args &a)
+{
+  return a.number_in("--tolerance", 0.02, Range::open(0, 0.2), "a fraction");
+}
+
 Band band_option(const Args &a)
 {
   const auto v = a.values("--band");

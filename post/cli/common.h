@@ -54,9 +54,10 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
 // Options several commands share, one range each (doc/ohmdem-post.md, "Common ranges").
 constexpr long long kMaxHarmonics = 50;  // the diagnosis comb's limit; labels and plots agree
 int harmonics_option(const Args &a, long long fallback);  // --harmonics N, 1..kMaxHarmonics
-int levels_option(const Args &a);                          // --levels N (kurtogram), 0..16
-std::size_t peaks_option(const Args &a);                   // --peaks N, 0..100000
-Band band_option(const Args &a);                           // --band F1 F2, 0 <= F1 < F2 (Hz)
+int levels_option(const Args &a);                         // --levels N (kurtogram), 0..16
+std::size_t peaks_option(const Args &a);                  // --peaks N, 0..100000
+double tolerance_option(const Args &a);                   // --tolerance F, (0, 0.2), 0.02
+Band band_option(const Args &a);                          // --band F1 F2, 0 <= F1 < F2 (Hz)
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.
 std::string unit_of(const Args &a, const std::string &quantity);

@@ -121,7 +121,7 @@ Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const st
                        const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
 {
   const PeakOptions po = peak_options(a);
-  const double tol = a.number("--tolerance", 0.02);
+  const double tol = tolerance_option(a);
   const int harmonics = harmonics_option(a, 5);
   const std::string vunit = s.scaling == Scaling::Amplitude ? unit
                             : unit.empty() ? std::string(s.scaling == Scaling::Psd ? "per_Hz" : "")

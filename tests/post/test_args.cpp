@@ -38,13 +38,17 @@ TEST(Args, IntegerInRange)
 {
   EXPECT_EQ(parsed({}).integer_in("--harmonics", 5, 1, 50), 5);
   EXPECT_EQ(parsed({"--harmonics", "50"}).integer_in("--harmonics", 5, 1, 50), 50);
-  EXPECT_EQ(error_of([] { parsed({"--harmonics", "51"}).integer_in("--harmonics", 5, 1, 50); }),
+  EXPECT_EQ(error_of([] {
+              parsed({"--harmonics", "51"}).integer_in("--harmonics", 5, 1, 50);
+            }),
             "option --harmonics expects an integer in 1..50, got 51");
   EXPECT_EQ(error_of([] {
               parsed({"--harmonics=0"}).integer_in("--harmonics", 5, 1, LLONG_MAX, "a count");
             }),
             "option --harmonics expects a count >= 1, got 0");
-  EXPECT_EQ(error_of([] { parsed({"--harmonics", "2.5"}).integer_in("--harmonics", 5, 1, 50); }),
+  EXPECT_EQ(error_of([] {
+              parsed({"--harmonics", "2.5"}).integer_in("--harmonics", 5, 1, 50);
+            }),
             "option --harmonics expects an integer, got '2.5'");
 }
 
@@ -68,7 +72,9 @@ TEST(Args, NumberInRange)
 TEST(Args, Choice)
 {
   EXPECT_EQ(parsed({}).choice("--show", {"peaks", "bins"}), "peaks");
-  EXPECT_EQ(error_of([] { parsed({"--show", "all"}).choice("--show", {"peaks", "bins"}); }),
+  EXPECT_EQ(error_of([] {
+              parsed({"--show", "all"}).choice("--show", {"peaks", "bins"});
+            }),
             "option --show expects peaks|bins, got 'all'");
 }
 

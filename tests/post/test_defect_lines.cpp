@@ -52,8 +52,8 @@ TEST(DefectLines, LabelsTheNearestHarmonicWithinTolerance)
   EXPECT_EQ(label_frequency(2 * 36 * 1.01, k, 5, 0.02), "2xBPFO");
   EXPECT_EQ(label_frequency(54, k, 5, 0.02), "1xBPFI");
   EXPECT_EQ(label_frequency(2 * 36 * 1.03, k, 5, 0.02), "");  // outside 2 %
-  EXPECT_EQ(label_frequency(6 * 36, k, 5, 0.02), "4xBPFI");  // 216 = 4 x 54; 6 x BPFO > N
-  EXPECT_EQ(label_frequency(6 * 36, k, 6, 0.02), "4xBPFI");  // tie with 6xBPFO: the later line
+  EXPECT_EQ(label_frequency(6 * 36, k, 5, 0.02), "4xBPFI");   // 216 = 4 x 54; 6 x BPFO > N
+  EXPECT_EQ(label_frequency(6 * 36, k, 6, 0.02), "4xBPFI");   // tie with 6xBPFO: the later line
   EXPECT_EQ(label_frequency(2, k, 5, 0.02), "");
   EXPECT_EQ(harmonic_label(1, defect_lines()[2], false), "BPFO");
   EXPECT_EQ(harmonic_label(2, defect_lines()[5], false), "2x2BSF");
@@ -123,7 +123,7 @@ TEST(Spectrogram, SineReadsItsAmplitudeInEveryColumn)
   o.fmax = 200;
   const Spectrogram sg = spectrogram(s, o);
   EXPECT_EQ(sg.segment, 256u);
-  EXPECT_EQ(sg.hop, 64u);                        // a quarter segment
+  EXPECT_EQ(sg.hop, 64u);                         // a quarter segment
   EXPECT_EQ(sg.t.size(), (8192 - 256) / 64 + 1);  // 125 columns, below 400
   EXPECT_DOUBLE_EQ(sg.df, 4);
   EXPECT_DOUBLE_EQ(sg.t.front(), 1 + 128.0 / 1024);  // centre of the first segment
