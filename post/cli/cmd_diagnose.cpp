@@ -257,11 +257,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   add_bearing_options(a);
   add_shaft_angle_options(a);
   a.section("Diagnosis");
-  a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
-  a.option("--harmonics", "N", "harmonics in each family's comb", "5");
+  a.option("--tolerance", "F", "relative search range of each fundamental (slip), in (0, 0.2)",
+           "0.02");
+  a.option("--harmonics", "N", "harmonics in each family's comb (1..50)", "5");
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
-  a.option("--levels", "N", "kurtogram levels", "7");
+  a.option("--levels", "N", "kurtogram levels (0..16)", "7");
   a.section("Detection");
   a.option("--false-alarm", "P", "false-alarm probability of each detection test", "0.001");
   a.option("--baseline", "FILE",

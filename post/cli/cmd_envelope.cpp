@@ -38,7 +38,7 @@ int run_envelope(const std::vector<std::string> &argv)
   a.section("Envelope");
   a.option("--band", "F1 F2", "band-pass edges (Hz) (default: 0 to Nyquist)", "", 2);
   a.flag("--kurtogram", "choose the band with the fast kurtogram");
-  a.option("--levels", "N", "kurtogram levels (up to 2^N bands)", "7");
+  a.option("--levels", "N", "kurtogram levels, up to 2^N bands (0..16)", "7");
   a.option("--min-bandwidth", "HZ",
            "narrowest kurtogram band (default: 5.5 x the largest defect frequency when bearing "
            "and speed are known, else fs/2^(levels+1))");

@@ -19,7 +19,7 @@ int run_frequencies(const std::vector<std::string> &argv)
          "--bearing takes a name of the bearing catalog (doc/bearing_catalog.md); the pitch\n"
          "diameter of a catalog bearing is (Dext + Dinn)/2, as in the deck.");
   add_bearing_options(a);
-  a.option("--harmonics", "N", "also list harmonics 2..N of each frequency", "1");
+  a.option("--harmonics", "N", "also list harmonics 2..N of each frequency (1..50)", "1");
   a.option("--metadata", "FILE", "read bearing and speed from a run.json");
   add_output_options(a);
   if (!a.parse(argv, std::cout)) return 0;

@@ -55,7 +55,7 @@ int run_orders(const std::vector<std::string> &argv)
   a.flag("--envelope", "envelope order spectrum (band: --band, else --kurtogram, else all)");
   a.option("--band", "F1 F2", "envelope band (Hz, time domain)", "", 2);
   a.flag("--kurtogram", "choose the envelope band with the kurtogram");
-  a.option("--levels", "N", "kurtogram levels", "7");
+  a.option("--levels", "N", "kurtogram levels (0..16)", "7");
   a.option("--show", "WHAT",
            "peaks (of the order spectrum) | bins (every bin) | resampled (the angle-domain "
            "signal)",
@@ -64,8 +64,9 @@ int run_orders(const std::vector<std::string> &argv)
   a.option("--min-prominence", "DB", "peaks stand this far above the local median floor", "6");
   a.option("--order-min", "O", "lowest order reported", "0");
   a.option("--order-max", "O", "highest order reported (default: the flat band, 0.4 S)");
-  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect orders", "0.02");
-  a.option("--harmonics", "N", "harmonics of each defect order used for labels", "5");
+  a.option("--tolerance", "F",
+           "relative tolerance for labelling peaks with defect orders, in (0, 0.2)", "0.02");
+  a.option("--harmonics", "N", "harmonics of each defect order used for labels (1..50)", "5");
   a.flag("--keep-sliding", "analyse our runs' sliding phase too (default: from t_sliding_end)");
   add_spectrum_options(a, "amplitude");
   add_output_options(a);

@@ -239,7 +239,7 @@ int run_plot(const std::vector<std::string> &argv)
   a.option("--fmax", "HZ",
            "highest frequency shown (default: a little above the 3rd "
            "harmonic of BPFI/BPFO when the bearing is known, else Nyquist)");
-  a.option("--harmonics", "N", "harmonics of each defect frequency marked", "3");
+  a.option("--harmonics", "N", "harmonics of each defect frequency marked (1..50)", "3");
   a.option("--band", "F1 F2", "envelope band (Hz) (default: the kurtogram's)", "", 2);
   a.flag("--no-kurtogram", "envelope of the whole band when no --band is given");
   a.option("--x", "COLUMN", "indicators: the swept parameter column");

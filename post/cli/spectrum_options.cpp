@@ -1,7 +1,6 @@
 #include "spectrum_options.h"
 
 #include <climits>
-#include <cmath>
 #include <limits>
 
 #include "../defect_lines.h"
@@ -57,9 +56,9 @@ void add_peak_options(Args &a)
   a.flag("--bins", "print every bin in [--fmin, --fmax] instead of the peaks");
   a.option("--fmin", "HZ", "lowest frequency reported", "0");
   a.option("--fmax", "HZ", "highest frequency reported (default: Nyquist)");
-  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect frequencies",
-           "0.02");
-  a.option("--harmonics", "N", "harmonics of each defect frequency used for labels", "5");
+  a.option("--tolerance", "F",
+           "relative tolerance for labelling peaks with defect frequencies, in (0, 0.2)", "0.02");
+  a.option("--harmonics", "N", "harmonics of each defect frequency used for labels (1..50)", "5");
   a.flag("--fault-bands",
          "instead of the peaks, a fault-band table: per harmonic of fr, FTF, "
          "BPFO, BPFI, BSF, 2BSF the band +-tolerance, its peak and its power");
