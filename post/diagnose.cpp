@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "constants.h"
-#include "defect_lines.h"
 #include "error.h"
 #include "peaks.h"
 #include "pulses.h"
@@ -285,7 +284,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
   std::size_t bands_searched = 1;
   if (!(d.band.hi > d.band.lo)) {
-    const double min_bw = defect_band_width(k, opt.harmonics, s.rate);
+    const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
