@@ -3,13 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "constants.h"
 #include "error.h"
 
 namespace ohmdem::post {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 void validate(const AcquireSettings &s, double fs_in)
 {

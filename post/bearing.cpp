@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "constants.h"
 #include "error.h"
 #include "sampled_signal.h"
 
@@ -155,8 +156,7 @@ DefectFrequencies defect_frequencies(const BearingGeometry &g, double fr)
 {
   validate(g);
   if (!(fr > 0) || !std::isfinite(fr)) throw Error("shaft frequency must be > 0 Hz");
-  const double pi = 3.14159265358979323846;
-  const double r = g.db / g.dp * std::cos(g.contact_angle_deg * pi / 180);
+  const double r = g.db / g.dp * std::cos(g.contact_angle_deg * kPi / 180);
   DefectFrequencies f;
   f.fr = fr;
   f.ftf = fr / 2 * (1 - r);

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "constants.h"
 #include "error.h"
 #include "sampled_signal.h"
 
@@ -12,7 +13,6 @@ namespace ohmdem::post {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using cplx = std::complex<double>;
 
 // scipy's numpy.isreal after _cplxreal, whose tolerance is 100 eps relative

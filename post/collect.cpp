@@ -158,8 +158,7 @@ RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursiv
   return r;
 }
 
-std::vector<std::pair<std::string, Json>> run_parameters(const std::string &path,
-                                                         std::vector<std::string> *nonscalar)
+RunParameters run_parameters(const std::string &path, std::vector<std::string> *nonscalar)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error("cannot open metadata file '" + path + "'");
@@ -209,6 +208,55 @@ double duty_fraction(const std::vector<double> &count)
   std::size_t on = 0;
   for (double v : count) on += v >= 0.5;
   return static_cast<double>(on) / static_cast<double>(count.size());
+}
+
+const Json *find_parameter(const RunParameters &params, const std::string &key)
+{
+  for (const auto &kv : params)
+    if (kv.first == key) return &kv.second;
+  return nullptr;
+}
+
+namespace {
+
+bool key_less(const std::string &a, const std::string &b)
+{
+  std::string la = a, lb = b;
+  for (char &c : la) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char &c : lb) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return la != lb ? la < lb : a < b;
+}
+
+bool same_value(const Json *p, const Json *q)
+{
+  if (!p || !q) return p == q;
+  if (p->type() != q->type()) return false;
+  if (p->is_number()) return p->number() == q->number();
+  if (p->is_string()) return p->string() == q->string();
+  return p->boolean() == q->boolean();
+}
+
+}  // namespace
+
+std::vector<std::string> parameter_keys(const std::vector<const RunParameters *> &runs,
+                                        bool varying_only)
+{
+  std::set<std::string> all;
+  for (const RunParameters *r : runs)
+    for (const auto &kv : *r) all.insert(kv.first);
+  std::vector<std::string> keys(all.begin(), all.end());
+  std::sort(keys.begin(), keys.end(), key_less);
+  if (!varying_only || runs.empty()) return keys;
+  std::vector<std::string> varying;
+  for (const auto &k : keys) {
+    const Json *first = find_parameter(*runs.front(), k);
+    for (const RunParameters *r : runs)
+      if (!same_value(first, find_parameter(*r, k))) {
+        varying.push_back(k);
+        break;
+      }
+  }
+  return varying;
 }
 
 }  // namespace ohmdem::post

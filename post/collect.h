@@ -34,8 +34,18 @@ bool natural_less(const std::string &a, const std::string &b);
 // The scalar members (numbers, strings, booleans) of the JSON object in `path`, in file order;
 // null members are left out, arrays and objects are listed in `nonscalar`. Throws Error on a
 // missing file or invalid JSON.
-std::vector<std::pair<std::string, Json>> run_parameters(
-    const std::string &path, std::vector<std::string> *nonscalar = nullptr);
+using RunParameters = std::vector<std::pair<std::string, Json>>;
+RunParameters run_parameters(const std::string &path,
+                             std::vector<std::string> *nonscalar = nullptr);
+
+// The value of `key` in `params`, nullptr if absent.
+const Json *find_parameter(const RunParameters &params, const std::string &key);
+
+// The parameter columns of a set of runs: every key some run has, in case-insensitive order
+// ("area" < "F" < "load", byte order on a tie); with `varying_only`, only the keys whose value
+// differs between the runs (a run lacking the key differs from one having it).
+std::vector<std::string> parameter_keys(const std::vector<const RunParameters *> &runs,
+                                        bool varying_only);
 
 // The indicators of `stats`, in its order: key, definition, dimensionless (no unit suffix in
 // CSV column names).

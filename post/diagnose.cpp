@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "constants.h"
 #include "error.h"
 #include "peaks.h"
 #include "pulses.h"
@@ -13,7 +14,6 @@ namespace ohmdem::post {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // A matched peak counts by its prominence above the local noise floor beyond 6 dB, capped at
 // 40 dB so one huge line cannot make a family. A family's score is 1 when its comb stands 12 dB
 // (mean over the harmonics) above what decoy combs find by chance.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "constants.h"
 #include "error.h"
 #include "fft.h"
 #include "sampled_signal.h"
@@ -79,7 +80,7 @@ double normal_upper_quantile(double p)
   double z = 0;
   for (int it = 0; it < 100; ++it) {
     const double f = 0.5 * std::erfc(z / std::sqrt(2.0)) - p;
-    const double d = -std::exp(-0.5 * z * z) / std::sqrt(2 * 3.14159265358979323846);
+    const double d = -std::exp(-0.5 * z * z) / std::sqrt(2 * kPi);
     const double step = f / d;
     z -= std::max(-2.0, std::min(2.0, step));
     if (std::fabs(step) < 1e-14 * std::max(1.0, std::fabs(z))) break;

@@ -1,5 +1,6 @@
 #include "order_diagnose.h"
 
+#include "constants.h"
 #include "order_tracking.h"
 
 namespace ohmdem::post {
@@ -7,7 +8,7 @@ namespace ohmdem::post {
 Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, DiagnoseOptions opt,
                              double samples_per_rev)
 {
-  constexpr double kTwoPi = 2 * 3.14159265358979323846;
+  constexpr double kTwoPi = 2 * kPi;
   const SpeedSummary speed = speed_summary(theta, s.rate);
   const double fr = speed.mean / kTwoPi;  // mean shaft frequency (Hz)
   const double spr =

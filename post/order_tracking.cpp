@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "constants.h"
 #include "error.h"
 #include "sampled_signal.h"
 
@@ -12,7 +13,6 @@ namespace ohmdem::post {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kBeta = 10.0;         // Kaiser shape: ~100 dB stopband
 constexpr double kZeroCrossings = 16;  // kernel half-length in zero crossings of the sinc
 
@@ -84,6 +84,13 @@ double to_rad_per_s(double v, SpeedUnit u)
       return v * 2 * kPi;
   }
   return v;
+}
+
+std::vector<double> constant_speed_angle(std::size_t n, double rate, double fr)
+{
+  std::vector<double> theta(n);
+  for (std::size_t i = 0; i < n; ++i) theta[i] = 2 * kPi * fr * static_cast<double>(i) / rate;
+  return theta;
 }
 
 std::vector<double> angle_from_speed(const std::vector<double> &omega, double rate)

@@ -21,6 +21,8 @@ double to_rad_per_s(double v, SpeedUnit u);
 // Shaft angle (rad) from speed samples omega (rad/s) at `rate` Hz: cumulative trapezoid,
 // theta[0] = 0 (scipy.integrate.cumulative_trapezoid with initial=0).
 std::vector<double> angle_from_speed(const std::vector<double> &omega, double rate);
+// The angle 2 pi fr i / rate (rad) of n samples at a constant shaft frequency fr (Hz).
+std::vector<double> constant_speed_angle(std::size_t n, double rate, double fr);
 
 // Shaft speed summary from the angle: mean speed (rad/s) over `blocks` equal blocks of the
 // record (block angle / block duration, insensitive to the printing resolution of the angle),

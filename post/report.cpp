@@ -22,9 +22,13 @@ std::string format_cell(const Cell &c, int digits)
   return format_number(c.number, digits);
 }
 
-void write_table(std::ostream &out, const Report &r)
+void write_meta(std::ostream &out, const MetaList &meta)
 {
-  for (const auto &m : r.meta) out << "# " << m.first << ": " << m.second << '\n';
+  for (const auto &m : meta) out << "# " << m.first << ": " << m.second << '\n';
+}
+
+void write_table(std::ostream &out, const Table &r)
+{
   const std::size_t nc = r.columns.size();
   if (nc == 0) return;
   std::vector<std::size_t> width(nc);
@@ -67,9 +71,8 @@ std::string csv_text(const std::string &s)
 }
 }  // namespace
 
-void write_csv(std::ostream &out, const Report &r)
+void write_csv(std::ostream &out, const Table &r)
 {
-  for (const auto &m : r.meta) out << "# " << m.first << ": " << m.second << '\n';
   for (std::size_t c = 0; c < r.columns.size(); ++c)
     out << (c ? "," : "") << csv_text(r.columns[c]);
   out << '\n';
@@ -92,10 +95,10 @@ Json meta_json(const MetaList &meta)
   return m;
 }
 
-Json report_json(const Report &r)
+Json table_json(const Table &r, const MetaList &meta)
 {
   Json j = Json::object();
-  j.set("meta", meta_json(r.meta));
+  j.set("meta", meta_json(meta));
   Json cols = Json::array();
   for (const auto &c : r.columns) cols.push_back(c);
   j.set("columns", cols);
@@ -110,17 +113,25 @@ Json report_json(const Report &r)
   return j;
 }
 
-void write_report(std::ostream &out, const Report &r, OutputFormat f)
+void write_result(std::ostream &out, const Result &r, OutputFormat f)
 {
   switch (f) {
     case OutputFormat::Table:
-      write_table(out, r);
+      write_meta(out, r.meta);
+      if (r.text.empty()) write_table(out, r.table);
+      for (const Block &b : r.text) {
+        if (b.table)
+          write_table(out, *b.table);
+        else
+          out << b.line << '\n';
+      }
       break;
     case OutputFormat::Csv:
-      write_csv(out, r);
+      write_meta(out, r.meta);
+      write_csv(out, r.table);
       break;
     case OutputFormat::Json:
-      out << report_json(r).dump(2) << '\n';
+      out << (r.json.is_null() ? table_json(r.table, r.meta) : r.json).dump(2) << '\n';
       break;
   }
 }

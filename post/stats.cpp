@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "error.h"
 
 namespace ohmdem::post {
 
@@ -69,6 +72,26 @@ Indicators indicators(const double *x, std::size_t n)
   r.impulse = ratio(peak, mabs);
   r.clearance = ratio(peak, msqrt * msqrt);
   return r;
+}
+
+std::vector<WindowIndicators> sliding_indicators(const std::vector<double> &x, std::size_t length,
+                                                 std::size_t hop, bool remove_mean)
+{
+  if (length < 2 || length > x.size() || hop < 1)
+    throw Error("sliding windows: " + std::to_string(length) + " samples every " +
+                std::to_string(hop) + " over " + std::to_string(x.size()) +
+                " (need 2 to the record's length, every >= 1)");
+  std::vector<WindowIndicators> out;
+  std::vector<double> buf;
+  for (std::size_t i0 = 0; i0 + length <= x.size(); i0 += hop) {
+    buf.assign(x.begin() + static_cast<long>(i0), x.begin() + static_cast<long>(i0 + length));
+    if (remove_mean) {
+      const double m = indicators(buf).mean;
+      for (double &v : buf) v -= m;
+    }
+    out.push_back({i0, i0 + length, indicators(buf)});
+  }
+  return out;
 }
 
 }  // namespace ohmdem::post

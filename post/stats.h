@@ -30,6 +30,17 @@ inline Indicators indicators(const std::vector<double> &x)
   return indicators(x.data(), x.size());
 }
 
+// The indicators of the samples [first, last) of a record.
+struct WindowIndicators {
+  std::size_t first = 0, last = 0;
+  Indicators ind;
+};
+
+// Windows of `length` samples every `hop` samples from the start (only whole windows), each
+// with its own mean removed first when `remove_mean`. length in 2..x.size(), hop >= 1.
+std::vector<WindowIndicators> sliding_indicators(const std::vector<double> &x, std::size_t length,
+                                                 std::size_t hop, bool remove_mean);
+
 }  // namespace ohmdem::post
 
 #endif

@@ -37,6 +37,19 @@ std::vector<std::string_view> split_blanks(std::string_view line)
   return out;
 }
 
+std::vector<std::string> split_commas(const std::string &s)
+{
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size()) {
+    std::size_t end = s.find(',', start);
+    if (end == std::string::npos) end = s.size();
+    if (end > start) out.push_back(s.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
 std::string_view trim(std::string_view s)
 {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);

@@ -13,6 +13,8 @@ namespace ohmdem::post {
 std::vector<std::string_view> split_blanks(std::string_view line);
 void split_blanks(std::string_view line, std::vector<std::string_view> &out);
 
+// The non-empty items of a comma-separated list ("a,,b," -> a, b), as option values give them.
+std::vector<std::string> split_commas(const std::string &s);
 std::string_view trim(std::string_view s);
 bool starts_with(std::string_view s, std::string_view prefix);
 

@@ -3,13 +3,12 @@
 #include <cmath>
 #include <complex>
 
+#include "constants.h"
 #include "error.h"
 
 namespace ohmdem::post {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // cosine-sum coefficients a_0..a_4 (scipy.signal.windows; flattop is the ISO 18431-2 / MATLAB one)
 struct Coeffs {

@@ -1,6 +1,9 @@
 #include "args.h"
 
+#include <cmath>
+
 #include "../error.h"
+#include "../sampled_signal.h"
 #include "../text_scan.h"
 
 namespace ohmdem::post::cli {
@@ -148,6 +151,52 @@ long long Args::integer(const std::string &name, long long fallback) const
   const std::string v = get(name);
   if (v.empty()) return fallback;
   return parse_option_int(name, v);
+}
+
+bool Range::contains(double v) const
+{
+  return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+}
+
+std::string Range::text() const
+{
+  if (std::isinf(hi)) return (lo_open ? "> " : ">= ") + format_number(lo);
+  if (std::isinf(lo)) return (hi_open ? "< " : "<= ") + format_number(hi);
+  return std::string("in ") + (lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
+         (hi_open ? ")" : "]");
+}
+
+long long Args::integer_in(const std::string &name, long long fallback, long long lo, long long hi,
+                           const std::string &what) const
+{
+  const long long v = integer(name, fallback);
+  if (v < lo || v > hi)
+    throw Error("option " + name + " expects " + what + " " +
+                (hi == LLONG_MAX ? ">= " + std::to_string(lo)
+                                 : "in " + std::to_string(lo) + ".." + std::to_string(hi)) +
+                ", got " + std::to_string(v));
+  return v;
+}
+
+double Args::number_in(const std::string &name, double fallback, const Range &range,
+                       const std::string &what, const std::string &unit) const
+{
+  const double v = number(name, fallback);
+  if (!range.contains(v))
+    throw Error("option " + name + " expects " + what + " " + range.text() +
+                (unit.empty() ? "" : " " + unit) + ", got " + format_number(v));
+  return v;
+}
+
+std::string Args::choice(const std::string &name, const std::vector<std::string> &choices) const
+{
+  const std::string v = get(name);
+  std::string list;
+  for (const auto &c : choices) {
+    if (v == c) return v;
+    list += (list.empty() ? "" : "|") + c;
+  }
+  throw Error("option " + name + " expects " + list + ", got '" + v + "'");
 }
 
 }  // namespace ohmdem::post::cli

@@ -3,6 +3,7 @@
 #ifndef OHMDEM_POST_CLI_ARGS_H
 #define OHMDEM_POST_CLI_ARGS_H
 
+#include <climits>
 #include <cmath>
 #include <map>
 #include <ostream>
@@ -10,6 +11,18 @@
 #include <vector>
 
 namespace ohmdem::post::cli {
+
+// The values a numeric option accepts, as its error message shows them ("> 0", "in (0, 0.5)").
+struct Range {
+  double lo = -INFINITY, hi = INFINITY;
+  bool lo_open = false, hi_open = false;
+  static Range above(double lo) { return {lo, INFINITY, true, false}; }
+  static Range at_least(double lo) { return {lo, INFINITY, false, false}; }
+  static Range open(double lo, double hi) { return {lo, hi, true, true}; }
+  static Range closed(double lo, double hi) { return {lo, hi, false, false}; }
+  bool contains(double v) const;
+  std::string text() const;  // "> 0", ">= 0", "in (0, 0.5)", "in [0, 1]"
+};
 
 class Args {
  public:
@@ -30,6 +43,15 @@ class Args {
   std::vector<std::string> values(const std::string &name) const;  // for arity > 1
   double number(const std::string &name, double fallback = NAN) const;
   long long integer(const std::string &name, long long fallback) const;
+  // Ranged values: the option's value (else the fallback) checked against lo..hi; out of range
+  // is an error naming the option, the expected form and the value ("option --order expects a
+  // filter order in 1..20, got 0"). `what` names the value, `unit` follows the bounds.
+  long long integer_in(const std::string &name, long long fallback, long long lo,
+                       long long hi = LLONG_MAX, const std::string &what = "an integer") const;
+  double number_in(const std::string &name, double fallback, const Range &range,
+                   const std::string &what = "a number", const std::string &unit = "") const;
+  // One of the words in `choices` ("peaks|bins|envelope"), else an error listing them.
+  std::string choice(const std::string &name, const std::vector<std::string> &choices) const;
   const std::vector<std::string> &positional() const { return positional_; }
   const std::string &command() const { return command_; }
 

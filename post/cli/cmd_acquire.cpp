@@ -32,47 +32,28 @@ AcquireSettings settings(const Args &a)
   AcquireSettings s;
   s.scale = a.number("--scale", 1);
   s.offset = a.number("--offset", 0);
-  if (a.has("--lowpass")) {
-    s.lowpass = a.number("--lowpass");
-    if (!(s.lowpass > 0)) throw Error("option --lowpass expects a cut-off > 0 Hz");
-  }
-  const long long order = a.integer("--order", 4);
-  if (order < 1 || order > kMaxButterworthOrder)
-    throw Error("option --order expects a filter order in 1.." +
-                std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(order));
-  s.order = static_cast<int>(order);
+  if (a.has("--lowpass"))
+    s.lowpass = a.number_in("--lowpass", 0, Range::above(0), "a cut-off", "Hz");
+  s.order = static_cast<int>(a.integer_in("--order", 4, 1, kMaxButterworthOrder, "a filter order"));
   if (a.has("--order") && !a.has("--lowpass")) throw Error("option --order needs --lowpass HZ");
-  const std::string start = a.get("--filter-start");
-  if (start != "steady" && start != "zero")
-    throw Error("option --filter-start expects steady|zero, got '" + start + "'");
-  s.steady_start = start == "steady";
-  if (a.has("--rate")) {
-    s.rate = a.number("--rate");
-    if (!(s.rate > 0)) throw Error("option --rate expects a rate > 0 Hz");
-  }
+  s.steady_start = a.choice("--filter-start", {"steady", "zero"}) == "steady";
+  if (a.has("--rate")) s.rate = a.number_in("--rate", 0, Range::above(0), "a rate", "Hz");
   if (a.has("--noise-rms") && a.has("--noise-density"))
     throw Error("give the noise once: --noise-rms or --noise-density");
-  s.noise_rms = a.number("--noise-rms", 0);
-  s.noise_density = a.number("--noise-density", 0);
-  if (s.noise_rms < 0) throw Error("option --noise-rms expects a value >= 0");
-  if (s.noise_density < 0) throw Error("option --noise-density expects a value >= 0");
+  s.noise_rms = a.number_in("--noise-rms", 0, Range::at_least(0), "a value");
+  s.noise_density = a.number_in("--noise-density", 0, Range::at_least(0), "a value");
   if (a.has("--input-referred")) {
     if (!a.has("--noise-rms") && !a.has("--noise-density"))
       throw Error("option --input-referred needs --noise-rms or --noise-density");
     s.noise_rms *= std::abs(s.scale);
     s.noise_density *= std::abs(s.scale);
   }
-  const long long seed = a.integer("--seed", 1);
-  if (seed < 0) throw Error("option --seed expects an integer >= 0");
-  s.seed = static_cast<std::uint64_t>(seed);
+  s.seed = static_cast<std::uint64_t>(a.integer_in("--seed", 1, 0));
   if (a.has("--bits") != a.has("--range"))
     throw Error(a.has("--bits") ? "option --bits needs --range LO HI (the ADC's input range)"
                                 : "option --range needs --bits N (the ADC's resolution)");
   if (a.has("--bits")) {
-    const long long bits = a.integer("--bits", 0);
-    if (bits < 1 || bits > 32)
-      throw Error("option --bits expects 1..32, got " + std::to_string(bits));
-    s.bits = static_cast<int>(bits);
+    s.bits = static_cast<int>(a.integer_in("--bits", 0, 1, 32));
     const auto r = a.values("--range");
     s.lo = parse_option_double("--range", r[0]);
     s.hi = parse_option_double("--range", r[1]);

@@ -1,7 +1,6 @@
 // ohmdem-post collect: the indicators of many run folders in one table, one row per run, with
 // the swept parameters read from each run's own run.json.
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -13,6 +12,7 @@
 #include "../error.h"
 #include "../read_table.h"
 #include "../stats.h"
+#include "../text_scan.h"
 #include "commands.h"
 #include "common.h"
 
@@ -33,7 +33,7 @@ bool is_outcome_key(const std::string &k)
 struct RunResult {
   std::string run;
   std::string status;  // finished, interrupted or failed (run.json; finished when absent)
-  std::vector<std::pair<std::string, Json>> params;
+  RunParameters params;
   std::string quantity;  // the signal's name (column)
   double t_start = 0, t_end = 0;
   Indicators ind;
@@ -42,50 +42,12 @@ struct RunResult {
   Diagnosis diagnosis;
 };
 
-// Case-insensitive order of run.json keys ("area" < "F" < "load"), byte order as a tie-break.
-bool key_less(const std::string &a, const std::string &b)
-{
-  std::string la = a, lb = b;
-  for (char &c : la) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (char &c : lb) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return la != lb ? la < lb : a < b;
-}
-
-std::vector<std::string> split_list(const std::string &s)
-{
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (start <= s.size()) {
-    std::size_t end = s.find(',', start);
-    if (end == std::string::npos) end = s.size();
-    if (end > start) out.push_back(s.substr(start, end - start));
-    start = end + 1;
-  }
-  return out;
-}
-
 Cell param_cell(const Json *v)
 {
   if (!v) return Cell(kNaN);
   if (v->is_number()) return Cell(v->number());
   if (v->is_string()) return Cell(v->string());
   return Cell(v->boolean() ? "true" : "false");
-}
-
-bool same_value(const Json *p, const Json *q)
-{
-  if (!p || !q) return p == q;
-  if (p->type() != q->type()) return false;
-  if (p->is_number()) return p->number() == q->number();
-  if (p->is_string()) return p->string() == q->string();
-  return p->boolean() == q->boolean();
-}
-
-const Json *find_param(const RunResult &r, const std::string &key)
-{
-  for (const auto &kv : r.params)
-    if (kv.first == key) return &kv.second;
-  return nullptr;
 }
 
 // One run: metadata, window, indicators, duty and (optionally) the diagnosis.
@@ -257,29 +219,15 @@ int run_collect(const std::vector<std::string> &argv)
   // parameter columns
   std::vector<std::string> keys;
   if (a.has("--params")) {
-    keys = split_list(a.get("--params"));
+    keys = split_commas(a.get("--params"));
     for (const auto &k : keys)
       if (std::none_of(results.begin(), results.end(),
-                       [&](const RunResult &r) { return find_param(r, k) != nullptr; }))
+                       [&](const RunResult &r) { return find_parameter(r.params, k) != nullptr; }))
         throw Error("option --params: no run.json of the runs has the key '" + k + "'");
   } else {
-    std::set<std::string> all;
-    for (const auto &r : results)
-      for (const auto &kv : r.params) all.insert(kv.first);
-    keys.assign(all.begin(), all.end());
-    std::sort(keys.begin(), keys.end(), key_less);
-    if (a.has("--varying")) {
-      std::vector<std::string> varying;
-      for (const auto &k : keys) {
-        const Json *first = find_param(results.front(), k);
-        for (const auto &r : results)
-          if (!same_value(first, find_param(r, k))) {
-            varying.push_back(k);
-            break;
-          }
-      }
-      keys = varying;
-    }
+    std::vector<const RunParameters *> params;
+    for (const auto &r : results) params.push_back(&r.params);
+    keys = parameter_keys(params, a.has("--varying"));
   }
 
   const std::string quantity = results.front().quantity;
@@ -297,13 +245,13 @@ int run_collect(const std::vector<std::string> &argv)
     return std::find(fixed.begin(), fixed.end(), k) != fixed.end() ? "param_" + k : k;
   };
 
-  Report rep;
-  rep.columns = {"run", "status"};
-  for (const auto &k : keys) rep.columns.push_back(param_column(k));
-  rep.columns.insert(rep.columns.end(), fixed.begin() + 2, fixed.end());
+  Result rep;
+  rep.table.columns = {"run", "status"};
+  for (const auto &k : keys) rep.table.columns.push_back(param_column(k));
+  rep.table.columns.insert(rep.table.columns.end(), fixed.begin() + 2, fixed.end());
   for (const auto &r : results) {
     std::vector<Cell> row{r.run, r.status};
-    for (const auto &k : keys) row.push_back(param_cell(find_param(r, k)));
+    for (const auto &k : keys) row.push_back(param_cell(find_parameter(r.params, k)));
     row.emplace_back(r.t_start);
     row.emplace_back(r.t_end);
     row.emplace_back(r.ind.n);
@@ -316,7 +264,7 @@ int run_collect(const std::vector<std::string> &argv)
       row.emplace_back(d.defect == "none" ? kNaN : d.frequency_hz);
       row.emplace_back(d.size.valid ? d.size.size_deg : kNaN);
     }
-    rep.rows.push_back(std::move(row));
+    rep.table.rows.push_back(std::move(row));
   }
 
   MetaList &m = rep.meta;
@@ -358,7 +306,7 @@ int run_collect(const std::vector<std::string> &argv)
     m.emplace_back("diagnosis", "as ohmdem-post diagnose with its default options, same window");
 
   Output out(a);
-  write_report(out.stream(), rep, out.format());
+  out.write(rep);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "../constants.h"
 #include "../diagnose.h"
 #include "../error.h"
 #include "../order_diagnose.h"
@@ -71,6 +72,170 @@ std::string percent_off(double f, double nominal)
   return format_number(100 * (f / nominal - 1), 3) + " %";
 }
 
+// What the three forms of the diagnosis show besides the Diagnosis itself.
+struct DiagnosisContext {
+  const DiagnoseOptions &options;
+  bool in_orders;
+  std::optional<std::string> run_defect;  // run.json "defect": what the run simulated
+};
+
+// The family the verdict names, if any.
+const FamilyScore *chosen_family(const Diagnosis &d)
+{
+  const FamilyScore *chosen = nullptr;
+  for (const auto &f : d.families)
+    if (f.defect == d.defect) chosen = &f;
+  return chosen;
+}
+
+Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Json j = Json::object();
+  j.set("defect", d.defect);
+  j.set("detected", d.detected);
+  j.set("detection", detection_json(d.detection, c.options.false_alarm));
+  j.set("score", d.score);
+  j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
+  j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
+  j.set("fundamental", chosen ? Json(d.label) : Json());
+  j.set("evidence", evidence_json(d.evidence));
+  Json fams = Json::object();
+  for (const auto &f : d.families) {
+    Json o = Json::object();
+    o.set("score", f.score);
+    o.set("fundamental", f.label);
+    o.set("nominal_hz", f.nominal_hz);
+    o.set("frequency_hz", f.frequency_hz);
+    o.set("comb", f.comb);
+    o.set("chance", f.chance);
+    o.set("margin_db", f.margin);
+    o.set("harmonics", f.harmonics);
+    if (std::isfinite(f.baseline_excess)) o.set("baseline_excess_db", f.baseline_excess);
+    o.set("spectrum", f.spectrum);
+    fams.set(f.defect, o);
+  }
+  j.set("families", fams);
+  Json sz = Json::object();
+  sz.set("valid", d.size.valid);
+  sz.set("method", d.size.method);
+  sz.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
+  sz.set("size_deg", d.size.valid ? Json(d.size.size_deg) : Json());
+  sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
+  sz.set("pulses", d.size.pulses);
+  j.set("size", sz);
+  Json band = Json::array();
+  band.push_back(d.band.lo);
+  band.push_back(d.band.hi);
+  j.set("band_hz", band);
+  j.set("band_kurtosis", d.band_kurtosis);
+  j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
+  j.set("band_kurtosis_significant",
+        std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
+  j.set("shaft_hz", c.options.fr);
+  j.set("domain", c.in_orders ? "orders" : "time");
+  j.set("bearing", c.options.geometry.name);
+  if (c.run_defect) j.set("run_defect", *c.run_defect);
+  j.set("meta", meta_json(meta));
+  return j;
+}
+
+// One row for tables of many records: the verdict, the family scores, the detection tests.
+Table diagnosis_row(const Diagnosis &d)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Table t;
+  t.columns = {"defect", "score", "frequency_Hz", "kinematic_Hz", "size_deg", "pulse_width_s"};
+  for (const auto &f : d.families) t.columns.push_back(f.defect + "_score");
+  t.columns.insert(t.columns.end(),
+                   {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
+  std::vector<Cell> row{d.defect,
+                        d.score,
+                        chosen ? d.frequency_hz : NAN,
+                        chosen ? chosen->nominal_hz : NAN,
+                        d.size.valid ? d.size.size_deg : NAN,
+                        d.size.valid ? d.size.pulse_width_s : NAN};
+  for (const auto &f : d.families) row.emplace_back(f.score);
+  row.emplace_back(d.band_kurtosis);
+  row.emplace_back(d.band_kurtosis_threshold);
+  row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
+                                                  : "");
+  // detection columns, appended (scripts reading the columns above keep working)
+  t.columns.push_back("detected");
+  row.emplace_back(d.detected ? "yes" : "no");
+  t.columns.push_back("fired");
+  row.emplace_back(fired_list(d.detection));
+  for (const auto &test : d.detection.tests) {
+    t.columns.push_back(test.name);
+    t.columns.push_back(test.name + "_threshold");
+    row.emplace_back(test.applicable ? test.value : NAN);
+    row.emplace_back(test.applicable ? test.threshold : NAN);
+  }
+  t.rows.push_back(row);
+  return t;
+}
+
+// For reading: the verdict, then the detection tests, the families and the evidence.
+std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  std::vector<Block> b;
+  auto line = [&b](const std::string &text) { b.push_back({text, std::nullopt}); };
+  line("defect:        " + d.defect);
+  line("detected:      " + std::string(d.detected ? "yes" : "no") +
+       (d.detection.fired ? " (fired: " + fired_list(d.detection) + ")"
+        : d.detected      ? " (a family identified; no detection test fired)"
+                          : ""));
+  line("score:         " + format_number(d.score, 3));
+  if (chosen)
+    line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
+         " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
+         percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
+  if (d.size.valid)
+    line("size:          " + format_number(d.size.size_deg, 4) + " deg, arc " +
+         format_number(d.size.arc_m * 1e3, 4) + " mm (pulse width " +
+         format_number(d.size.pulse_width_s * 1e6, 4) + " us, " + d.size.method + ", " +
+         std::to_string(d.size.pulses) + (d.size.method == "pulses" ? " pulses" : " periods") +
+         ")");
+  else if (chosen)
+    line("size:          n/a (" + d.size.method + ")");
+  line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
+       ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
+       std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);
+  line("");
+  Table dt;
+  dt.columns = {"test", "against", "value", "threshold", "p_value", "samples", "fired", "note"};
+  for (const auto &t : d.detection.tests)
+    dt.rows.push_back({t.name, t.reference, t.value, t.threshold, t.p_value, t.samples,
+                       !t.applicable ? "n/a"
+                       : t.fired     ? "yes"
+                                     : "no",
+                       t.note.empty() ? "-" : t.note});
+  b.push_back({"", dt});
+  line("");
+  const bool baseline = c.options.baseline != nullptr;
+  Table ft;
+  ft.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
+                "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
+  if (baseline) ft.columns.push_back("over_baseline_dB");
+  for (const auto &f : d.families) {
+    ft.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
+                       f.frequency_hz, f.spectrum});
+    if (baseline) ft.rows.back().emplace_back(f.baseline_excess);
+  }
+  b.push_back({"", ft});
+  if (!d.evidence.empty()) {
+    line("");
+    Table et;
+    et.columns = {"evidence", "spectrum", "expected_Hz", "peak_Hz", "amplitude", "prominence_dB"};
+    for (const auto &e : d.evidence)
+      et.rows.push_back(
+          {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
+    b.push_back({"", et});
+  }
+  return b;
+}
+
 }  // namespace
 
 int run_diagnose(const std::vector<std::string> &argv)
@@ -93,11 +258,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   add_bearing_options(a);
   add_shaft_angle_options(a);
   a.section("Diagnosis");
-  a.option("--tolerance", "F", "relative search range of each fundamental (slip)", "0.02");
-  a.option("--harmonics", "N", "harmonics in each family's comb", "5");
+  a.option("--tolerance", "F", "relative search range of each fundamental (slip), in (0, 0.2)",
+           "0.02");
+  a.option("--harmonics", "N", "harmonics in each family's comb (1..50)", "5");
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
-  a.option("--levels", "N", "kurtogram levels", "7");
+  a.option("--levels", "N", "kurtogram levels (0..16)", "7");
   a.section("Detection");
   a.option("--false-alarm", "P", "false-alarm probability of each detection test", "0.001");
   a.option("--baseline", "FILE",
@@ -125,25 +291,14 @@ int run_diagnose(const std::vector<std::string> &argv)
         "with omega_inner");
   DiagnoseOptions o;
   o.geometry = *bc.geometry;
-  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * M_PI);
-  o.tolerance = a.number("--tolerance", 0.02);
-  const long long h = a.integer("--harmonics", 5);
-  if (h < 1 || h > 50) throw Error("option --harmonics expects 1..50");
-  o.harmonics = static_cast<int>(h);
+  o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * kPi);
+  o.tolerance = tolerance_option(a);
+  o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
-  const long long levels = a.integer("--levels", 7);
-  if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
-  o.kurtogram_levels = static_cast<int>(levels);
-  if (a.has("--band")) {
-    const auto v = a.values("--band");
-    o.band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
-    if (!(o.band.hi > o.band.lo) || o.band.lo < 0)
-      throw Error("option --band expects 0 <= F1 < F2");
-  }
+  o.kurtogram_levels = levels_option(a);
+  if (a.has("--band")) o.band = band_option(a);
   o.estimate_size = !a.has("--no-size");
-  o.false_alarm = a.number("--false-alarm", 1e-3);
-  if (!(o.false_alarm > 0 && o.false_alarm < 0.5))
-    throw Error("option --false-alarm expects a probability in (0, 0.5)");
+  o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
   Signal base;
   if (a.has("--baseline")) {
     // the record's input options and time window (its sliding phase too), its step length
@@ -160,7 +315,7 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error("diagnose: --baseline is not supported when the speed varies (the record is "
                 "diagnosed in the angle domain); give a record at constant speed");
   const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
-  if (in_orders) o.fr = sa->speed.mean / (2 * M_PI);
+  if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);
 
@@ -185,145 +340,13 @@ int run_diagnose(const std::vector<std::string> &argv)
                    std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +
                        "threshold " + format_number(d.band_kurtosis_threshold, 4) +
                        " at alpha 0.01 over the bands searched)");
-  const FamilyScore *chosen = nullptr;
-  for (const auto &f : d.families)
-    if (f.defect == d.defect) chosen = &f;
-
-  if (out.format() == OutputFormat::Json) {
-    Json j = Json::object();
-    j.set("defect", d.defect);
-    j.set("detected", d.detected);
-    j.set("detection", detection_json(d.detection, o.false_alarm));
-    j.set("score", d.score);
-    j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
-    j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
-    j.set("fundamental", chosen ? Json(d.label) : Json());
-    j.set("evidence", evidence_json(d.evidence));
-    Json fams = Json::object();
-    for (const auto &f : d.families) {
-      Json o2 = Json::object();
-      o2.set("score", f.score);
-      o2.set("fundamental", f.label);
-      o2.set("nominal_hz", f.nominal_hz);
-      o2.set("frequency_hz", f.frequency_hz);
-      o2.set("comb", f.comb);
-      o2.set("chance", f.chance);
-      o2.set("margin_db", f.margin);
-      o2.set("harmonics", f.harmonics);
-      if (std::isfinite(f.baseline_excess)) o2.set("baseline_excess_db", f.baseline_excess);
-      o2.set("spectrum", f.spectrum);
-      fams.set(f.defect, o2);
-    }
-    j.set("families", fams);
-    Json sz = Json::object();
-    sz.set("valid", d.size.valid);
-    sz.set("method", d.size.method);
-    sz.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
-    sz.set("size_deg", d.size.valid ? Json(d.size.size_deg) : Json());
-    sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
-    sz.set("pulses", d.size.pulses);
-    j.set("size", sz);
-    Json band = Json::array();
-    band.push_back(d.band.lo);
-    band.push_back(d.band.hi);
-    j.set("band_hz", band);
-    j.set("band_kurtosis", d.band_kurtosis);
-    j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
-    j.set("band_kurtosis_significant",
-          std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
-    j.set("shaft_hz", o.fr);
-    j.set("domain", in_orders ? "orders" : "time");
-    j.set("bearing", o.geometry.name);
-    if (meta.defect) j.set("run_defect", *meta.defect);
-    j.set("meta", meta_json(m));
-    out.stream() << j.dump(2) << '\n';
-    return 0;
-  }
-  if (out.format() == OutputFormat::Csv) {
-    Report r;
-    r.meta = m;
-    r.columns = {"defect",        "score",       "frequency_Hz", "kinematic_Hz", "size_deg",
-                 "pulse_width_s", "inner_score", "outer_score",  "ball_score",   "cage_score"};
-    r.columns.insert(r.columns.end(),
-                     {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
-    std::vector<Cell> row{d.defect,
-                          d.score,
-                          chosen ? d.frequency_hz : NAN,
-                          chosen ? chosen->nominal_hz : NAN,
-                          d.size.valid ? d.size.size_deg : NAN,
-                          d.size.valid ? d.size.pulse_width_s : NAN};
-    for (const auto &f : d.families) row.emplace_back(f.score);
-    row.emplace_back(d.band_kurtosis);
-    row.emplace_back(d.band_kurtosis_threshold);
-    row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
-                                                    : "");
-    // detection columns, appended (scripts reading the columns above keep working)
-    r.columns.push_back("detected");
-    row.emplace_back(d.detected ? "yes" : "no");
-    r.columns.push_back("fired");
-    row.emplace_back(fired_list(d.detection));
-    for (const auto &t : d.detection.tests) {
-      r.columns.push_back(t.name);
-      r.columns.push_back(t.name + "_threshold");
-      row.emplace_back(t.applicable ? t.value : NAN);
-      row.emplace_back(t.applicable ? t.threshold : NAN);
-    }
-    r.rows.push_back(row);
-    write_report(out.stream(), r, out.format());
-    return 0;
-  }
-  // aligned table: the verdict, then the families, then the evidence
-  std::ostream &os = out.stream();
-  for (const auto &kv : m) os << "# " << kv.first << ": " << kv.second << '\n';
-  os << "defect:        " << d.defect << '\n';
-  os << "detected:      " << (d.detected ? "yes" : "no");
-  if (d.detection.fired)
-    os << " (fired: " << fired_list(d.detection) << ")";
-  else if (d.detected)
-    os << " (a family identified; no detection test fired)";
-  os << '\n';
-  os << "score:         " << format_number(d.score, 3) << '\n';
-  if (chosen)
-    os << "frequency:     " << format_number(d.frequency_hz, 7) << " Hz = " << d.label
-       << " (kinematic " << format_number(chosen->nominal_hz, 7) << " Hz, "
-       << percent_off(d.frequency_hz, chosen->nominal_hz) << ")\n";
-  if (d.size.valid)
-    os << "size:          " << format_number(d.size.size_deg, 4) << " deg, arc "
-       << format_number(d.size.arc_m * 1e3, 4) << " mm (pulse width "
-       << format_number(d.size.pulse_width_s * 1e6, 4) << " us, " << d.size.method << ", "
-       << d.size.pulses << (d.size.method == "pulses" ? " pulses" : " periods") << ")\n";
-  else if (chosen)
-    os << "size:          n/a (" << d.size.method << ")\n";
-  os << "# detection: each test at false-alarm probability " << format_number(o.false_alarm)
-     << ", at most " << format_number(d.detection.false_alarm_bound) << " for the "
-     << d.detection.tests_applied << " applied; " << d.detection.gaussian_note << '\n';
-  os << '\n';
-  Report dr;
-  dr.columns = {"test", "against", "value", "threshold", "p_value", "samples", "fired", "note"};
-  for (const auto &t : d.detection.tests)
-    dr.rows.push_back({t.name, t.reference, t.value, t.threshold, t.p_value, t.samples,
-                       !t.applicable ? "n/a" : t.fired ? "yes" : "no", t.note.empty() ? "-" : t.note});
-  write_table(os, dr);
-  os << '\n';
-  Report fr;
-  fr.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
-                "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
-  if (o.baseline) fr.columns.push_back("over_baseline_dB");
-  for (const auto &f : d.families) {
-    fr.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
-                       f.frequency_hz, f.spectrum});
-    if (o.baseline) fr.rows.back().emplace_back(f.baseline_excess);
-  }
-  write_table(os, fr);
-  if (!d.evidence.empty()) {
-    os << '\n';
-    Report ev;
-    ev.columns = {"evidence", "spectrum", "expected_Hz", "peak_Hz", "amplitude", "prominence_dB"};
-    for (const auto &e : d.evidence)
-      ev.rows.push_back(
-          {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
-    write_table(os, ev);
-  }
+  Result r;
+  r.meta = std::move(m);
+  const DiagnosisContext ctx{o, in_orders, meta.defect};
+  r.json = diagnosis_json(d, ctx, r.meta);
+  r.table = diagnosis_row(d);
+  r.text = diagnosis_text(d, ctx);
+  out.write(r);
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
 #include "../text_scan.h"
@@ -37,7 +38,7 @@ int run_envelope(const std::vector<std::string> &argv)
   a.section("Envelope");
   a.option("--band", "F1 F2", "band-pass edges (Hz) (default: 0 to Nyquist)", "", 2);
   a.flag("--kurtogram", "choose the band with the fast kurtogram");
-  a.option("--levels", "N", "kurtogram levels (up to 2^N bands)", "7");
+  a.option("--levels", "N", "kurtogram levels, up to 2^N bands (0..16)", "7");
   a.option("--min-bandwidth", "HZ",
            "narrowest kurtogram band (default: 5.5 x the largest defect frequency when bearing "
            "and speed are known, else fs/2^(levels+1))");
@@ -53,32 +54,26 @@ int run_envelope(const std::vector<std::string> &argv)
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 64);
   Output out(a);
-  const std::string show = a.get("--show");
-  if (show != "peaks" && show != "bins" && show != "envelope" && show != "kurtogram")
-    throw Error("option --show expects peaks|bins|envelope|kurtogram, got '" + show + "'");
+  const std::string show = a.choice("--show", {"peaks", "bins", "envelope", "kurtogram"});
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<DefectFrequencies> kin;
   if (bc.geometry && bc.fr) kin = defect_frequencies(*bc.geometry, *bc.fr);
   MetaList m = s.meta;
   Band band{0, s.rate / 2};
   if (a.has("--band")) {
-    const auto v = a.values("--band");
-    band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+    band = band_option(a);
     m.emplace_back("band (Hz)", format_number(band.lo) + " to " + format_number(band.hi));
   }
   if (a.has("--kurtogram") || show == "kurtogram") {
     if (a.has("--band") && show != "kurtogram")
       throw Error("give either --band or --kurtogram, not both");
-    const long long levels = a.integer("--levels", 7);
-    if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
+    const int levels = levels_option(a);
     // bands wide enough to carry 5 harmonics of the defect frequencies when they are known
-    const double min_bw = a.number(
-        "--min-bandwidth",
-        kin ? std::min(s.rate / 4, 1.1 * 5 * std::max({kin->bpfi, kin->bpfo, 2 * kin->bsf})) : 0);
+    const double min_bw = a.number("--min-bandwidth", kin ? defect_band_width(*kin, 5, s.rate) : 0);
     std::vector<double> x = s.x;
-    const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), min_bw);
+    const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {
-      Report r;
+      Result r;
       r.meta = m;
       r.meta.emplace_back("spectral kurtosis",
                           "E|c|^4/(E|c|^2)^2 - 2 of the band's complex "
@@ -86,10 +81,10 @@ int run_envelope(const std::vector<std::string> &argv)
       r.meta.emplace_back("best band (Hz)",
                           format_number(kg.best.lo) + " to " + format_number(kg.best.hi));
       r.meta.emplace_back("band kurtosis significant", significance(kg));
-      r.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
+      r.table.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
       for (const auto &c : kg.cells)
-        r.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
-      write_report(out.stream(), r, out.format());
+        r.table.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
+      out.write(r);
       return 0;
     }
     band = {kg.best.lo, kg.best.hi};
@@ -101,21 +96,21 @@ int run_envelope(const std::vector<std::string> &argv)
   const std::vector<double> env = envelope(s.x, s.rate, band);
   const std::string unit = unit_of(a, s.name);
   if (show == "envelope") {
-    Report r;
+    Result r;
     r.meta = m;
     r.meta.emplace_back("envelope", "|analytic signal| of the band-passed signal");
-    r.columns = {"time_s", with_unit("envelope", unit)};
-    for (std::size_t i = 0; i < env.size(); ++i) r.rows.push_back({s.time(i), env[i]});
-    r.table_digits = 10;
-    write_report(out.stream(), r, out.format());
+    r.table.columns = {"time_s", with_unit("envelope", unit)};
+    for (std::size_t i = 0; i < env.size(); ++i) r.table.rows.push_back({s.time(i), env[i]});
+    r.table.table_digits = 10;
+    out.write(r);
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, env.size(), s.rate);
   const Spectrum sp = spectrum(env, s.rate, so);
   const MetaList sm = spectrum_meta(sp, so.detrend);
   m.insert(m.end(), sm.begin(), sm.end());
-  write_spectrum(out.stream(), out.format(), a, sp, m, unit, kin, "envelope spectrum peaks",
-                 show == "bins" || a.has("--bins"));
+  out.write(spectrum_result(a, sp, m, unit, kin, "envelope spectrum peaks",
+                            show == "bins" || a.has("--bins")));
   return 0;
 }
 

@@ -1,6 +1,7 @@
 // ohmdem-post frequencies: kinematic defect frequencies from geometry and shaft speed.
 #include <iostream>
 
+#include "../defect_lines.h"
 #include "../error.h"
 #include "commands.h"
 #include "common.h"
@@ -18,7 +19,7 @@ int run_frequencies(const std::vector<std::string> &argv)
          "--bearing takes a name of the bearing catalog (doc/bearing_catalog.md); the pitch\n"
          "diameter of a catalog bearing is (Dext + Dinn)/2, as in the deck.");
   add_bearing_options(a);
-  a.option("--harmonics", "N", "also list harmonics 2..N of each frequency", "1");
+  a.option("--harmonics", "N", "also list harmonics 2..N of each frequency (1..50)", "1");
   a.option("--metadata", "FILE", "read bearing and speed from a run.json");
   add_output_options(a);
   if (!a.parse(argv, std::cout)) return 0;
@@ -29,25 +30,13 @@ int run_frequencies(const std::vector<std::string> &argv)
   const BearingChoice bc = bearing_choice(a, meta);
   if (!bc.geometry) throw Error("frequencies: give a bearing (--bearing NAME or --nb --db --dp)");
   if (!bc.fr) throw Error("frequencies: give the shaft speed (--rpm, --shaft-hz or --omega)");
-  const long long harmonics = a.integer("--harmonics", 1);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const int harmonics = harmonics_option(a, 1);
   const BearingGeometry &g = *bc.geometry;
   const DefectFrequencies f = defect_frequencies(g, *bc.fr);
   Output out(a);
 
-  struct Row {
-    const char *key, *label, *formula;
-    double value;
-  };
-  const Row rows[] = {
-      {"fr", "shaft", "fr", f.fr},
-      {"ftf", "FTF (cage)", "fr/2 (1 - d/D cos b)", f.ftf},
-      {"bpfo", "BPFO (outer race)", "Nb FTF", f.bpfo},
-      {"bpfi", "BPFI (inner race)", "Nb fr/2 (1 + d/D cos b)", f.bpfi},
-      {"bsf", "BSF (ball spin)", "D/(2d) fr (1 - (d/D cos b)^2)", f.bsf},
-      {"two_bsf", "2xBSF (ball defect)", "2 BSF", 2 * f.bsf},
-  };
-  MetaList meta_out = {
+  Result r;
+  r.meta = {
       {"bearing", g.name},
       {"geometry from", bc.geometry_source},
       {"balls", std::to_string(g.nb)},
@@ -56,38 +45,34 @@ int run_frequencies(const std::vector<std::string> &argv)
       {"contact angle (deg)", format_number(g.contact_angle_deg)},
       {"shaft frequency (Hz)", format_number(f.fr, 10)},
   };
-  if (out.format() == OutputFormat::Json) {
-    Json j = Json::object();
-    Json b = Json::object();
-    b.set("name", g.name);
-    b.set("nb", g.nb);
-    b.set("db_m", g.db);
-    b.set("dp_m", g.dp);
-    b.set("contact_angle_deg", g.contact_angle_deg);
-    j.set("bearing", b);
-    for (const auto &r : rows) j.set(std::string(r.key) + "_hz", r.value);
-    if (harmonics > 1) {
-      Json h = Json::object();
-      for (const auto &r : rows) {
-        Json arr = Json::array();
-        for (long long k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * r.value);
-        h.set(r.key, arr);
-      }
-      j.set("harmonics_hz", h);
+  r.table.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
+  r.table.table_digits = 7;
+  for (const DefectLine &line : defect_lines())
+    for (int k = 1; k <= harmonics; ++k) {
+      const double v = static_cast<double>(k) * line.of(f);
+      r.table.rows.push_back({line.title, k, v, v / f.fr, line.formula});
     }
-    out.stream() << j.dump(2) << '\n';
-    return 0;
+  // JSON: the bearing, then each line by key, its harmonics as arrays
+  Json b = Json::object();
+  b.set("name", g.name);
+  b.set("nb", g.nb);
+  b.set("db_m", g.db);
+  b.set("dp_m", g.dp);
+  b.set("contact_angle_deg", g.contact_angle_deg);
+  r.json = Json::object();
+  r.json.set("bearing", b);
+  for (const DefectLine &line : defect_lines())
+    r.json.set(std::string(line.key) + "_hz", line.of(f));
+  if (harmonics > 1) {
+    Json h = Json::object();
+    for (const DefectLine &line : defect_lines()) {
+      Json arr = Json::array();
+      for (int k = 1; k <= harmonics; ++k) arr.push_back(static_cast<double>(k) * line.of(f));
+      h.set(line.key, arr);
+    }
+    r.json.set("harmonics_hz", h);
   }
-  Report rep;
-  rep.meta = meta_out;
-  rep.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
-  rep.table_digits = 7;
-  for (const auto &r : rows)
-    for (long long k = 1; k <= harmonics; ++k) {
-      const double v = static_cast<double>(k) * r.value;
-      rep.rows.push_back({r.label, static_cast<int>(k), v, v / f.fr, r.formula});
-    }
-  write_report(out.stream(), rep, out.format());
+  out.write(r);
   return 0;
 }
 

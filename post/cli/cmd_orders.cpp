@@ -5,6 +5,8 @@
 #include <iostream>
 #include <limits>
 
+#include "../constants.h"
+#include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
 #include "../order_tracking.h"
@@ -18,8 +20,6 @@
 namespace ohmdem::post::cli {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 MetaList speed_meta(const ShaftAngle &sa)
 {
@@ -55,7 +55,7 @@ int run_orders(const std::vector<std::string> &argv)
   a.flag("--envelope", "envelope order spectrum (band: --band, else --kurtogram, else all)");
   a.option("--band", "F1 F2", "envelope band (Hz, time domain)", "", 2);
   a.flag("--kurtogram", "choose the envelope band with the kurtogram");
-  a.option("--levels", "N", "kurtogram levels", "7");
+  a.option("--levels", "N", "kurtogram levels (0..16)", "7");
   a.option("--show", "WHAT",
            "peaks (of the order spectrum) | bins (every bin) | resampled (the angle-domain "
            "signal)",
@@ -64,8 +64,9 @@ int run_orders(const std::vector<std::string> &argv)
   a.option("--min-prominence", "DB", "peaks stand this far above the local median floor", "6");
   a.option("--order-min", "O", "lowest order reported", "0");
   a.option("--order-max", "O", "highest order reported (default: the flat band, 0.4 S)");
-  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect orders", "0.02");
-  a.option("--harmonics", "N", "harmonics of each defect order used for labels", "5");
+  a.option("--tolerance", "F",
+           "relative tolerance for labelling peaks with defect orders, in (0, 0.2)", "0.02");
+  a.option("--harmonics", "N", "harmonics of each defect order used for labels (1..50)", "5");
   a.flag("--keep-sliding", "analyse our runs' sliding phase too (default: from t_sliding_end)");
   add_spectrum_options(a, "amplitude");
   add_output_options(a);
@@ -81,9 +82,7 @@ int run_orders(const std::vector<std::string> &argv)
           "constant speed (--rpm, --shaft-hz, --omega, --rpm-variable, run.json omega_inner)");
     sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
   }
-  const std::string show = a.get("--show");
-  if (show != "peaks" && show != "bins" && show != "resampled")
-    throw Error("option --show expects peaks|bins|resampled, got '" + show + "'");
+  const std::string show = a.choice("--show", {"peaks", "bins", "resampled"});
   MetaList m = s.meta;
   const MetaList sm = speed_meta(*sa);
   m.insert(m.end(), sm.begin(), sm.end());
@@ -95,19 +94,17 @@ int run_orders(const std::vector<std::string> &argv)
     std::string how = "whole band";
     if (a.has("--band")) {
       if (a.has("--kurtogram")) throw Error("give either --band or --kurtogram, not both");
-      const auto v = a.values("--band");
-      band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+      band = band_option(a);
       how = "--band";
     } else if (a.has("--kurtogram")) {
-      const long long levels = a.integer("--levels", 7);
-      if (levels < 0 || levels > 16) throw Error("option --levels expects 0..16");
+      const int levels = levels_option(a);
       // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
       double min_bw = 0;
       if (bc.geometry) {
-        const DefectFrequencies k = defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi));
-        min_bw = std::min(s.rate / 4, 1.1 * 5 * std::max({k.bpfi, k.bpfo, 2 * k.bsf}));
+        min_bw = defect_band_width(defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi)), 5,
+                                   s.rate);
       }
-      const Kurtogram kg = kurtogram(x, s.rate, static_cast<int>(levels), min_bw);
+      const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram, spectral kurtosis " + format_number(kg.best.kurtosis, 4);
     }
@@ -132,15 +129,15 @@ int run_orders(const std::vector<std::string> &argv)
   const std::string unit = unit_of(a, s.name);
   Output out(a);
   if (show == "resampled") {
-    Report rep;
+    Result rep;
     rep.meta = m;
-    rep.columns = {"revolution", "angle_rad", with_unit(s.name, unit)};
+    rep.table.columns = {"revolution", "angle_rad", with_unit(s.name, unit)};
     for (std::size_t k = 0; k < r.x.size(); ++k) {
       const double ang = r.theta0 + 2 * kPi * static_cast<double>(k) / spr;
-      rep.rows.push_back({ang / (2 * kPi), ang, r.x[k]});
+      rep.table.rows.push_back({ang / (2 * kPi), ang, r.x[k]});
     }
-    rep.table_digits = 10;
-    write_report(out.stream(), rep, out.format());
+    rep.table.table_digits = 10;
+    out.write(rep);
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, r.x.size(), spr);
@@ -149,49 +146,46 @@ int run_orders(const std::vector<std::string> &argv)
   std::optional<DefectFrequencies> orders;
   if (bc.geometry) {
     orders = defect_frequencies(*bc.geometry, 1.0);
-    m.emplace_back("defect orders (x fr)",
-                   "FTF " + format_number(orders->ftf, 6) + ", BPFO " +
-                       format_number(orders->bpfo, 6) + ", BPFI " + format_number(orders->bpfi, 6) +
-                       ", BSF " + format_number(orders->bsf, 6) + ", 2BSF " +
-                       format_number(2 * orders->bsf, 6) + " (" + bc.geometry->name + ")");
+    std::string list;
+    for (const DefectLine &line : defect_lines())
+      if (line.defect[0] != '\0')
+        list += (list.empty() ? "" : ", ") + std::string(line.name) + " " +
+                format_number(line.of(*orders), 6);
+    m.emplace_back("defect orders (x fr)", list + " (" + bc.geometry->name + ")");
   }
   PeakOptions po;
-  const long long npk = a.integer("--peaks", 10);
-  if (npk < 0 || npk > 100000) throw Error("option --peaks expects 0..100000");
-  po.max_peaks = static_cast<std::size_t>(npk);
+  po.max_peaks = peaks_option(a);
   po.min_prominence_db = a.number("--min-prominence", 6);
   po.fmin = a.number("--order-min", 0);
   po.fmax = a.number("--order-max", r.flat_order);
   if (!(po.fmax > po.fmin)) throw Error("--order-max must exceed --order-min");
-  const double tol = a.number("--tolerance", 0.02);
-  const long long harmonics = a.integer("--harmonics", 5);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const double tol = tolerance_option(a);
+  const int harmonics = harmonics_option(a, 5);
   const std::string vname = with_unit(scaling_name(sp.scaling), unit);
-  Report rep;
+  Result rep;
   rep.meta = m;
   const MetaList spm = spectrum_meta(sp, so.detrend);
   rep.meta.insert(rep.meta.end(), spm.begin(), spm.end());
   if (show == "bins") {
-    rep.columns = {"order", vname};
+    rep.table.columns = {"order", vname};
     for (std::size_t k = 0; k < sp.bins(); ++k)
       if (sp.frequency(k) >= po.fmin && sp.frequency(k) <= po.fmax)
-        rep.rows.push_back({sp.frequency(k), sp.value[k]});
-    rep.table_digits = 8;
+        rep.table.rows.push_back({sp.frequency(k), sp.value[k]});
+    rep.table.table_digits = 8;
   } else {
     rep.meta.emplace_back(
         "peaks", what + ", largest first, prominence >= " + format_number(po.min_prominence_db) +
                      " dB over the local median, interpolated");
-    rep.columns = {"rank", "order", vname, "prominence_dB"};
-    if (orders) rep.columns.push_back("label");
+    rep.table.columns = {"rank", "order", vname, "prominence_dB"};
+    if (orders) rep.table.columns.push_back("label");
     int rank = 0;
     for (const Peak &p : find_peaks(sp, po)) {
       std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-      if (orders)
-        row.emplace_back(label_frequency(p.frequency, *orders, static_cast<int>(harmonics), tol));
-      rep.rows.push_back(row);
+      if (orders) row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
+      rep.table.rows.push_back(row);
     }
   }
-  write_report(out.stream(), rep, out.format());
+  out.write(rep);
   return 0;
 }
 

@@ -4,10 +4,13 @@
 #include <iostream>
 #include <sstream>
 
+#include "../constants.h"
+#include "../defect_lines.h"
 #include "../envelope.h"
 #include "../error.h"
 #include "../gnuplot.h"
 #include "../read_table.h"
+#include "../spectrogram.h"
 #include "../table_select.h"
 #include "../text_scan.h"
 #include "commands.h"
@@ -19,33 +22,15 @@ namespace ohmdem::post::cli {
 
 namespace {
 
-std::vector<std::string> split_list(const std::string &s)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
-
-// Defect-frequency markers up to fmax: harmonics 1..h of FTF, BPFO, BPFI and 2 BSF.
+// Defect-frequency markers up to fmax: harmonics 1..h of the fault lines (FTF, BPFO, BPFI, 2BSF).
 std::vector<PlotMarker> defect_markers(const DefectFrequencies &k, int harmonics, double fmax)
 {
-  struct Fam {
-    const char *name;
-    double f;
-    const char *color;
-  };
-  const Fam fams[] = {{"FTF", k.ftf, "#7f8c8d"},
-                      {"BPFO", k.bpfo, "#2471a3"},
-                      {"BPFI", k.bpfi, "#c0392b"},
-                      {"2BSF", 2 * k.bsf, "#239b56"}};
   std::vector<PlotMarker> m;
-  for (const auto &f : fams)
-    for (int h = 1; h <= harmonics; ++h)
-      if (h * f.f <= fmax)
-        m.push_back({h * f.f, (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name, f.color});
+  for (const DefectLine &line : defect_lines())
+    if (line.fault_line)
+      for (int h = 1; h <= harmonics; ++h)
+        if (h * line.of(k) <= fmax)
+          m.push_back({h * line.of(k), harmonic_label(h, line, false), line.color});
   return m;
 }
 
@@ -54,8 +39,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<DefectFrequencies> kin;
   if (bc.geometry && bc.fr) kin = defect_frequencies(*bc.geometry, *bc.fr);
-  const long long harmonics = a.integer("--harmonics", 3);
-  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
+  const int harmonics = harmonics_option(a, 3);
   double fmax = a.number("--fmax", NAN);
   if (!std::isfinite(fmax))
     fmax = kin ? std::min(s.rate / 2, (harmonics + 0.5) * std::max(kin->bpfi, kin->bpfo) * 1.1)
@@ -67,12 +51,10 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
     Band band{0, s.rate / 2};
     std::string how = "whole band";
     if (a.has("--band")) {
-      const auto v = a.values("--band");
-      band = {parse_option_double("--band", v[0]), parse_option_double("--band", v[1])};
+      band = band_option(a);
       how = "band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
     } else if (!a.has("--no-kurtogram")) {
-      const double min_bw =
-          kin ? std::min(s.rate / 4, 1.1 * 5 * std::max(kin->bpfi, kin->bpfo)) : s.rate / 256;
+      const double min_bw = kin ? defect_band_width(*kin, 5, s.rate) : s.rate / 256;
       const Kurtogram kg = kurtogram(x, s.rate, 7, min_bw);
       band = {kg.best.lo, kg.best.hi};
       how = "kurtogram band " + format_number(band.lo) + "-" + format_number(band.hi) + " Hz";
@@ -96,7 +78,7 @@ Figure spectrum_figure(const Args &a, const Signal &s, const RunMetadata &meta, 
   ser.x = xo;
   ser.y = yo;
   fig.series.push_back(ser);
-  if (kin) fig.markers = defect_markers(*kin, static_cast<int>(harmonics), fmax);
+  if (kin) fig.markers = defect_markers(*kin, harmonics, fmax);
   const std::string unit = unit_of(a, s.name);
   fig.xlabel = "frequency (Hz)";
   fig.ylabel = std::string(scaling_name(sp.scaling)) + " of " + s.name +
@@ -117,103 +99,52 @@ Figure spectrogram_figure(const Args &a, const Signal &s, const RunMetadata &met
   const BearingChoice bc = bearing_choice(a, meta);
   std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
   if (!sa && bc.fr) sa = constant_shaft_angle(s, *bc.fr, bc.fr_source);
-  const long long harmonics = a.integer("--harmonics", 3);
-  if (harmonics < 0 || harmonics > 50) throw Error("option --harmonics expects 0..50");
-  const std::size_t n = s.size();
-  std::size_t seg = 64;  // default: about n/64 samples, a power of two in [64, 8192]
-  while (seg * 2 <= std::min<std::size_t>(8192, n / 64)) seg *= 2;
-  if (a.has("--segment")) {
-    const long long v = a.integer("--segment", 0);
-    if (v < 16 || static_cast<std::size_t>(v) > n)
-      throw Error("option --segment expects 16.." + std::to_string(n) + " samples");
-    seg = static_cast<std::size_t>(v);
-  }
-  if (seg > n) seg = n;
-  std::size_t hop = std::max<std::size_t>(1, seg / 4);
-  if ((n - seg) / hop + 1 > 400) hop = std::max<std::size_t>(1, (n - seg) / 399);
-  const std::size_t cols = (n - seg) / hop + 1;
-  SpectrumOptions so;
+  const int harmonics = harmonics_option(a, 3);
+  SpectrogramOptions so;
+  if (a.has("--segment"))
+    so.segment = static_cast<std::size_t>(
+        a.integer_in("--segment", 0, 16, static_cast<long long>(s.size()), "a sample count"));
   so.window = parse_window(a.get("--window"));
-  so.detrend = Detrend::Mean;
   std::optional<DefectFrequencies> orders;
   if (bc.geometry) orders = defect_frequencies(*bc.geometry, 1.0);
-  const double fr_max = sa ? sa->speed.max / (2 * 3.14159265358979323846) : 0;
-  double fmax = a.number("--fmax", NAN);
-  if (!std::isfinite(fmax))
-    fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *
-                                                   std::max(orders->bpfi, orders->bpfo))
-                        : s.rate / 2;
-  const double fmin = a.number("--fmin", 0);
+  const double fr_max = sa ? sa->speed.max / (2 * kPi) : 0;
+  so.fmax = a.number("--fmax", NAN);
+  if (!std::isfinite(so.fmax))
+    so.fmax = orders && sa ? std::min(s.rate / 2, (harmonics + 0.5) * 1.1 * fr_max *
+                                                      std::max(orders->bpfi, orders->bpfo))
+                           : s.rate / 2;
+  so.fmin = a.number("--fmin", 0);
+  const Spectrogram sg = spectrogram(s, so);
   Figure fig;
   PlotImage &im = fig.image;
-  std::vector<std::size_t> rows;  // first bin of each image row (bins grouped, max taken)
-  std::size_t group = 1;
-  double peak_db = -INFINITY;
-  std::vector<std::vector<double>> colvals;
-  std::vector<double> piece(seg);
-  for (std::size_t c = 0; c < cols; ++c) {
-    const std::size_t start = c * hop;
-    std::copy(s.x.begin() + static_cast<long>(start), s.x.begin() + static_cast<long>(start + seg),
-              piece.begin());
-    const Spectrum sp = spectrum(piece, s.rate, so);
-    if (c == 0) {
-      std::size_t inside = 0;
-      for (std::size_t k = 0; k < sp.bins(); ++k)
-        inside += sp.frequency(k) >= fmin && sp.frequency(k) <= fmax;
-      if (inside == 0) throw Error("plot: no frequency bin in [--fmin, --fmax]");
-      group = (inside + 599) / 600;
-      for (std::size_t k = 0; k < sp.bins(); ++k)
-        if (sp.frequency(k) >= fmin && sp.frequency(k) <= fmax) {
-          if ((rows.empty() || k >= rows.back() + group)) rows.push_back(k);
-        }
-      for (std::size_t k : rows) im.y.push_back(sp.frequency(k));
-      fig.xlabel = "time (s)";
-      fig.title = "Spectrogram of " + s.name + ", " + window_name(so.window) + " window, " +
-                  std::to_string(seg) + " samples (df " + format_number(sp.df, 4) + " Hz)" +
-                  (sa && orders ? ", defect frequencies at the speed from " + sa->source : "");
-    }
-    std::vector<double> v;
-    for (std::size_t k : rows) {
-      double m = 0;
-      for (std::size_t j = k; j < k + group && j < sp.bins(); ++j) m = std::max(m, sp.value[j]);
-      v.push_back(20 * std::log10(std::max(m, 1e-300)));
-      peak_db = std::max(peak_db, v.back());
-    }
-    colvals.push_back(v);
-    im.x.push_back(s.time(start) + 0.5 * static_cast<double>(seg) / s.rate);
-  }
-  im.z.resize(im.x.size() * im.y.size());
-  for (std::size_t c = 0; c < cols; ++c)
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      im.z[r * cols + c] = std::max(colvals[c][r], peak_db - 100);  // 100 dB of range
+  im.x = sg.t;
+  im.y = sg.f;
+  im.z = sg.db;
+  fig.xlabel = "time (s)";
+  fig.title = "Spectrogram of " + s.name + ", " + window_name(so.window) + " window, " +
+              std::to_string(sg.segment) + " samples (df " + format_number(sg.df, 4) + " Hz)" +
+              (sa && orders ? ", defect frequencies at the speed from " + sa->source : "");
   const std::string unit = unit_of(a, s.name);
   im.zlabel = "amplitude (dB re 1" + (unit.empty() ? std::string() : " " + unit) + ")";
   fig.ylabel = "frequency (Hz)";
   if (sa && orders) {
-    struct Fam {
-      const char *name;
-      double order;
-    };
-    const Fam fams[] = {{"FTF", orders->ftf},
-                        {"BPFO", orders->bpfo},
-                        {"BPFI", orders->bpfi},
-                        {"2BSF", 2 * orders->bsf}};
-    for (const auto &f : fams)
+    // the fault lines h x order x fr(t), fr the mean shaft frequency over each segment
+    const std::vector<double> fr = segment_shaft_hz(sg, sa->theta, s.rate);
+    for (const DefectLine &line : defect_lines()) {
+      if (!line.fault_line) continue;
       for (int h = 1; h <= harmonics; ++h) {
         PlotSeries ser;
-        ser.title = (h > 1 ? std::to_string(h) + "x" : std::string()) + f.name;
-        for (std::size_t c = 0; c < cols; ++c) {
-          const std::size_t i0 = c * hop, i1 = c * hop + seg - 1;
-          const double fr = (sa->theta[i1] - sa->theta[i0]) * s.rate /
-                            static_cast<double>(i1 - i0) / (2 * 3.14159265358979323846);
-          const double y = h * f.order * fr;
-          if (y >= fmin && y <= fmax) {
+        ser.title = harmonic_label(h, line, false);
+        for (std::size_t c = 0; c < sg.t.size(); ++c) {
+          const double y = h * line.of(*orders) * fr[c];
+          if (y >= so.fmin && y <= so.fmax) {
             ser.x.push_back(im.x[c]);
             ser.y.push_back(y);
           }
         }
         if (!ser.x.empty()) fig.series.push_back(ser);
       }
+    }
   }
   fig.xmin = im.x.front();
   fig.xmax = im.x.back();
@@ -261,7 +192,7 @@ Figure indicators_figure(const Args &a)
   Figure fig;
   fig.xlabel = t.names[xc];
   std::string ys;
-  for (const std::string &name : split_list(a.get("--y"))) {
+  for (const std::string &name : split_commas(a.get("--y"))) {
     const std::size_t yc = t.find(name);
     std::vector<std::size_t> order = defined_rows(t, yc, with_x, &undefined);
     if (undefined)
@@ -308,7 +239,7 @@ int run_plot(const std::vector<std::string> &argv)
   a.option("--fmax", "HZ",
            "highest frequency shown (default: a little above the 3rd "
            "harmonic of BPFI/BPFO when the bearing is known, else Nyquist)");
-  a.option("--harmonics", "N", "harmonics of each defect frequency marked", "3");
+  a.option("--harmonics", "N", "harmonics of each defect frequency marked (1..50)", "3");
   a.option("--band", "F1 F2", "envelope band (Hz) (default: the kurtogram's)", "", 2);
   a.flag("--no-kurtogram", "envelope of the whole band when no --band is given");
   a.option("--x", "COLUMN", "indicators: the swept parameter column");
@@ -323,20 +254,18 @@ int run_plot(const std::vector<std::string> &argv)
   a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
-  const std::string kind = a.get("--kind");
+  const std::string kind =
+      a.choice("--kind", {"signal", "spectrum", "envelope", "spectrogram", "indicators"});
   Figure fig;
   if (kind == "indicators") {
     fig = indicators_figure(a);
   } else if (kind == "spectrogram") {
     const RunMetadata meta = run_metadata(a);
     fig = spectrogram_figure(a, load_input(a, meta, 64), meta);
-  } else if (kind == "signal" || kind == "spectrum" || kind == "envelope") {
+  } else {  // signal, spectrum or envelope
     const RunMetadata meta = run_metadata(a);
     const Signal s = load_input(a, meta, kind == "signal" ? 2 : 64);
     fig = kind == "signal" ? signal_figure(a, s) : spectrum_figure(a, s, meta, kind == "envelope");
-  } else {
-    throw Error("option --kind expects signal|spectrum|envelope|spectrogram|indicators, got '" +
-                kind + "'");
   }
   if (a.has("--title")) fig.title = a.get("--title");
   const std::string size = a.get("--size");

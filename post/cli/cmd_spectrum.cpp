@@ -32,8 +32,7 @@ int run_spectrum(const std::vector<std::string> &argv)
   const MetaList sm = spectrum_meta(sp, so.detrend);
   m.insert(m.end(), sm.begin(), sm.end());
   Output out(a);
-  write_spectrum(out.stream(), out.format(), a, sp, m, unit_of(a, s.name), kin, "spectrum peaks",
-                 a.has("--bins"));
+  out.write(spectrum_result(a, sp, m, unit_of(a, s.name), kin, "spectrum peaks", a.has("--bins")));
   return 0;
 }
 

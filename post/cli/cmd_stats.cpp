@@ -11,7 +11,6 @@
 
 namespace ohmdem::post::cli {
 
-
 int run_stats(const std::vector<std::string> &argv)
 {
   Args a("stats", "[options] FILE...",
@@ -31,80 +30,65 @@ int run_stats(const std::vector<std::string> &argv)
   const std::string unit = unit_of(a, s.name);
   const bool remove_mean = a.has("--remove-mean");
 
-  // windows [i0, i1)
-  std::vector<std::pair<std::size_t, std::size_t>> windows;
-  if (a.has("--window-length")) {
-    const double len = a.number("--window-length");
-    const double step = a.has("--step") ? a.number("--step") : len;
-    if (!(len > 0) || !(step > 0)) throw Error("--window-length and --step must be > 0 s");
-    const auto wl = static_cast<std::size_t>(std::llround(len * s.rate));
-    const auto ws = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
-    if (wl < 2 || wl > s.size())
-      throw Error("--window-length " + format_number(len) + " s gives " + std::to_string(wl) +
+  const bool windowed = a.has("--window-length");
+  std::size_t length = s.size(), hop = s.size();
+  if (windowed) {
+    const double len = a.number_in("--window-length", NAN, Range::above(0), "a length", "s");
+    const double step = a.number_in("--step", len, Range::above(0), "a hop", "s");
+    length = static_cast<std::size_t>(std::llround(len * s.rate));
+    hop = std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(step * s.rate)));
+    if (length < 2 || length > s.size())
+      throw Error("--window-length " + format_number(len) + " s gives " + std::to_string(length) +
                   " samples; it must hold 2 to " + std::to_string(s.size()) + " samples");
-    for (std::size_t i0 = 0; i0 + wl <= s.size(); i0 += ws) windows.emplace_back(i0, i0 + wl);
-  } else {
-    windows.emplace_back(0, s.size());
   }
-
-  std::vector<Indicators> res;
-  std::vector<double> buf;
-  for (auto [i0, i1] : windows) {
-    buf.assign(s.x.begin() + static_cast<long>(i0), s.x.begin() + static_cast<long>(i1));
-    if (remove_mean) {
-      const double m = indicators(buf).mean;
-      for (double &v : buf) v -= m;
-    }
-    res.push_back(indicators(buf));
+  const std::vector<WindowIndicators> windows = sliding_indicators(s.x, length, hop, remove_mean);
+  Result r;
+  r.meta = s.meta;
+  r.meta.emplace_back("mean removed", remove_mean ? "yes" : "no");
+  r.meta.emplace_back("kurtosis", "Pearson (normal law = 3)");
+  // one row per window
+  r.table.columns = {"t_start_s", "t_end_s", "n"};
+  for (const auto &f : indicator_fields())
+    r.table.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    const WindowIndicators &win = windows[w];
+    std::vector<Cell> row{s.time(win.first), s.time(win.last - 1), win.ind.n};
+    for (const auto &f : indicator_fields()) row.emplace_back(win.ind.*f.value);
+    r.table.rows.push_back(row);
   }
-  MetaList meta_out = s.meta;
-  meta_out.emplace_back("mean removed", remove_mean ? "yes" : "no");
-  meta_out.emplace_back("kurtosis", "Pearson (normal law = 3)");
-
-  if (out.format() == OutputFormat::Json) {
-    auto one = [&](std::size_t w) {
-      Json o = Json::object();
-      o.set("t_start_s", s.time(windows[w].first));
-      o.set("t_end_s", s.time(windows[w].second - 1));
-      o.set("n", res[w].n);
-      for (const auto &f : indicator_fields()) o.set(f.key, res[w].*f.value);
-      return o;
-    };
-    Json j = windows.size() == 1 && !a.has("--window-length") ? one(0) : Json::object();
-    if (a.has("--window-length")) {
-      Json arr = Json::array();
-      for (std::size_t w = 0; w < windows.size(); ++w) arr.push_back(one(w));
-      j.set("windows", arr);
-    }
-    j.set("unit", unit);
-    j.set("mean_removed", remove_mean);
-    j.set("meta", meta_json(meta_out));
-    out.stream() << j.dump(2) << '\n';
-    return 0;
-  }
-
-  Report r;
-  r.meta = meta_out;
-  if (out.format() == OutputFormat::Table && !a.has("--window-length")) {
-    r.columns = {"indicator", with_unit("value", ""), "definition"};
+  // one window reads better as one indicator a line, with its definition
+  if (!windowed) {
+    Table t;
+    t.columns = {"indicator", "value", "definition"};
     for (const auto &f : indicator_fields())
-      r.rows.push_back({std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
-                        res[0].*f.value, f.definition});
-    r.rows.push_back(
-        {"samples", res[0].n,
+      t.rows.push_back(
+          {std::string(f.key) + (f.dimensionless || unit.empty() ? "" : " (" + unit + ")"),
+           windows[0].ind.*f.value, f.definition});
+    t.rows.push_back(
+        {"samples", windows[0].ind.n,
          "from " + format_number(s.time(0)) + " to " + format_number(s.time(s.size() - 1)) + " s"});
-    r.table_digits = 10;
-  } else {
-    r.columns = {"t_start_s", "t_end_s", "n"};
-    for (const auto &f : indicator_fields())
-      r.columns.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
-    for (std::size_t w = 0; w < windows.size(); ++w) {
-      std::vector<Cell> row{s.time(windows[w].first), s.time(windows[w].second - 1), res[w].n};
-      for (const auto &f : indicator_fields()) row.emplace_back(res[w].*f.value);
-      r.rows.push_back(row);
-    }
+    t.table_digits = 10;
+    r.text.push_back({"", t});
   }
-  write_report(out.stream(), r, out.format());
+  // JSON: the window's indicators as fields, or the windows as an array
+  auto window_json = [&](std::size_t w) {
+    Json o = Json::object();
+    o.set("t_start_s", s.time(windows[w].first));
+    o.set("t_end_s", s.time(windows[w].last - 1));
+    o.set("n", windows[w].ind.n);
+    for (const auto &f : indicator_fields()) o.set(f.key, windows[w].ind.*f.value);
+    return o;
+  };
+  r.json = windowed ? Json::object() : window_json(0);
+  if (windowed) {
+    Json arr = Json::array();
+    for (std::size_t w = 0; w < windows.size(); ++w) arr.push_back(window_json(w));
+    r.json.set("windows", arr);
+  }
+  r.json.set("unit", unit);
+  r.json.set("mean_removed", remove_mean);
+  r.json.set("meta", meta_json(r.meta));
+  out.write(r);
   return 0;
 }
 

@@ -4,16 +4,13 @@
 #include <cmath>
 #include <iostream>
 
+#include "../constants.h"
 #include "../error.h"
 #include "../read_log.h"
 #include "../read_mat.h"
 #include "../text_scan.h"
 
 namespace ohmdem::post::cli {
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 void add_input_options(Args &a, const std::string &rate_option)
 {
@@ -56,11 +53,8 @@ InputOptions input_options(const Args &a, const std::string &rate_option)
   }
   o.rate_variable = a.get("--rate-variable");
   o.time_column = a.get("--time-column");
-  o.rate = a.number(rate_option, 0);
-  o.dt = a.number("--dt", 0);
-  if (a.has(rate_option) && !(o.rate > 0))
-    throw Error("option " + rate_option + " expects a rate > 0 Hz");
-  if (a.has("--dt") && !(o.dt > 0)) throw Error("option --dt expects a step > 0 s");
+  o.rate = a.has(rate_option) ? a.number_in(rate_option, 0, Range::above(0), "a rate", "Hz") : 0;
+  o.dt = a.has("--dt") ? a.number_in("--dt", 0, Range::above(0), "a step", "s") : 0;
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
     if (a.get("--log") == "-" &&
@@ -170,9 +164,7 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
           "--bearing preset to modify");
     if (!have) g.name = "custom";
     if (a.has("--nb")) {
-      const long long nb = a.integer("--nb", 0);
-      if (nb < 1 || nb > 1000) throw Error("option --nb expects a ball count in 1..1000");
-      g.nb = static_cast<int>(nb);
+      g.nb = static_cast<int>(a.integer_in("--nb", 0, 1, 1000, "a ball count"));
     }
     if (a.has("--db")) g.db = a.number("--db");
     if (a.has("--dp")) g.dp = a.number("--dp");
@@ -209,6 +201,35 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     c.fr_source = meta.path;
   }
   return c;
+}
+
+int harmonics_option(const Args &a, long long fallback)
+{
+  return static_cast<int>(a.integer_in("--harmonics", fallback, 1, kMaxHarmonics));
+}
+
+int levels_option(const Args &a)
+{
+  return static_cast<int>(a.integer_in("--levels", 7, 0, 16));
+}
+
+std::size_t peaks_option(const Args &a)
+{
+  return static_cast<std::size_t>(a.integer_in("--peaks", 10, 0, 100000));
+}
+
+double tolerance_option(const Args &a)
+{
+  return a.number_in("--tolerance", 0.02, Range::open(0, 0.2), "a fraction");
+}
+
+Band band_option(const Args &a)
+{
+  const auto v = a.values("--band");
+  const Band b{parse_option_double("--band", v.at(0)), parse_option_double("--band", v.at(1))};
+  if (!(b.hi > b.lo) || b.lo < 0)
+    throw Error("option --band expects 0 <= F1 < F2 (Hz), got " + v[0] + " " + v[1]);
+  return b;
 }
 
 std::string unit_of(const Args &a, const std::string &q)

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "../bearing.h"
+#include "../envelope.h"
 #include "../load_signal.h"
 #include "../report.h"
 #include "../run_metadata.h"
@@ -32,6 +33,7 @@ class Output {
   explicit Output(const Args &a);  // --output FILE or stdout; --format
   std::ostream &stream() { return file_ ? *file_ : *out_; }
   OutputFormat format() const { return format_; }
+  void write(const Result &r) { write_result(stream(), r, format_); }
 
  private:
   std::unique_ptr<std::ofstream> file_;
@@ -48,6 +50,14 @@ struct BearingChoice {
 // Command line first (--bearing NAME from the catalog --catalog DIR, --nb/--db/--dp/--beta,
 // --rpm/--shaft-hz/--fr/--omega), then the run's metadata (its nb, db, dp: what ran).
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
+
+// Options several commands share, one range each (doc/ohmdem-post.md, "Common ranges").
+constexpr long long kMaxHarmonics = 50;  // the diagnosis comb's limit; labels and plots agree
+int harmonics_option(const Args &a, long long fallback);  // --harmonics N, 1..kMaxHarmonics
+int levels_option(const Args &a);                         // --levels N (kurtogram), 0..16
+std::size_t peaks_option(const Args &a);                  // --peaks N, 0..100000
+double tolerance_option(const Args &a);                   // --tolerance F, (0, 0.2), 0.02
+Band band_option(const Args &a);                          // --band F1 F2, 0 <= F1 < F2 (Hz)
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.
 std::string unit_of(const Args &a, const std::string &quantity);

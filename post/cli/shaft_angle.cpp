@@ -10,8 +10,6 @@ namespace ohmdem::post::cli {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The column `name` over the samples of `s` (same options, window from s's time stamps).
 Signal companion_column(const Args &a, const RunMetadata &meta, const Signal &s,
                         const std::string &name)
@@ -82,9 +80,7 @@ std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata 
 ShaftAngle constant_shaft_angle(const Signal &s, double fr, const std::string &source)
 {
   ShaftAngle sa;
-  sa.theta.resize(s.size());
-  for (std::size_t i = 0; i < s.size(); ++i)
-    sa.theta[i] = 2 * kPi * fr * static_cast<double>(i) / s.rate;
+  sa.theta = constant_speed_angle(s.size(), s.rate, fr);
   sa.source = "constant speed " + format_number(fr, 8) + " Hz (" + source + ")";
   sa.speed = speed_summary(sa.theta, s.rate);
   return sa;

@@ -1,9 +1,11 @@
 #include "spectrum_options.h"
 
-#include <cmath>
+#include <climits>
 #include <limits>
 
+#include "../defect_lines.h"
 #include "../error.h"
+#include "../fault_bands.h"
 #include "common.h"
 
 namespace ohmdem::post::cli {
@@ -33,22 +35,15 @@ SpectrumOptions spectrum_options(const Args &a, std::size_t n, double rate)
   o.detrend = parse_detrend(a.get("--detrend"));
   o.scaling = parse_scaling(a.get("--scale"));
   if (a.has("--segment")) {
-    const long long seg = a.integer("--segment", 0);
-    if (seg < 4) throw Error("option --segment expects at least 4 samples");
+    const long long seg = a.integer_in("--segment", 0, 4, LLONG_MAX, "a sample count");
     o.segment = static_cast<std::size_t>(seg);
     if (o.segment > n)
       throw Error("option --segment " + std::to_string(seg) + " exceeds the signal (" +
                   std::to_string(n) + " samples)");
   }
   o.overlap = a.number("--overlap", 0.5);
-  const long long pad = a.integer("--pad", 1);
-  if (pad < 1 || pad > 64) throw Error("option --pad expects an integer 1..64");
-  o.pad = static_cast<std::size_t>(pad);
-  if (a.has("--nfft")) {
-    const long long nfft = a.integer("--nfft", 0);
-    if (nfft < 4) throw Error("option --nfft expects an integer >= 4");
-    o.nfft = static_cast<std::size_t>(nfft);
-  }
+  o.pad = static_cast<std::size_t>(a.integer_in("--pad", 1, 1, 64));
+  if (a.has("--nfft")) o.nfft = static_cast<std::size_t>(a.integer_in("--nfft", 0, 4));
   return o;
 }
 
@@ -61,9 +56,9 @@ void add_peak_options(Args &a)
   a.flag("--bins", "print every bin in [--fmin, --fmax] instead of the peaks");
   a.option("--fmin", "HZ", "lowest frequency reported", "0");
   a.option("--fmax", "HZ", "highest frequency reported (default: Nyquist)");
-  a.option("--tolerance", "F", "relative tolerance for labelling peaks with defect frequencies",
-           "0.02");
-  a.option("--harmonics", "N", "harmonics of each defect frequency used for labels", "5");
+  a.option("--tolerance", "F",
+           "relative tolerance for labelling peaks with defect frequencies, in (0, 0.2)", "0.02");
+  a.option("--harmonics", "N", "harmonics of each defect frequency used for labels (1..50)", "5");
   a.flag("--fault-bands",
          "instead of the peaks, a fault-band table: per harmonic of fr, FTF, "
          "BPFO, BPFI, BSF, 2BSF the band +-tolerance, its peak and its power");
@@ -72,9 +67,7 @@ void add_peak_options(Args &a)
 PeakOptions peak_options(const Args &a)
 {
   PeakOptions p;
-  const long long n = a.integer("--peaks", 10);
-  if (n < 0 || n > 100000) throw Error("option --peaks expects 0..100000");
-  p.max_peaks = static_cast<std::size_t>(n);
+  p.max_peaks = peaks_option(a);
   p.min_prominence_db = a.number("--min-prominence", 6);
   p.interpolate = !a.has("--no-interpolate");
   p.fmin = a.number("--fmin", 0);
@@ -98,134 +91,81 @@ MetaList spectrum_meta(const Spectrum &s, Detrend d)
           {"ENBW (Hz)", format_number(s.enbw_hz)}};
 }
 
-std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tol)
-{
-  struct Fam {
-    const char *name;
-    double f;
-  };
-  const Fam fams[] = {{"fr", k.fr},     {"FTF", k.ftf}, {"BPFO", k.bpfo},
-                      {"BPFI", k.bpfi}, {"BSF", k.bsf}, {"2BSF", 2 * k.bsf}};
-  std::string best;
-  double best_err = tol;
-  for (const auto &fam : fams)
-    for (int h = 1; h <= harmonics; ++h) {
-      const double err = std::fabs(f - h * fam.f) / (h * fam.f);
-      if (err <= best_err) {
-        best_err = err;
-        best = std::to_string(h) + "x" + fam.name;
-      }
-    }
-  return best;
-}
+namespace {
 
-void write_fault_bands(std::ostream &out, OutputFormat fmt, const Spectrum &s, MetaList meta,
-                       const std::string &unit, const DefectFrequencies &k, int harmonics,
-                       double tol)
+Result fault_band_result(const Spectrum &s, MetaList meta, const std::string &unit,
+                         const DefectFrequencies &k, int harmonics, double tol)
 {
-  struct Fam {
-    const char *name;
-    double f;
-  };
-  const Fam fams[] = {{"fr", k.fr},     {"FTF", k.ftf}, {"BPFO", k.bpfo},
-                      {"BPFI", k.bpfi}, {"BSF", k.bsf}, {"2BSF", 2 * k.bsf}};
-  // a windowed sine spreads its power A^2/2 over ENBW/df bins of the amplitude spectrum
-  const double enbw_bins = s.enbw_hz / s.df;
-  Report r;
+  Result r;
   r.meta = std::move(meta);
   r.meta.emplace_back("fault bands", "harmonic h x f, +-" + format_number(100 * tol) +
                                          " % (at least one bin); band power = sum of A^2/2 "
                                          "over the band / ENBW in bins");
-  r.columns = {"label",
-               "f_low_Hz",
-               "f_high_Hz",
-               "center_Hz",
-               with_unit("peak_amplitude", unit),
-               "peak_frequency_Hz",
-               with_unit("band_power", unit.empty() ? "" : unit + "^2")};
-  for (const auto &fam : fams)
-    for (int h = 1; h <= harmonics; ++h) {
-      const double c = h * fam.f, half = std::max(tol * c, s.df);
-      const double lo = c - half, hi = c + half;
-      if (hi >= s.rate / 2) continue;
-      std::size_t best = 0;
-      double power = 0;
-      for (std::size_t b = static_cast<std::size_t>(std::max(0.0, std::ceil(lo / s.df)));
-           b < s.bins() && s.frequency(b) <= hi; ++b) {
-        const double amp = amplitude_of(s, b);
-        power += amp * amp / 2;
-        if (best == 0 || amp > amplitude_of(s, best)) best = b;
-      }
-      if (best == 0) continue;
-      const Peak p = refine_peak(s, best);
-      r.rows.push_back({std::to_string(h) + "x" + fam.name, lo, hi, c,
-                        s.scaling == Scaling::Amplitude ? p.value : amplitude_of(s, best),
-                        p.frequency, power / enbw_bins});
-    }
-  write_report(out, r, fmt);
+  r.table.columns = {"label",
+                     "f_low_Hz",
+                     "f_high_Hz",
+                     "center_Hz",
+                     with_unit("peak_amplitude", unit),
+                     "peak_frequency_Hz",
+                     with_unit("band_power", unit.empty() ? "" : unit + "^2")};
+  for (const FaultBand &b : fault_bands(s, k, harmonics, tol))
+    r.table.rows.push_back(
+        {b.label, b.lo, b.hi, b.center, b.peak_amplitude, b.peak_frequency, b.power});
+  return r;
 }
 
-void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Spectrum &s,
-                    MetaList meta, const std::string &unit,
-                    const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
+}  // namespace
+
+Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const std::string &unit,
+                       const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
 {
   const PeakOptions po = peak_options(a);
-  const double tol = a.number("--tolerance", 0.02);
-  const long long harmonics = a.integer("--harmonics", 5);
-  if (harmonics < 1 || harmonics > 100) throw Error("option --harmonics expects 1..100");
+  const double tol = tolerance_option(a);
+  const int harmonics = harmonics_option(a, 5);
   const std::string vunit = s.scaling == Scaling::Amplitude ? unit
                             : unit.empty() ? std::string(s.scaling == Scaling::Psd ? "per_Hz" : "")
                                            : unit + scaling_unit(s.scaling);
   const std::string vname = with_unit(scaling_name(s.scaling), vunit);
   if (bins) {
-    Report r;
+    Result r;
     r.meta = std::move(meta);
-    r.columns = {"frequency_Hz", vname};
+    r.table.columns = {"frequency_Hz", vname};
+    r.table.table_digits = 8;
+    Json fs = Json::array(), vs = Json::array();  // JSON: the two columns as arrays
     for (std::size_t k = 0; k < s.bins(); ++k) {
       const double f = s.frequency(k);
       if (f < po.fmin || f > po.fmax) continue;
-      r.rows.push_back({f, s.value[k]});
+      r.table.rows.push_back({f, s.value[k]});
+      fs.push_back(f);
+      vs.push_back(s.value[k]);
     }
-    if (fmt == OutputFormat::Json) {
-      Json j = Json::object();
-      j.set("meta", meta_json(r.meta));
-      Json fs = Json::array(), vs = Json::array();
-      for (const auto &row : r.rows) {
-        fs.push_back(row[0].number);
-        vs.push_back(row[1].number);
-      }
-      j.set("frequency_hz", fs);
-      j.set(vname, vs);
-      out << j.dump(2) << '\n';
-    } else {
-      r.table_digits = 8;
-      write_report(out, r, fmt);
-    }
-    return;
+    r.json = Json::object();
+    r.json.set("meta", meta_json(r.meta));
+    r.json.set("frequency_hz", fs);
+    r.json.set(vname, vs);
+    return r;
   }
   if (a.has("--fault-bands")) {
     if (!kin)
       throw Error("--fault-bands needs the bearing and the shaft speed (options or run.json)");
-    write_fault_bands(out, fmt, s, std::move(meta), unit, *kin, static_cast<int>(harmonics), tol);
-    return;
+    return fault_band_result(s, std::move(meta), unit, *kin, harmonics, tol);
   }
-  const std::vector<Peak> peaks = find_peaks(s, po);
-  Report r;
+  Result r;
   r.meta = std::move(meta);
   r.meta.emplace_back("peaks", std::string(what) + ", largest first, prominence >= " +
                                    format_number(po.min_prominence_db) +
                                    " dB over the local "
                                    "median, " +
                                    (po.interpolate ? "interpolated" : "bin values"));
-  r.columns = {"rank", "frequency_Hz", vname, "prominence_dB"};
-  if (kin) r.columns.push_back("label");
+  r.table.columns = {"rank", "frequency_Hz", vname, "prominence_dB"};
+  if (kin) r.table.columns.push_back("label");
   int rank = 0;
-  for (const Peak &p : peaks) {
+  for (const Peak &p : find_peaks(s, po)) {
     std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-    if (kin) row.emplace_back(label_frequency(p.frequency, *kin, static_cast<int>(harmonics), tol));
-    r.rows.push_back(row);
+    if (kin) row.emplace_back(label_frequency(p.frequency, *kin, harmonics, tol));
+    r.table.rows.push_back(row);
   }
-  write_report(out, r, fmt);
+  return r;
 }
 
 }  // namespace ohmdem::post::cli

@@ -20,13 +20,9 @@ void add_peak_options(Args &a);
 PeakOptions peak_options(const Args &a);
 MetaList spectrum_meta(const Spectrum &s, Detrend d);
 
-// Label of the nearest defect-family harmonic within `tolerance` (relative), "" if none.
-std::string label_frequency(double f, const DefectFrequencies &k, int harmonics, double tolerance);
-
-// Writes peaks (default) or every bin in [fmin, fmax] (--bins) in the chosen format.
-void write_spectrum(std::ostream &out, OutputFormat fmt, const Args &a, const Spectrum &s,
-                    MetaList meta, const std::string &unit,
-                    const std::optional<DefectFrequencies> &kin, const char *what, bool bins);
+// The peaks (default), every bin in [fmin, fmax] (`bins`) or the fault bands (--fault-bands).
+Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const std::string &unit,
+                       const std::optional<DefectFrequencies> &kin, const char *what, bool bins);
 
 }  // namespace ohmdem::post::cli
 

@@ -128,6 +128,20 @@ std::vector<std::string> data_lines(const std::string &text)
   return out;
 }
 
+TEST(CollectLib, ParameterKeysInCaseInsensitiveOrderAndVaryingOnes)
+{
+  const RunParameters one = {{"load", Json("fixed")}, {"F", Json(2.0)}, {"area", Json(1.0)}};
+  const RunParameters two = {{"area", Json(1.0)}, {"load", Json("free")}, {"Z", Json(true)}};
+  EXPECT_EQ(parameter_keys({&one, &two}, false),
+            (std::vector<std::string>{"area", "F", "load", "Z"}));
+  // area is the same in both; F and Z are missing in one; load differs
+  EXPECT_EQ(parameter_keys({&one, &two}, true), (std::vector<std::string>{"F", "load", "Z"}));
+  EXPECT_EQ(parameter_keys({&one}, true), (std::vector<std::string>{}));
+  ASSERT_NE(find_parameter(two, "Z"), nullptr);
+  EXPECT_TRUE(find_parameter(two, "Z")->boolean());
+  EXPECT_EQ(find_parameter(two, "F"), nullptr);
+}
+
 TEST(CollectLib, NaturalOrder)
 {
   std::vector<std::string> v = {"size_10", "size_2", "size_1.5", "a", "size_02", "B", "size_1"};

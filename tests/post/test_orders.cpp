@@ -118,6 +118,16 @@ TEST(Orders, WithoutResamplingTheRunUpSmearsTheLine)
   EXPECT_LT(top, 0.35);  // versus 1.0 for the tracked line
 }
 
+TEST(Orders, ConstantSpeedAngleTurnsOnceEveryPeriod)
+{
+  // 12.5 rev/s at 1 kHz: one revolution (2 pi) every 80 samples
+  const std::vector<double> theta = constant_speed_angle(801, 1000, 12.5);
+  ASSERT_EQ(theta.size(), 801u);
+  EXPECT_EQ(theta[0], 0);
+  EXPECT_NEAR(theta[80], 2 * kPi, 1e-12);
+  EXPECT_NEAR(theta[800], 20 * kPi, 1e-11);
+}
+
 TEST(Orders, AngleFromSpeedIsTheTrapezoidIntegral)
 {
   const Record rec = run_up();

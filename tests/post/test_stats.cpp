@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "error.h"
 #include "json.h"
 #include "read_table.h"
 #include "stats.h"
@@ -121,6 +122,31 @@ TEST(Stats, NormalNoiseHasPearsonKurtosisNearThree)
   const Indicators r = indicators(t.columns[0]);
   EXPECT_NEAR(r.kurtosis, 3.0, 0.4);
   EXPECT_NEAR(r.skewness, 0.0, 0.2);
+}
+
+TEST(Stats, SlidingWindowsOfConsecutiveIntegers)
+{
+  // 0..9, 4 samples every 3: [0,4) [3,7) [6,10), means 1.5, 4.5, 7.5; four consecutive
+  // integers have the population standard deviation sqrt(1.25)
+  std::vector<double> x(10);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i);
+  const auto w = sliding_indicators(x, 4, 3, false);
+  ASSERT_EQ(w.size(), 3u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(w[k].first, 3 * k);
+    EXPECT_EQ(w[k].last, 3 * k + 4);
+    EXPECT_EQ(w[k].ind.n, 4u);
+    EXPECT_DOUBLE_EQ(w[k].ind.mean, 1.5 + 3 * k);
+    EXPECT_NEAR(w[k].ind.std, std::sqrt(1.25), 1e-15);
+  }
+  const auto centred = sliding_indicators(x, 4, 3, true);
+  for (const auto &c : centred) {
+    EXPECT_NEAR(c.ind.mean, 0, 1e-15);
+    EXPECT_NEAR(c.ind.rms, std::sqrt(1.25), 1e-15);
+  }
+  EXPECT_EQ(sliding_indicators(x, 10, 1, false).size(), 1u);
+  EXPECT_THROW(sliding_indicators(x, 11, 1, false), Error);
+  EXPECT_THROW(sliding_indicators(x, 4, 0, false), Error);
 }
 
 }  // namespace
