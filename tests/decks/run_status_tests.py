@@ -118,9 +118,9 @@ def test_failed(a, work):
         names = open(path).readline().lstrip("#").split()
         data = np.loadtxt(path, ndmin=2).reshape(-1, len(names))
         rows = np.concatenate([[0.0], data[:, 0]])  # the start, then the rows written
-        r = names.index("R")  # R = inf is physical (no contact), NaN never
-        garbage = int(np.sum(~np.isfinite(np.delete(data, r, axis=1)))) + \
-            int(np.sum(np.isnan(data[:, r])))
+        iR = names.index("R")  # R = inf is physical (no contact), NaN never
+        garbage = int(np.sum(~np.isfinite(np.delete(data, iR, axis=1)))) + \
+            int(np.sum(np.isnan(data[:, iR])))
         check(r.returncode == 1, f"failed {var}: exit status {r.returncode} (1)")
         check("ran away" in log and cause in log,
               f"failed {var}: the run stops saying the contacts ran away and '{cause}'")
