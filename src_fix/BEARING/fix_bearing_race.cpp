@@ -24,11 +24,13 @@
 #include "fix_property_atom.h"
 #include "force.h"
 #include "group.h"
+#include "input.h"
 #include "modify.h"
 #include "support/global_restart.h"
 #include "support/material_table.h"
 #include "support/require_si.h"
 #include "update.h"
+#include "variable.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -133,8 +135,59 @@ void FixBearingRace::build_model()
   }
 }
 
+// omega v_NAME / force v_NAME: the variables must exist and be equal-style.
+void FixBearingRace::find_variables()
+{
+  auto find = [&](const std::string &name, const char *kw) {
+    if (name.empty()) return -1;
+    const int i = input->variable->find(const_cast<char *>(name.c_str()));
+    if (i < 0 || !input->variable->equalstyle(i)) {
+      const std::string msg = std::string("keyword '") + kw + "' expects v_NAME of an " +
+                              "equal-style variable, got 'v_" + name + "' (" +
+                              (i < 0 ? "no such variable" : "not equal-style") + ")";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    return i;
+  };
+  omega_ivar_ = find(omega_var_, "omega");
+  force_ivar_ = find(force_var_, "force");
+}
+
+// The values of this step (the variables may use time, step or other outputs).
+void FixBearingRace::evaluate_variables()
+{
+  if (omega_ivar_ < 0 && force_ivar_ < 0) return;
+  modify->clearstep_compute();
+  if (omega_ivar_ >= 0) {
+    omega_now_ = input->variable->compute_equal(omega_ivar_);
+    if (!std::isfinite(omega_now_)) {
+      const std::string msg = "variable '" + omega_var_ + "' of keyword 'omega' gave " +
+                              std::to_string(omega_now_) + " at step " +
+                              std::to_string(update->ntimestep) + " (a finite speed, rad/s)";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  }
+  if (force_ivar_ >= 0) {
+    const double F = input->variable->compute_equal(force_ivar_);
+    if (!(F >= 0.0) || !std::isfinite(F)) {
+      const std::string msg = "variable '" + force_var_ + "' of keyword 'force' gave " +
+                              std::to_string(F) + " at step " + std::to_string(update->ntimestep) +
+                              " (a finite load >= 0, N)";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    load_force_ = F;
+    if (load_ == Load::Radial) {
+      load_fx_ = load_force_ * dir_ux_;
+      load_fy_ = load_force_ * dir_uy_;
+    }
+  }
+  modify->addstep_compute(update->ntimestep + 1);
+}
+
 void FixBearingRace::setup(int vflag)
 {
+  find_variables();
+  evaluate_variables();
   build_model();
   if (restored_) check_restart_geometry();
   if (reapply_restored_forces(FX, FY, TZ)) return;
@@ -143,6 +196,7 @@ void FixBearingRace::setup(int vflag)
 
 double FixBearingRace::target_omega(double t) const
 {
+  if (omega_ivar_ >= 0) return omega_now_;
   if (ramp_ > 0.0 && t < ramp_) return omega_start_ + (omega_ - omega_start_) * t / ramp_;
   return omega_;
 }
@@ -191,6 +245,7 @@ void FixBearingRace::ring_acceleration(double &ax, double &ay) const
 void FixBearingRace::initial_integrate(int)
 {
   const double dt = update->dt;
+  evaluate_variables();
   ring_half_kick(dt);
   angle_ += dt * target_omega(time_ + 0.5 * dt);
   u_ += dt * u_dot_;

@@ -76,6 +76,12 @@ class FixBearingRace : public FixBearingBody {
   int race_type_ = 0;
   double omega_ = 0, ramp_ = 0;
   double omega_start_ = 0;  // the ramp goes from omega_start_ to omega_ (run-up or coast-down)
+  // omega v_NAME / force v_NAME: equal-style variables evaluated at the start of each step
+  std::string omega_var_, force_var_;
+  int omega_ivar_ = -1, force_ivar_ = -1;
+  double omega_now_ = 0;  // the speed variable's value of this step
+  void find_variables();
+  void evaluate_variables();
   Load load_ = Load::None;
   double load_force_ = 0;             // force / settle: isotropic F (N)
   double load_fx_ = 0, load_fy_ = 0;  // radial load vector (N)

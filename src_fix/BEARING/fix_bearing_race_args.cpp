@@ -4,6 +4,7 @@
 ------------------------------------------------------------------------- */
 
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "BEARING/fix_bearing_race.h"
@@ -42,7 +43,10 @@ void FixBearingRace::parse(int narg, char **arg)
       cx_ = axis_x_ = a.number(kw, "two coordinates x y (m)");
       cy_ = axis_y_ = a.number(kw, "two coordinates x y (m)");
     } else if (kw == "omega") {
-      omega_ = a.number(kw, "the ring angular speed about z (rad/s)");
+      if (std::strncmp(a.peek(), "v_", 2) == 0)
+        omega_var_ = a.word(kw, "v_NAME") + 2;  // an equal-style variable, each step
+      else
+        omega_ = a.number(kw, "the ring angular speed about z (rad/s), or v_NAME");
     } else if (kw == "ramp") {
       ramp_ = a.non_negative(kw, "the duration of the linear speed ramp, a time >= 0 (s)");
     } else if (kw == "omega_start") {
@@ -69,7 +73,10 @@ void FixBearingRace::parse(int narg, char **arg)
         have_force = true;
       }
     } else if (kw == "force") {
-      load_force_ = a.positive(kw, "the load magnitude F > 0 (N)");
+      if (std::strncmp(a.peek(), "v_", 2) == 0)
+        force_var_ = a.word(kw, "v_NAME") + 2;  // an equal-style variable, each step
+      else
+        load_force_ = a.positive(kw, "the load magnitude F > 0 (N), or v_NAME");
       have_force = true;
     } else if (kw == "settle") {
       settle_time_ = a.positive(kw, "the settling time T > 0 (s)");
