@@ -1,6 +1,7 @@
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/race: its arguments (the keywords, what each load mode
-   needs, the load vector). The step is in fix_bearing_race.cpp.
+   needs, the load vector) and the variables omega/force may name. The step is in
+   fix_bearing_race.cpp, the checks that stop a run in fix_bearing_race_checks.cpp.
 ------------------------------------------------------------------------- */
 
 #include <cmath>
@@ -10,7 +11,11 @@
 #include "BEARING/fix_bearing_race.h"
 #include "atom.h"
 #include "error.h"
+#include "input.h"
+#include "modify.h"
 #include "support/args.h"
+#include "update.h"
+#include "variable.h"
 
 using namespace LAMMPS_NS;
 
@@ -133,4 +138,53 @@ void FixBearingRace::check_load(ohmdem::StyleArgs &a, bool have_force, bool have
   if (dynamic && ring_mass_ <= 0.0)
     a.fail("mass", "a positive ring mass (kg): required by load force, fixed settle and radial",
            "nothing");
+}
+
+// omega v_NAME / force v_NAME: the variables must exist and be equal-style.
+void FixBearingRace::find_variables()
+{
+  auto find = [&](const std::string &name, const char *kw) {
+    if (name.empty()) return -1;
+    const int i = input->variable->find(const_cast<char *>(name.c_str()));
+    if (i < 0 || !input->variable->equalstyle(i)) {
+      const std::string msg = std::string("keyword '") + kw + "' expects v_NAME of an " +
+                              "equal-style variable, got 'v_" + name + "' (" +
+                              (i < 0 ? "no such variable" : "not equal-style") + ")";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    return i;
+  };
+  omega_ivar_ = find(omega_var_, "omega");
+  force_ivar_ = find(force_var_, "force");
+}
+
+// The values of this step (the variables may use time, step or other outputs).
+void FixBearingRace::evaluate_variables()
+{
+  if (omega_ivar_ < 0 && force_ivar_ < 0) return;
+  modify->clearstep_compute();
+  if (omega_ivar_ >= 0) {
+    omega_now_ = input->variable->compute_equal(omega_ivar_);
+    if (!std::isfinite(omega_now_)) {
+      const std::string msg = "variable '" + omega_var_ + "' of keyword 'omega' gave " +
+                              std::to_string(omega_now_) + " at step " +
+                              std::to_string(update->ntimestep) + " (a finite speed, rad/s)";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+  }
+  if (force_ivar_ >= 0) {
+    const double F = input->variable->compute_equal(force_ivar_);
+    if (!(F >= 0.0) || !std::isfinite(F)) {
+      const std::string msg = "variable '" + force_var_ + "' of keyword 'force' gave " +
+                              std::to_string(F) + " at step " + std::to_string(update->ntimestep) +
+                              " (a finite load >= 0, N)";
+      error->fix_error(FLERR, this, msg.c_str());
+    }
+    load_force_ = F;
+    if (load_ == Load::Radial) {
+      load_fx_ = load_force_ * dir_ux_;
+      load_fy_ = load_force_ * dir_uy_;
+    }
+  }
+  modify->addstep_compute(update->ntimestep + 1);
 }

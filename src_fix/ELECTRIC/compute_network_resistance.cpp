@@ -1,7 +1,8 @@
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance. The contacts come from ELECTRIC/contact_set.*,
    conductances from electric/, the solve from network/;
-   this file parses, gathers the network from all processes and reports.
+   this file parses, gathers the network from all processes and reports; the netlist and
+   VTK exports are in compute_network_resistance_exports.cpp.
 ------------------------------------------------------------------------- */
 
 #include "ELECTRIC/compute_network_resistance.h"
@@ -181,25 +182,6 @@ void ComputeNetworkResistance::init()
   network_->set_options(opt);
   evaluated_step_ = -1;
   check_export_files();
-}
-
-// The netlist and VTK files are written by process 0 during the run; a path that cannot be
-// written stops the run here, on every process alike, with the message in the log (an error
-// raised on one process only aborts MPI before the log is written).
-void ComputeNetworkResistance::check_export_files()
-{
-  for (const auto &[kw, path] :
-       {std::pair<const char *, const std::string &>{"netlist", netlist_}, {"vtk", vtk_}}) {
-    if (path.empty()) continue;
-    int ok = 1;
-    if (comm->me == 0) ok = std::ofstream(path, std::ios::app) ? 1 : 0;
-    MPI_Bcast(&ok, 1, MPI_INT, 0, world);
-    if (!ok) {
-      const std::string msg = std::string("compute network/resistance: keyword '") + kw +
-                              "': cannot open '" + path + "' for writing";
-      error->all(FLERR, msg.c_str());
-    }
-  }
 }
 
 void ComputeNetworkResistance::evaluate()
@@ -415,34 +397,6 @@ void ComputeNetworkResistance::build_and_solve()
     vector_atom[i] = n ? sum / n : 0.0;
   }
   if (comm->me == 0) write_exports(built.drawn);
-}
-
-// The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only).
-void ComputeNetworkResistance::write_exports(const std::vector<ohmdem::VtkEdge> &drawn)
-{
-  const ohmdem::ConductionNetwork &net = *network_;
-  if (!netlist_.empty()) {
-    std::ofstream os(netlist_);
-    if (!os) {
-      const std::string msg = "compute network/resistance: keyword 'netlist': cannot open '" +
-                              netlist_ + "' for writing";
-      error->one(FLERR, msg.c_str());
-    }
-    ohmdem::write_spice_netlist(os, net, current_);
-  }
-  if (!vtk_.empty()) {
-    std::ofstream os(vtk_);
-    if (!os) {
-      const std::string msg =
-          "compute network/resistance: keyword 'vtk': cannot open '" + vtk_ + "' for writing";
-      error->one(FLERR, msg.c_str());
-    }
-    // Cells: eq. 1 conductances inside particles (drawn between the two contact points) and
-    // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
-    ohmdem::VtkOptions opt;
-    opt.edge_scalar_names = {"area_a", "area_b", "holm"};
-    ohmdem::write_vtk_network(os, net, drawn, opt);
-  }
 }
 
 double ComputeNetworkResistance::compute_scalar()
