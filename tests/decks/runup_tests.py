@@ -28,12 +28,22 @@ def main():
     deck = os.path.join(a.src, "inputs", "bearing_6208", "in.bearing")
     os.environ.setdefault("OHMDEM_CATALOG", os.path.join(a.src, "inputs", "bearings"))
 
-    def run(out, **var):
-        cmd = [a.exe, "-in", deck, "-var", "out", out, "-log", "none", "-screen", "none"]
+    profile = os.path.join(a.src, "inputs", "bearing_6208", "in.speed_profile")
+
+    def run(out, in_file=deck, **var):
+        cmd = [a.exe, "-in", in_file, "-var", "out", out, "-log", "none", "-screen", "none"]
+        if in_file != deck:
+            cmd += ["-var", "bearing_deck", deck]
         for k, v in var.items():
             cmd += ["-var", k, str(v)]
         subprocess.run(cmd, check=True)
         return out
+
+    def diagnose(out):
+        r = subprocess.run([a.post, "diagnose", "--format", "json",
+                            os.path.join(out, "signal.txt")], capture_output=True, text=True)
+        d = json.loads(r.stdout) if r.returncode == 0 else {}
+        return d, d.get("frequency_hz", 0) / d.get("shaft_hz", 1), r.stderr.strip()
 
     with tempfile.TemporaryDirectory(prefix="ohmdem_runup_") as wd:
         out = run(os.path.join(wd, "runup"), tend=0.35, omega=500, omega_start=200, ramp=0.3,
@@ -51,12 +61,9 @@ def main():
         meta = json.load(open(os.path.join(out, "run.json")))
         check(meta["omega_start"] == 200 and meta["ramp"] == 0.3 and meta["omega_inner"] == 500,
               "run.json records the speed profile")
-        r = subprocess.run([a.post, "diagnose", "--format", "json", os.path.join(out, "signal.txt")],
-                           capture_output=True, text=True)
-        d = json.loads(r.stdout) if r.returncode == 0 else {}
-        order = d.get("frequency_hz", 0) / d.get("shaft_hz", 1)
+        d, order, err_text = diagnose(out)
         check(d.get("defect") == "inner" and d.get("domain") == "orders",
-              f"diagnose: {d.get('defect')} in the {d.get('domain')} domain {r.stderr.strip()}")
+              f"diagnose: {d.get('defect')} in the {d.get('domain')} domain {err_text}")
         check(abs(order / BPFI_ORDER - 1) < 0.005,
               f"BPFI order {order:.5f} against {BPFI_ORDER:.5f} ({order / BPFI_ORDER - 1:+.2e})")
 
@@ -69,17 +76,7 @@ def main():
 
         # omega and F from equal-style variables (inputs/bearing_6208/in.speed_profile): constant
         # variables give the constants' bits; a ramp formula drives a run-up like omega_start
-        wrapper = os.path.join(a.src, "inputs", "bearing_6208", "in.speed_profile")
-
-        def run_var(out, **var):
-            cmd = [a.exe, "-in", wrapper, "-var", "bearing_deck", deck, "-var", "out", out,
-                   "-log", "none", "-screen", "none"]
-            for k, v in var.items():
-                cmd += ["-var", k, str(v)]
-            subprocess.run(cmd, check=True)
-            return out
-
-        var_const = run_var(os.path.join(wd, "var_const"), tend=0.003, wdef="500", fdef="320")
+        var_const = run(os.path.join(wd, "var_const"), profile, tend=0.003, wdef="500", fdef="320")
         same = open(os.path.join(const, "signal.txt"), "rb").read() == \
             open(os.path.join(var_const, "signal.txt"), "rb").read()
         check(same, "omega v_w and force v_f of constant variables: signal.txt identical")
@@ -87,7 +84,7 @@ def main():
         check(meta["omega_inner"] == 500 and meta["omega_input"] == "v_wprofile" and
               meta["F"] == 320 and meta["F_input"] == "v_fprofile",
               "run.json: the variables' values at the start and their names")
-        ramp = run_var(os.path.join(wd, "var_ramp"), tend=0.35, defect="inner", size=1,
+        ramp = run(os.path.join(wd, "var_ramp"), profile, tend=0.35, defect="inner", size=1,
                        wdef="(step*dt<0.3)*(200+1000*step*dt)+(step*dt>=0.3)*500")
         sig = read_signal(os.path.join(ramp, "signal.txt"))
         t, w = sig["time"], sig["omega_inner"]
@@ -95,13 +92,10 @@ def main():
         expected_w = np.where(t < 0.3, 200 + 1000 * t, 500.0)
         check(np.max(np.abs(w - expected_w)) < 1e-6,
               "omega v_NAME: the speed column follows the variable's formula")
-        r = subprocess.run([a.post, "diagnose", "--format", "json", os.path.join(ramp, "signal.txt")],
-                           capture_output=True, text=True)
-        d = json.loads(r.stdout) if r.returncode == 0 else {}
-        order = d.get("frequency_hz", 0) / d.get("shaft_hz", 1)
+        d, order, err_text = diagnose(ramp)
         check(d.get("defect") == "inner" and abs(order / BPFI_ORDER - 1) < 0.005,
               f"variable run-up: {d.get('defect')} at order {order:.5f} "
-              f"({order / BPFI_ORDER - 1:+.2e}) {r.stderr.strip()}")
+              f"({order / BPFI_ORDER - 1:+.2e}) {err_text}")
     finish()
 
 

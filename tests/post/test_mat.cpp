@@ -1,6 +1,6 @@
 // MATLAB .mat input (libmatio): the fixtures of tests/post/make_mat_fixtures.py (scipy.io.savemat)
-// and the CWRU records of ../shared/data/bearing-real, whose .mat and .txt give the same
-// statistics.
+// and the measured CWRU records found beside the repository (if present), whose .mat and .txt
+// give the same statistics.
 #include <gtest/gtest.h>
 #include <matio.h>
 #include <sys/stat.h>

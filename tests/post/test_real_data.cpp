@@ -1,5 +1,5 @@
-// Measured data: runs `ohmdem-post diagnose` on every record of ../shared/data/bearing-real
-// (if present) with the rate, speed and bearing its README gives, and prints what it finds.
+// Measured data: runs `ohmdem-post diagnose` on every measured CWRU record found beside the
+// repository (if present) with the rate, speed and bearing its README gives, and prints what it finds.
 // Nothing is asserted per file: the README does not say which record has which defect.
 #include <gtest/gtest.h>
 

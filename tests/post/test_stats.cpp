@@ -105,8 +105,8 @@ TEST(Stats, ConstantSignalHasUndefinedMoments)
 
 TEST(Stats, RectangleTrainKurtosisFollowsDutyCycle)
 {
-  // design.md: an ideal rectangle train occupying a fraction d of the time has kurtosis
-  // (1 - 3 d (1 - d)) / (d (1 - d)), which falls as d grows.
+  // doc/ohmdem-post.md (stats): an ideal rectangle train occupying a fraction d of the time
+  // has kurtosis (1 - 3 d (1 - d)) / (d (1 - d)), which falls as d grows.
   for (int width : {5, 20, 100}) {
     std::vector<double> x(100000, 1.39);
     for (std::size_t i = 0; i < x.size(); i += 1000)
