@@ -8,6 +8,7 @@
 #include "read_dump.h"
 #include "read_log.h"
 #include "read_mat.h"
+#include "read_npy.h"
 #include "read_table.h"
 #include "text_scan.h"
 
@@ -27,11 +28,18 @@ bool is_mat_input(const InputOptions &opt)
   return has_mat_extension(f) || (std::filesystem::is_regular_file(f, ec) && has_mat_header(f));
 }
 
+// .npy files likewise: --input npy, or their magic (the extension alone is not trusted).
+bool is_npy_input(const InputOptions &opt)
+{
+  if (opt.format == "npy") return true;
+  return opt.format == "auto" && opt.files.front() != "-" && has_npy_header(opt.files.front());
+}
+
 std::string detect(const InputOptions &opt, LineReader &in)
 {
   if (opt.format != "auto") {
     if (opt.format != "table" && opt.format != "log" && opt.format != "dump" && opt.format != "mat")
-      throw Error("option --input expects auto|table|log|dump|mat, got '" + opt.format + "'");
+      throw Error("option --input expects auto|table|log|dump|mat|npy, got '" + opt.format + "'");
     return opt.format;
   }
   const std::string &l = in.peek_first_content();
@@ -73,7 +81,9 @@ void describe(Samples &s, const std::string &format, const std::string &time_bas
   s.meta.emplace_back("time base", time_base);
 }
 
-Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader &in)
+// `read` reads the table with the options given (text or .npy).
+template <class Read>
+Samples from_table(const InputOptions &opt, const RunMetadata &meta, Read read)
 {
   if (opt.files.size() != 1)
     throw Error("column files are read one at a time, got " + std::to_string(opt.files.size()) +
@@ -110,7 +120,7 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader 
     if (tc != ColumnTable::npos) keep[tc] = true;
     return keep;
   };
-  ColumnTable t = read_table(in, to);
+  ColumnTable t = read(to);
   // a text cell makes the column unusable wherever it is; NaN/Inf only inside the window
   if (!t.first_text[vc].empty())
     throw Error(t.source + ":" + std::to_string(t.first_text_line[vc]) + ": column " +
@@ -144,6 +154,7 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, LineReader 
   s.column = t.names[vc];
   s.meta.insert(s.meta.begin(), {"column", t.names[vc]});
   describe(s, t.has_header ? "columns with header" : "plain columns", base);
+  if (!t.notes.empty() && t.notes.back().rfind("read ", 0) == 0) s.meta.emplace_back("note", t.notes.back());
   return s;
 }
 
@@ -281,12 +292,15 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
   Samples in;
   if (is_mat_input(opt)) {
     in = from_mat(opt);
+  } else if (is_npy_input(opt)) {
+    in = from_table(opt, meta, [&](const TableOptions &to) { return read_npy(opt.files.front(), to); });
+    in.meta.front().second = "NumPy .npy, " + in.meta.front().second;
   } else {
     LineReader first(opt.files.front());
     const std::string format = detect(opt, first);
     in = format == "dump"  ? from_dump(opt, meta, first)
          : format == "log" ? from_log(opt, meta, first)
-                           : from_table(opt, meta, first);
+                           : from_table(opt, meta, [&](const TableOptions &to) { return read_table(first, to); });
   }
   const std::size_t n = in.x.size();
   auto time = [&](std::size_t i) {

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "line_reader.h"
+#include "read_npy.h"
 #include "text_scan.h"
 
 namespace ohmdem::post {
@@ -137,6 +138,7 @@ ColumnTable read_csv(LineReader &in, ColumnTable t, std::string first, const Tab
 
 ColumnTable read_table(const std::string &path, const TableOptions &opt)
 {
+  if (has_npy_header(path)) return read_npy(path, opt);  // binary: fix signal/table format npy
   LineReader in(path, opt.max_line);
   return read_table(in, opt);
 }

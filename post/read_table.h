@@ -24,6 +24,7 @@ struct TableOptions {
   std::function<std::vector<bool>(const ColumnTable &)> keep;
   bool header_only = false;  // stop at the first data row (names, no values)
 };
+// A regular file starting with the .npy magic is read by read_npy (read_npy.h) instead.
 ColumnTable read_table(const std::string &path, const TableOptions &opt = {});
 // Reads from an open input (e.g. after the format was detected from its first line).
 ColumnTable read_table(LineReader &in, const TableOptions &opt = {});

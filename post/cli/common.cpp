@@ -15,7 +15,9 @@ namespace ohmdem::post::cli {
 void add_input_options(Args &a, const std::string &rate_option)
 {
   a.section("Input");
-  a.option("--input", "KIND", "input format: auto|table|log|dump|mat (auto: .mat files are MAT)",
+  a.option("--input", "KIND",
+           "input format: auto|table|log|dump|mat|npy (auto: .mat files are MAT, files "
+           "starting with the .npy magic NumPy)",
            "auto");
   a.option("--column", "NAME|N",
            "signal column: header name (R, c_x[2], f_ID[1], v_name) or 1-based number; "

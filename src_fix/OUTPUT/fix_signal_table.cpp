@@ -121,14 +121,27 @@ void FixSignalTable::parse(int narg, char **arg)
         append_ = Append::Auto;
       else
         a.fail(kw, "yes, no or auto", w.c_str());
+    } else if (kw == "format") {
+      const std::string w = a.word(kw, "text (or txt) or npy");
+      if (w == "text" || w == "txt")
+        format_ = Format::Text;
+      else if (w == "npy")
+        format_ = Format::Npy;
+      else
+        a.fail(kw, "text (or txt) or npy", w.c_str());
     } else if (kw == "flush") {
       flush_seconds_ = a.non_negative(kw, "the longest wall time between two flushes, >= 0 (s)");
     } else {
-      a.fail("keyword", "file, columns, append or flush (values come before the keywords)",
+      a.fail("keyword",
+             "file, columns, append, format or flush (values come before the keywords)",
              kw.c_str());
     }
   }
   if (!have_file) a.fail("file", "an output file: the keyword is required", "nothing");
+  // Without the keyword the file name decides: NAME.npy is binary, anything else text.
+  if (format_ == Format::Auto)
+    format_ = path_.size() > 4 && path_.compare(path_.size() - 4, 4, ".npy") == 0 ? Format::Npy
+                                                                                 : Format::Text;
   row_.resize(values_.size());
 }
 
@@ -188,6 +201,8 @@ void FixSignalTable::open_table()
     o.path = path_;
     o.columns = columns_;
     o.append = append;
+    o.format = format_ == Format::Npy ? ohmdem::SignalTable::Format::Npy
+                                      : ohmdem::SignalTable::Format::Text;
     // Rows at or after the restart point are dropped; without a time column none are.
     o.resume_from = values_.front().front().kind == Kind::Time
                         ? restored_time_ + 0.5 * update->dt

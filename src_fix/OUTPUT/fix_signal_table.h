@@ -64,6 +64,7 @@ class FixSignalTable : public Fix {
   std::vector<double> row_;
   std::string path_;
   enum class Append { Auto, Yes, No } append_ = Append::Auto;
+  enum class Format { Auto, Text, Npy } format_ = Format::Auto;  // Auto: from the extension
   double flush_seconds_ = 1.0;
 
   // The simulated time, kept by the fix so that it survives restarts and changes of dt.

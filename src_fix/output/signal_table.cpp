@@ -9,6 +9,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "output/npy_header.h"
+
 namespace ohmdem {
 
 namespace {
@@ -71,10 +73,66 @@ std::size_t truncate_signal_table(const std::string &path, const std::vector<std
   return dropped;
 }
 
+std::size_t truncate_npy_table(const std::string &path, const std::vector<std::string> &columns,
+                               double t, std::uint64_t &kept)
+{
+  const NpyHeader want = npy_table_header(columns, 0);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot be read to continue it");
+  std::string have(want.bytes.size(), '\0');
+  const std::uint64_t size = std::filesystem::file_size(path);
+  if (size < have.size() || !in.read(have.data(), static_cast<std::streamsize>(have.size())))
+    fail(path, "is shorter than the .npy header of this table: continue into a new file");
+  std::string same = have;
+  same.replace(want.rows_offset, want.rows_width, npy_rows_field(0));
+  if (same != want.bytes) {
+    const auto open = have.find('{'), close = have.find('}');
+    const std::string dict = open == std::string::npos || close == std::string::npos
+                                 ? "not an .npy header of this kind"
+                                 : have.substr(open, close - open + 1);
+    fail(path, "its .npy header '" + dict + "' is not this table's (" +
+                   std::to_string(columns.size()) +
+                   " float64 columns with the names given): continue into a new file, or name "
+                   "the same columns");
+  }
+  const std::size_t row_bytes = columns.size() * sizeof(double);
+  const std::uint64_t whole = (size - have.size()) / row_bytes;
+  const bool cut_row = (size - have.size()) % row_bytes != 0;  // a crash cut the last row
+  // Read the first value of each row in blocks; the rows before the first at or after t stay.
+  std::vector<double> block(4096 * columns.size());
+  std::uint64_t keep = 0;
+  bool cut = false;
+  while (!cut && keep < whole) {
+    const std::uint64_t n = std::min<std::uint64_t>(4096, whole - keep);
+    if (!in.read(reinterpret_cast<char *>(block.data()), static_cast<std::streamsize>(n * row_bytes)))
+      fail(path, "could not be read past row " + std::to_string(keep));
+    for (std::uint64_t r = 0; r < n; ++r, ++keep)
+      if (block[r * columns.size()] >= t) {
+        cut = true;
+        break;
+      }
+  }
+  in.close();
+  const std::uint64_t keep_bytes = have.size() + keep * row_bytes;
+  if (keep_bytes < size) std::filesystem::resize_file(path, keep_bytes);
+  kept = keep;
+  return static_cast<std::size_t>(whole - keep + (cut_row ? 1 : 0));
+}
+
 SignalTable::SignalTable(const Options &opt)
-    : columns_(opt.columns), flush_seconds_(opt.flush_seconds), path_(opt.path)
+    : format_(opt.format), columns_(opt.columns), flush_seconds_(opt.flush_seconds), path_(opt.path)
 {
   if (columns_.empty()) fail(path_, "no columns");
+  if (format_ == Format::Npy)
+    open_npy(opt);
+  else
+    open_text(opt);
+  buffer_.resize(std::max(opt.buffer_bytes, columns_.size() * (kMaxNumber + 1) * 4));
+  last_flush_ = std::chrono::steady_clock::now();
+}
+
+void SignalTable::open_text(const Options &opt)
+{
   bool write_header = true;
   if (opt.append && std::filesystem::exists(path_) && std::filesystem::file_size(path_) > 0) {
     dropped_ = truncate_signal_table(path_, columns_, opt.resume_from);
@@ -82,12 +140,42 @@ SignalTable::SignalTable(const Options &opt)
   }
   fp_ = std::fopen(path_.c_str(), opt.append ? "ab" : "wb");
   if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
-  buffer_.resize(std::max(opt.buffer_bytes, columns_.size() * (kMaxNumber + 1) * 4));
   if (write_header) {
     const std::string h = signal_table_header(columns_) + "\n";
     std::fwrite(h.data(), 1, h.size(), fp_);
   }
-  last_flush_ = std::chrono::steady_clock::now();
+}
+
+void SignalTable::open_npy(const Options &opt)
+{
+  NpyHeader h;
+  try {
+    h = npy_table_header(columns_, 0);
+  } catch (const std::invalid_argument &e) {
+    fail(path_, e.what());
+  }
+  npy_rows_offset_ = h.rows_offset;
+  if (opt.append && std::filesystem::exists(path_) && std::filesystem::file_size(path_) > 0) {
+    dropped_ = truncate_npy_table(path_, columns_, opt.resume_from, npy_rows_);
+    fp_ = std::fopen(path_.c_str(), "r+b");  // "a" would send the row count to the end too
+    if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
+    write_npy_rows_field();
+    return;
+  }
+  fp_ = std::fopen(path_.c_str(), "w+b");
+  if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
+  if (std::fwrite(h.bytes.data(), 1, h.bytes.size(), fp_) != h.bytes.size())
+    fail(path_, std::string("write failed: ") + std::strerror(errno));
+}
+
+// The header's row count, rewritten in place; the file position goes back to the end.
+void SignalTable::write_npy_rows_field()
+{
+  const std::string field = npy_rows_field(npy_rows_);
+  if (std::fseek(fp_, static_cast<long>(npy_rows_offset_), SEEK_SET) != 0 ||
+      std::fwrite(field.data(), 1, field.size(), fp_) != field.size() ||
+      std::fseek(fp_, 0, SEEK_END) != 0)
+    fail(path_, std::string("could not update the .npy row count: ") + std::strerror(errno));
 }
 
 SignalTable::~SignalTable()
@@ -106,11 +194,16 @@ void SignalTable::row(const double *values)
   const std::size_t n = columns_.size();
   if (buffer_.size() - used_ < n * (kMaxNumber + 1)) flush();
   char *p = buffer_.data() + used_;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i) *p++ = ' ';
-    p = std::to_chars(p, p + kMaxNumber, values[i]).ptr;
+  if (format_ == Format::Npy) {
+    std::memcpy(p, values, n * sizeof(double));
+    p += n * sizeof(double);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (i) *p++ = ' ';
+      p = std::to_chars(p, p + kMaxNumber, values[i]).ptr;
+    }
+    *p++ = '\n';
   }
-  *p++ = '\n';
   used_ = static_cast<std::size_t>(p - buffer_.data());
   // The clock costs tens of nanoseconds: look at it every 256 rows only.
   if (++rows_since_clock_ >= 256) {
@@ -124,6 +217,10 @@ void SignalTable::flush()
 {
   if (used_ && std::fwrite(buffer_.data(), 1, used_, fp_) != used_)
     fail(path_, std::string("write failed: ") + std::strerror(errno));
+  if (format_ == Format::Npy && used_) {
+    npy_rows_ += used_ / (columns_.size() * sizeof(double));
+    write_npy_rows_field();
+  }
   used_ = 0;
   std::fflush(fp_);
   last_flush_ = std::chrono::steady_clock::now();

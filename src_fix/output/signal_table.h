@@ -1,12 +1,15 @@
-// A '#'-headed table of numbers written row by row at full rate: each value in its shortest
-// round-trip decimal form (std::to_chars: reads back to the same double), rows gathered in a
-// large buffer and written in blocks, flushed at least every `flush_seconds` of wall time so
-// that a reader (tail -f, a crash) sees recent rows. Plain C++: no LIGGGHTS types.
+// A table of numbers written row by row at full rate, rows gathered in a large buffer and
+// written in blocks, flushed at least every `flush_seconds` of wall time so that a reader
+// (tail -f, a crash) sees recent rows. Two formats: text ('#'-headed, each value in its
+// shortest round-trip decimal form, std::to_chars: reads back to the same double) and NumPy
+// .npy (a record per row, one float64 field per column: the bits themselves, no formatting;
+// npy_header.h). Plain C++: no LIGGGHTS types.
 #ifndef OHMDEM_SIGNAL_TABLE_H
 #define OHMDEM_SIGNAL_TABLE_H
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -15,8 +18,10 @@ namespace ohmdem {
 
 class SignalTable {
  public:
+  enum class Format { Text, Npy };
   struct Options {
     std::string path;
+    Format format = Format::Text;
     std::vector<std::string> columns;  // header names, one per value of a row
     // Continue an existing file: its header must name the same columns; rows whose first
     // value is >= `resume_from` (a run continued from an earlier restart) are dropped first.
@@ -39,8 +44,15 @@ class SignalTable {
   std::size_t rows_dropped() const { return dropped_; }
 
  private:
+  void open_text(const Options &opt);
+  void open_npy(const Options &opt);
+  void write_npy_rows_field();
+
   std::FILE *fp_ = nullptr;
+  Format format_;
   std::vector<std::string> columns_;
+  std::uint64_t npy_rows_ = 0;        // rows in the .npy file once the buffer is written
+  std::size_t npy_rows_offset_ = 0;   // where the header's row count stands
   std::vector<char> buffer_;
   std::size_t used_ = 0;
   std::size_t dropped_ = 0;
@@ -58,6 +70,11 @@ std::string signal_table_header(const std::vector<std::string> &columns);
 // std::runtime_error (another header, an unreadable row) naming the file.
 std::size_t truncate_signal_table(const std::string &path, const std::vector<std::string> &columns,
                                   double t);
+// The same for an .npy table written by SignalTable: checks the header, keeps the whole rows
+// before the first whose first value is >= t (a row cut by a crash goes), sets the header's
+// row count. Returns the number of rows removed and stores the rows kept in `kept`.
+std::size_t truncate_npy_table(const std::string &path, const std::vector<std::string> &columns,
+                               double t, std::uint64_t &kept);
 
 }  // namespace ohmdem
 

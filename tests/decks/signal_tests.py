@@ -7,12 +7,19 @@
                   single run's signal.txt to the last byte (the second part appends)
   restart_dt      continued with another time step, the time column goes on from the restart
                   point at the new step (not step x dt)
+  npy_equal       -var signal_format npy: numpy.load reads signal.npy as named float64 columns
+                  equal, bit for bit, to signal.txt of the same run; ohmdem-post gives the
+                  same statistics from both
+  npy_restart_append  the split run's signal.npy is the single run's, byte for byte
 
 Usage: signal_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import argparse
 import os
+import subprocess
 import tempfile
+
+import numpy as np
 
 from bearing_tests import Runner, read_signal
 from deck_checks import check, finish
@@ -32,15 +39,15 @@ def test_print_equal(r):
     check(bad == 0, f"print_equal: every value equal to fix print's to 15 digits ({bad} rows differ)")
 
 
-def restart_pair(r, name, dt_second):
-    full, _ = r.run(f"{name}_full", tend=0.004)
+def restart_pair(r, name, dt_second, **var):
+    full, _ = r.run(f"{name}_full", tend=0.004, **var)
     split = os.path.join(r.workdir, f"{name}_split")
     first, _ = r.run(f"{name}_split", deck=os.path.join(os.path.dirname(__file__),
                                                         "in.restart_first"),
-                     bearing_deck=r.deck, tend=0.002)
+                     bearing_deck=r.deck, tend=0.002, **var)
     # The second part continues into the same folder, from the restart file written there.
     r.run(f"{name}_split", tend=0.004, start="restart", dt=dt_second,
-          restart_file=os.path.join(split, "half.restart"))
+          restart_file=os.path.join(split, "half.restart"), **var)
     return full, split
 
 
@@ -68,18 +75,51 @@ def test_restart_dt(r):
           f"({len(second)} rows, last t = {second[-1]!r} s)")
 
 
+def test_npy_equal(r, post):
+    text, _ = r.run("text", tend=0.02, defect="inner")
+    binary, _ = r.run("binary", tend=0.02, defect="inner", signal_format="npy")
+    a = np.load(os.path.join(binary, "signal.npy"))  # numpy's own reader
+    b = np.loadtxt(os.path.join(text, "signal.txt"))
+    header = open(os.path.join(text, "signal.txt")).readline().split()[1:]
+    check(list(a.dtype.names) == header and all(a.dtype[n] == np.float64 for n in header),
+          f"npy_equal: named float64 columns {a.dtype.names[:3]}... = the text header")
+    same = a.shape == (b.shape[0],) and all(
+        np.array_equal(a[n].view(np.uint64), b[:, i].view(np.uint64)) for i, n in enumerate(header))
+    check(same, f"npy_equal: {a.shape[0]} rows equal bit for bit to signal.txt's ({b.shape[0]} rows)")
+    def stats(folder, name):
+        res = subprocess.run([post, "stats", os.path.join(folder, name), "--from", "0.015"],
+                             capture_output=True, text=True)
+        check(res.returncode == 0, f"npy_equal: ohmdem-post stats {name} exits 0 ({res.stderr.strip()})")
+        return [l for l in res.stdout.splitlines() if not l.startswith("#")]
+    st, sb = stats(text, "signal.txt"), stats(binary, "signal.npy")
+    check(len(st) > 5 and st == sb, "npy_equal: ohmdem-post stats identical from both files")
+
+
+def test_npy_restart_append(r):
+    full, split = restart_pair(r, "npy", 1e-6, signal_format="npy")
+    a = open(os.path.join(full, "signal.npy"), "rb").read()
+    b = open(os.path.join(split, "signal.npy"), "rb").read()
+    rows = np.load(os.path.join(split, "signal.npy")).shape[0]
+    check(len(a) > 0 and a == b and rows == 4000,
+          f"npy_restart_append: split run's signal.npy identical to the single run's "
+          f"({len(b)} vs {len(a)} bytes, {rows} rows)")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
+    p.add_argument("--post", default="")
     a = p.parse_args()
     keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
     with tempfile.TemporaryDirectory(prefix=f"ohmdem_{a.test}_", dir=keep) as wd:
         r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
         {"print_equal": lambda: test_print_equal(r),
          "restart_append": lambda: test_restart_append(r),
-         "restart_dt": lambda: test_restart_dt(r)}[a.test]()
+         "restart_dt": lambda: test_restart_dt(r),
+         "npy_equal": lambda: test_npy_equal(r, os.path.abspath(a.post)),
+         "npy_restart_append": lambda: test_npy_restart_append(r)}[a.test]()
     finish()
 
 
