@@ -53,4 +53,9 @@ print(f"  signal.npy every step       (format npy)      : {d:.3f} s  {d / steps 
       f"  ratio {d / b:.2f} (goal <= 1.5)")
 print(f"  + the same row through fix print every step   : {c:.3f} s  fix print alone adds "
       f"{(c - a) / steps * 1e6:.2f} us/row, {(c - a + b) / b:.2f}x the 100th-step run")
+ir = sys.argv[6].split()
+if len(ir) == 3:
+    h, e, n = (int(x) / 10000 for x in ir)
+    print(f"  instructions per step in the time loop (callgrind, 10000 steps): every 100th {h:.0f}, "
+          f"every step text {e:.0f} (ratio {e / h:.2f}), npy {n:.0f} (ratio {n / h:.2f})")
 PY
