@@ -417,7 +417,8 @@ def main():
     g = grid(a.quick)
     if a.report_only:
         rows = read_rows(os.path.join(out, "detectability.csv"))
-        sims = {("inner", 1.0): os.path.join(out, "sim", "defects", "defect_inner_size_1_position_0")}
+        sims = {("inner", 1.0):
+                os.path.join(out, "sim", "defects", "defect_inner_size_1_position_0")}
         example = os.path.join(out, "acquired_example.png")
         if os.path.isdir(sims[("inner", 1.0)]):
             example = write_example(out, sims)
