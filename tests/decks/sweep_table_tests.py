@@ -120,6 +120,17 @@ def test_slurm(ctx):
     k = 2
     rc, out = run(["bash", ctx.slurm, "--tasks", table, str(k)], ctx.wd)
     check(rc == 0 and out.strip() == "3", f"--tasks: 6 cases, 2 per task: 3 tasks ({out.strip()})")
+    # --submit hands sbatch the array size from the table (a stand-in sbatch records its call).
+    fake = os.path.join(ctx.wd, "bin")
+    os.makedirs(fake)
+    with open(os.path.join(fake, "sbatch"), "w") as fh:
+        fh.write(f'#!/bin/sh\necho "$@" > {ctx.wd}/sbatch_args\n')
+    os.chmod(os.path.join(fake, "sbatch"), 0o755)
+    rc, out = run(["bash", ctx.slurm, "--submit", table, str(k)], ctx.wd,
+                  {"PATH": fake + os.pathsep + os.environ["PATH"], "ROOT": root})
+    args = open(os.path.join(ctx.wd, "sbatch_args")).read().split() if rc == 0 else []
+    check(args == ["--array=0-2", ctx.slurm, table, "2"],
+          f"--submit: sbatch --array=0-2 SCRIPT TABLE 2 ({' '.join(args)} {out[-200:]})")
     for task in range(3):
         rc, out = ctx.slurm_task(table, k, task, root)
         check(rc == 0, f"array task {task} by hand (SLURM_ARRAY_TASK_ID={task}) {out[-300:]}")
