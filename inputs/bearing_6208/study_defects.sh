@@ -43,11 +43,11 @@ echo "== Fig. 15: inner-race defect sizes $SIZES deg (force and fixed outer ring
 # partitions; a rerun skips the cases already finished with the same parameters). The defect
 # appears after settling, so that the held ring is the healthy one.
 /usr/bin/python3 "$ROOT/inputs/cluster/cases.py" grid load=force,fixed "size=${SIZES// /,}" \
-  --output "$OUT/fig15_cases.csv"
+  --output "$OUT/fig15/cases.csv"
 sweep=()
 [ "$NP" -gt 1 ] && sweep=(mpirun -np "$NP" "$OHMDEM" -partition "${NP}x1") || sweep=("$OHMDEM")
 "${sweep[@]}" -in "$HERE/in.sweep" -var here "$HERE" -var bearing_deck "$HERE/in.bearing" \
-  -var cases "$OUT/fig15_cases.csv" -var root "$OUT/fig15" -var tend "$TEND" -var defect inner \
+  -var cases "$OUT/fig15/cases.csv" -var root "$OUT/fig15" -var tend "$TEND" -var defect inner \
   -var dstart "$FROM" -log "$OUT/fig15/log.sweep" -screen none
 for load in force fixed; do
   for s in $SIZES; do
