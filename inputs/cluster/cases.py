@@ -208,9 +208,9 @@ def cmd_tasks(a):
 
 def cmd_args(a):
     names, rows, _ = read_table(a.table)
-    i = int(a.index)
+    i = int(a.index) if re.fullmatch(r"[0-9]+", a.index) else -1
     if not 0 <= i < len(rows):
-        raise TableError(f"{a.table}: case index {i} out of range: the table has {len(rows)} "
+        raise TableError(f"{a.table}: case index {a.index} out of range: the table has {len(rows)} "
                          f"cases (0..{len(rows) - 1})")
     print(folder_of(names, rows[i]))
     print(label_of(names, rows[i]))
