@@ -66,8 +66,9 @@ esac
 
 task=${SLURM_ARRAY_TASK_ID:-}
 [ -n "$task" ] || fail "SLURM_ARRAY_TASK_ID is not set: submit with --submit $TABLE $K, or run one task by hand with SLURM_ARRAY_TASK_ID=k (0..$((ntasks - 1)))"
-[[ $task =~ ^[0-9]+$ ]] && [ "$task" -lt "$ntasks" ] ||
+if ! [[ $task =~ ^[0-9]+$ ]] || [ "$task" -ge "$ntasks" ]; then
   fail "task index SLURM_ARRAY_TASK_ID=$task out of range: $TABLE has $ncases cases, $K per task: tasks 0..$((ntasks - 1))"
+fi
 
 # ROOT/sweep_cases.csv: the cases and their folders (every task writes the same file).
 $CASES_PY sweep-table "$TABLE" "$ROOT"
@@ -90,7 +91,7 @@ for ((i = first; i < first + K && i < ncases; i++)); do
   if "${launcher[@]}" "$OHMDEM" -in "$DECK/in.bearing" "${vars[@]}" -var out "$out" \
       -var resume 1 -var here "$DECK" -log "$out/log.liggghts" -screen none; then
     cp "$out/run.json" "$out/run.done.json"
-    sh "$DECK/sweep_progress.sh" "$ROOT" "$ncases" "$label" done
+    sh "$DECK/sweep_progress.sh" "$ROOT" "$ncases" "$label" "done"
   else
     failed=$((failed + 1))
     echo "sweep: case $label FAILED (see $out/log.liggghts)" >&2
