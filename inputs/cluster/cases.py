@@ -9,7 +9,7 @@ row per case. Read by inputs/bearing_6208/in.sweep (partitions), inputs/cluster/
   cases.py args TABLE INDEX                     case INDEX (0-based): its folder, then NAME VALUE
                                                 lines (what the launcher passes with -var)
   cases.py sweep-table TABLE ROOT               write ROOT/sweep_cases.csv (the cases, their folders)
-  cases.py sweep-init ...  / sweep-case ...     in.sweep's helpers (LIGGGHTS include files)
+  cases.py sweep-init ...  / sweep-common ...   in.sweep's helpers (LIGGGHTS include files)
 
 A bad table is an error naming the file, line and column: 'ERROR: ...' on stderr, exit 2."""
 import argparse
@@ -263,7 +263,8 @@ def cmd_sweep_init(a):
     out = [f"variable sweep_n equal {len(rows)}",
            "variable case universe " + " ".join(str(i) for i in range(1, len(rows) + 1))]
     # A deck variable defined before this (-var, in.sweep's defaults) keeps its value for every
-    # case; the others read __unset__ here, are recorded, and are reset before each case.
+    # case; the others read __unset__ here, and sweep-common writes the cases' includes that
+    # reset them before each case.
     out += [f"variable {n} index {UNSET}" for n in probe]
     out.append(f"shell /usr/bin/python3 {os.path.abspath(__file__)} sweep-common {a.root} "
                + " ".join(f"{n}=${{{n}}}" for n in probe))
@@ -271,37 +272,28 @@ def cmd_sweep_init(a):
 
 
 def cmd_sweep_common(a):
-    """The deck variables still __unset__ after the probe: each case deletes them first."""
+    """After the probe: the deck variables still __unset__ are the ones each case resets. Writes
+    ROOT/.sweep_case_K.lmp for every case K (1-based): delete those variables (the previous
+    case's values; the deck's defaults come back), set the row's, the folder `out`, the label
+    and the defect size. All at once: a LIGGGHTS shell command costs a process start."""
     unset = []
     for i, tok in enumerate(a.pairs):
         m = re.match(r"([A-Za-z_][A-Za-z0-9_]*)=(.*)\Z", tok)
         if m and m.group(2) == UNSET and (i + 1 == len(a.pairs) or "=" in a.pairs[i + 1]):
             unset.append(m.group(1))
-    write_atomic(os.path.join(a.root, ".sweep_reset"), "\n".join(unset) + "\n")
-
-
-def cmd_sweep_case(a):
-    """in.sweep, before case CASE (1-based): an include that resets the deck variables of the
-    previous case, sets the row's, the folder `out` and the label."""
-    try:
-        path = sweep_table_path(a.root)
-        names, rows, _ = read_table(path, sweep_copy=True)
-        names, rows = names[1:], [r[1:] for r in rows]  # the 'case' column is the folder
-        i = int(a.case) - 1
-        reset = open(os.path.join(a.root, ".sweep_reset")).read().split()
-    except (TableError, OSError, ValueError) as e:
-        print(f"ERROR: sweep case {a.case}: {e}", file=sys.stderr)
-        lmp_error(a.lmp, f"sweep case {a.case}: {e}", "sweep_case_invalid")
-        return
-    cells = rows[i]
-    out = [f"variable {n} delete" for n in reset]
-    for n, v in zip(names, cells):
-        out += [f"variable {n} delete", f'variable {n} index "{v}"']
-    out += [f"variable out string {os.path.join(a.root, folder_of(names, cells))}",
-            f'variable case_label string "{label_of(names, cells)}"',
-            # The defect size (degrees) of the case, for in.sweep's check (1 without a size column).
-            f"variable case_size string {cells[names.index('size')] if 'size' in names else 1}"]
-    write_atomic(a.lmp, "\n".join(out) + "\n")
+    names, rows, _ = read_table(sweep_table_path(a.root), sweep_copy=True)
+    names = names[1:]  # the 'case' column is the folder
+    for k, row in enumerate(rows, 1):
+        folder, cells = row[0], row[1:]
+        out = [f"variable {n} delete" for n in unset]
+        for n, v in zip(names, cells):
+            out += [f"variable {n} delete", f'variable {n} index "{v}"']
+        size = cells[names.index("size")] if "size" in names else 1
+        out += [f"variable out string {os.path.join(a.root, folder)}",
+                f'variable case_label string "{label_of(names, cells)}"',
+                # the defect size (degrees) for in.sweep's check; 1 without a size column
+                f"variable case_size string {size}"]
+        write_atomic(os.path.join(a.root, f".sweep_case_{k}.lmp"), "\n".join(out) + "\n")
 
 
 def main():
@@ -341,11 +333,6 @@ def main():
     sc.add_argument("root")
     sc.add_argument("pairs", nargs="*")
     sc.set_defaults(run=cmd_sweep_common)
-    sk = sub.add_parser("sweep-case")
-    sk.add_argument("--root", required=True)
-    sk.add_argument("--case", required=True)
-    sk.add_argument("--lmp", required=True)
-    sk.set_defaults(run=cmd_sweep_case)
     a = p.parse_args()
     try:
         a.run(a)
