@@ -46,6 +46,41 @@ struct Found {
   std::string display, identity;
 };
 
+// The case folders listed in DIR/sweep_cases.csv (first column `case`, written by the sweep
+// launchers, doc/case_table.md) with their line numbers; empty when DIR is no sweep root.
+// A line that names no plain folder is reported in `bad`.
+std::vector<std::pair<std::string, int>>
+sweep_cases(const fs::path &dir, std::vector<std::pair<std::string, std::string>> &bad)
+{
+  std::vector<std::pair<std::string, int>> cases;
+  const fs::path table = dir / "sweep_cases.csv";
+  std::ifstream in(table);
+  if (!in) return cases;
+  std::string line;
+  bool header = true;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    const std::string first = line.substr(0, line.find(','));
+    if (header) {
+      header = false;
+      if (first != "case") {
+        bad.emplace_back(display_path(table), "line " + std::to_string(n) +
+                                                  ": the first column is not 'case'");
+        return cases;
+      }
+      continue;
+    }
+    if (first.empty() || first == "." || first == ".." ||
+        first.find_first_of("/\"") != std::string::npos)
+      bad.emplace_back(display_path(table),
+                       "line " + std::to_string(n) + ": '" + first + "' is not a case folder name");
+    else
+      cases.emplace_back(first, n);
+  }
+  return cases;
+}
+
 std::string identity_of(const fs::path &dir)
 {
   std::error_code ec;
@@ -109,6 +144,25 @@ RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursiv
     bool container = false;
     const std::string why = run_status(dir, container);
     if (why.empty()) found.push_back({display_path(dir), identity_of(dir)});
+    if (!recursive && container && is_file(dir / "sweep_cases.csv")) {
+      // A sweep root: its cases, as listed; one not run (yet) is said.
+      std::vector<std::pair<std::string, std::string>> bad;
+      const auto cases = sweep_cases(dir, bad);
+      skipped.insert(skipped.end(), bad.begin(), bad.end());
+      for (const auto &[name, line] : cases) {
+        bool c = false;
+        const std::string w = run_status(dir / name, c);
+        const std::string shown_case = display_path(dir / name);
+        if (w.empty())
+          found.push_back({shown_case, identity_of(dir / name)});
+        else
+          skipped.emplace_back(shown_case, "case of sweep_cases.csv line " + std::to_string(line) +
+                                               " not run (yet): " + w);
+      }
+      if (cases.empty() && bad.empty())
+        skipped.emplace_back(display_path(dir), "sweep_cases.csv lists no case");
+      continue;
+    }
     if (!recursive) {
       if (!why.empty())
         skipped.emplace_back(display_path(dir),

@@ -24,7 +24,9 @@ struct RunFolders {
 // exist, lacks signal.txt or run.json; with `recursive`: holds no run at all), and, while
 // searching, a folder holding one of the two files but not the other. The same folder reached
 // twice (given twice, or under two given folders) counts once, under its smallest display
-// path, so the result does not depend on the order of `paths`.
+// path, so the result does not depend on the order of `paths`. A sweep root (a folder that is no
+// run but holds sweep_cases.csv, doc/case_table.md) gives, without `recursive`, the case
+// folders it lists; a listed case that is not a run is skipped with its line number.
 RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursive);
 
 // Natural order of paths: runs of digits compare by value ("size_2" < "size_10"), then

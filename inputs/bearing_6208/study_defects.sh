@@ -6,6 +6,7 @@
 #    versus size, with the outer ring under force control (the paper's) and held (fixed).
 # Writes OUT/study.md with the tables and figures.
 #   inputs/bearing_6208/study_defects.sh [OUT] [TEND]     (defaults: study-output, 0.12 s)
+# NP=2 (environment) runs the Fig. 15 cases on 2 partitions (mpirun; default 1: in turn).
 set -euo pipefail
 HERE=$(cd "$(dirname "$0")" && pwd)
 ROOT=$(cd "$HERE/../.." && pwd)
@@ -16,7 +17,8 @@ OUT=$(realpath -m "${1:-study-output}")
 TEND=${2:-0.12}
 FROM=0.015          # after the sliding phase (11.4 ms at 500 rad/s, F = 320 N)
 SIZES="0.5 1 1.5 2 3 4"
-mkdir -p "$OUT"
+NP=${NP:-1}
+mkdir -p "$OUT/fig15"
 
 run() {  # run NAME [-var ...]
   local name=$1; shift
@@ -37,12 +39,20 @@ for d in inner outer ball cage; do
 done
 
 echo "== Fig. 15: inner-race defect sizes $SIZES deg (force and fixed outer ring)"
+# The load x size grid as a case table (doc/case_table.md), run by the partition sweep (NP
+# partitions; a rerun skips the cases already finished with the same parameters). The defect
+# appears after settling, so that the held ring is the healthy one.
+/usr/bin/python3 "$ROOT/inputs/cluster/cases.py" grid load=force,fixed "size=${SIZES// /,}" \
+  --output "$OUT/fig15/cases.csv"
+sweep=()
+[ "$NP" -gt 1 ] && sweep=(mpirun -np "$NP" "$OHMDEM" -partition "${NP}x1") || sweep=("$OHMDEM")
+"${sweep[@]}" -in "$HERE/in.sweep" -var here "$HERE" -var bearing_deck "$HERE/in.bearing" \
+  -var cases "$OUT/fig15/cases.csv" -var root "$OUT/fig15" -var tend "$TEND" -var defect inner \
+  -var dstart "$FROM" -log "$OUT/fig15/log.sweep" -screen none
 for load in force fixed; do
   for s in $SIZES; do
-    # The defect appears after settling, so that the held ring is the healthy one.
-    run "fig15_${load}_$s" -var defect inner -var size "$s" -var load "$load" -var dstart "$FROM"
-    "$POST" stats --format json --from "$FROM" "$OUT/fig15_${load}_$s/signal.txt" \
-      > "$OUT/fig15_${load}_$s/stats.json"
+    case_dir=$OUT/fig15/load_${load}_size_$s
+    "$POST" stats --format json --from "$FROM" "$case_dir/signal.txt" > "$case_dir/stats.json"
   done
 done
 
@@ -83,8 +93,8 @@ for load in ("force", "fixed"):
               "|---|---|---|---|---|---|---|---|---|---|"]
     for sz in sizes:
         tag = f"{sz:g}"
-        st = json.load(open(os.path.join(out, f"fig15_{load}_{tag}", "stats.json")))
-        s = signal(f"fig15_{load}_{tag}")
+        st = json.load(open(os.path.join(out, "fig15", f"load_{load}_size_{tag}", "stats.json")))
+        s = signal(os.path.join("fig15", f"load_{load}_size_{tag}"))
         dg, dm = NB * sz / 360, float(np.mean(s["n_masked"] > 0))
         rect = (1 - 3 * dm * (1 - dm)) / (dm * (1 - dm))
         lines.append(f"| {sz:g} | {dg:.4f} | {dm:.4f} | {st['peak']:.5f} | {st['mean']:.5f} | "

@@ -78,8 +78,9 @@ OUTER_POSITION = 90.0
 
 
 def simulate(out, sizes):
-    """The healthy run, then inner and outer defects of every size through the partition
-    sweep (2 partitions when 2 processes are there)."""
+    """The healthy run, then inner and outer defects of every size: one case table
+    (doc/case_table.md: defect, size and the defect's position per row) through the partition
+    sweep (2 partitions when 2 processes are there; a rerun skips the finished cases)."""
     sims = {}
     healthy = os.path.join(out, "sim", "healthy")
     if not os.path.exists(os.path.join(healthy, "run.json")):
@@ -92,21 +93,25 @@ def simulate(out, sizes):
     sims[("none", 0.0)] = healthy
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1")
+    root = os.path.join(out, "sim", "defects")
+    os.makedirs(root, exist_ok=True)
+    table = os.path.join(out, "sim", "defect_cases.csv")
+    rows = []
     for defect in ("inner", "outer"):
-        root = os.path.join(out, "sim", defect)
-        os.makedirs(root, exist_ok=True)
-        values = " ".join(f"{s:g}" for s in sizes)
-        cmd = ["mpirun", "-np", "2", OHMDEM, "-partition", "2x1", "-in", os.path.join(HERE, "in.sweep"),
-               "-var", "here", HERE, "-var", "bearing_deck", os.path.join(HERE, "in.bearing"),
-               "-var", "root", root, "-var", "sizes", values, "-var", "ncases", str(len(sizes)),
-               "-var", "defect", defect, "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
-        for k, v in DECK_VARS.items():
-            cmd += ["-var", k, str(v)]
-        if defect == "outer":  # the pit in the middle of the load zone (+y), as in test rigs
-            cmd += ["-var", "position", str(OUTER_POSITION)]
-        run(cmd, os.path.join(root, "stdout.txt"), env)
+        # the outer pit in the middle of the load zone (+y), as in test rigs
+        position = OUTER_POSITION if defect == "outer" else 0.0
         for s in sizes:
-            sims[(defect, s)] = os.path.join(root, f"size_{s:g}")
+            rows.append(f"{defect},{s:g},{position:g}")
+            sims[(defect, s)] = os.path.join(root, f"defect_{defect}_size_{s:g}_position_{position:g}")
+    with open(table, "w") as f:
+        f.write("defect,size,position\n" + "\n".join(rows) + "\n")
+    cmd = ["mpirun", "-np", "2", OHMDEM, "-partition", "2x1", "-in", os.path.join(HERE, "in.sweep"),
+           "-var", "here", HERE, "-var", "bearing_deck", os.path.join(HERE, "in.bearing"),
+           "-var", "root", root, "-var", "cases", table,
+           "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
+    for k, v in DECK_VARS.items():
+        cmd += ["-var", k, str(v)]
+    run(cmd, os.path.join(root, "stdout.txt"), env)
     return sims
 
 
@@ -412,7 +417,8 @@ def main():
     g = grid(a.quick)
     if a.report_only:
         rows = read_rows(os.path.join(out, "detectability.csv"))
-        sims = {("inner", 1.0): os.path.join(out, "sim", "inner", "size_1")}
+        sims = {("inner", 1.0):
+                os.path.join(out, "sim", "defects", "defect_inner_size_1_position_0")}
         example = os.path.join(out, "acquired_example.png")
         if os.path.isdir(sims[("inner", 1.0)]):
             example = write_example(out, sims)

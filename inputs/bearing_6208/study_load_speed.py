@@ -104,6 +104,26 @@ def simulate(out, name, tend, variables):
     return folder
 
 
+def sweep_point(out, tag, tend, variables):
+    """The four runs of an operating point (ring force/fixed x healthy/inner) as a case table
+    (doc/case_table.md) through in.sweep, in turn; the point's values are common to the four.
+    A rerun skips the runs finished with the same parameters. {(load, defect): folder}."""
+    root = os.path.join(out, tag)
+    os.makedirs(root, exist_ok=True)
+    table = os.path.join(root, "cases.csv")
+    pairs = [(load, defect) for load in ("force", "fixed") for defect in ("none", "inner")]
+    with open(table, "w") as f:
+        f.write("load,defect\n" + "".join(f"{l},{d}\n" for l, d in pairs))
+    cmd = [OHMDEM, "-in", os.path.join(HERE, "in.sweep"), "-var", "here", HERE,
+           "-var", "bearing_deck", os.path.join(HERE, "in.bearing"), "-var", "root", root,
+           "-var", "cases", table, "-var", "tend", repr(tend),
+           "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
+    for k, v in variables.items():
+        cmd += ["-var", k, str(v)]
+    run(cmd, os.path.join(root, "stdout.txt"))
+    return {(l, d): os.path.join(root, f"load_{l}_defect_{d}") for l, d in pairs}
+
+
 def sliding_end(folder, omega):
     """First time after which the balls orbit at the kinematic cage speed within 1e-3."""
     path = os.path.join(folder, "signal.txt")
@@ -167,14 +187,13 @@ def study_point(out, force, omega, revolutions):
     t_settle = t_slide + 0.002
     t_from = t_settle + 0.002
     window = revolutions * 2 * math.pi / omega
+    folders = sweep_point(out, tag, t_from + window,
+                          {"F": force, "omega": omega, "size": 1.0, "tsettle": t_settle,
+                           "dstart": t_settle, "tslide": t_from})
     rows = []
     for load in ("force", "fixed"):
         for defect in ("none", "inner"):
-            name = f"{load}_{defect}_{tag}"
-            folder = simulate(out, name, t_from + window,
-                              {"F": force, "omega": omega, "load": load, "defect": defect,
-                               "size": 1.0, "tsettle": t_settle, "dstart": t_settle,
-                               "tslide": t_from})
+            folder = folders[(load, defect)]
             sig = os.path.join(folder, "signal.txt")
             st = post_json(["stats", "--from", repr(t_from), sig])
             st_ac = post_json(["stats", "--remove-mean", "--from", repr(t_from), sig])

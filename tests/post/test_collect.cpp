@@ -196,6 +196,34 @@ TEST(CollectLib, FindRunFolders)
   EXPECT_EQ(empty.skipped[0].second, "no signal.txt");
 }
 
+// A sweep root (ROOT/sweep_cases.csv, written by the sweep launchers): its cases without
+// --recursive, in natural order; a listed case not run yet is said; unlisted folders are not
+// collected.
+TEST(CollectLib, FindRunFoldersOfASweepRoot)
+{
+  const std::string root = make_sweep("sweep_root");
+  std::ofstream(root + "/sweep_cases.csv")
+      << "case,load,size\n# a comment\nfixed_10,fixed,10\nfixed_2,fixed,2\nfixed_3,fixed,3\n";
+  const RunFolders r = find_run_folders({root}, false);
+  EXPECT_EQ(r.runs, (std::vector<std::string>{root + "/fixed_2", root + "/fixed_10"}));
+  ASSERT_EQ(r.skipped.size(), 1u);
+  EXPECT_EQ(r.skipped[0].first, root + "/fixed_3");
+  EXPECT_EQ(r.skipped[0].second,
+            "case of sweep_cases.csv line 5 not run (yet): no signal.txt and no run.json");
+
+  std::ofstream(root + "/sweep_cases.csv") << "F,size\n1,2\n";  // not a sweep's copy
+  const RunFolders bad = find_run_folders({root}, false);
+  EXPECT_TRUE(bad.runs.empty());
+  ASSERT_EQ(bad.skipped.size(), 1u);
+  EXPECT_EQ(bad.skipped[0].second, "line 1: the first column is not 'case'");
+
+  std::ofstream(root + "/sweep_cases.csv") << "case,size\n../force_1,1\n";
+  const RunFolders outside = find_run_folders({root}, false);
+  EXPECT_TRUE(outside.runs.empty());
+  ASSERT_EQ(outside.skipped.size(), 1u);
+  EXPECT_EQ(outside.skipped[0].second, "line 2: '../force_1' is not a case folder name");
+}
+
 TEST(CollectLib, RunParametersAreTheScalarKeys)
 {
   const std::string root = make_sweep("params");
