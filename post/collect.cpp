@@ -31,10 +31,21 @@ bool is_file(const fs::path &p)
   return fs::is_regular_file(p, ec);
 }
 
+}  // namespace
+
+std::string run_signal_file(const std::string &run)
+{
+  const std::string text = run + "/signal.txt", binary = run + "/signal.npy";
+  return !is_file(text) && is_file(binary) ? binary : text;
+}
+
+namespace {
+
 // "" when `dir` is a run, else why not; `container` is set when it holds neither file.
 std::string run_status(const fs::path &dir, bool &container)
 {
-  const bool sig = is_file(dir / "signal.txt"), meta = is_file(dir / "run.json");
+  const bool sig = is_file(dir / "signal.txt") || is_file(dir / "signal.npy"),
+             meta = is_file(dir / "run.json");
   container = !sig && !meta;
   if (sig && meta) return "";
   if (sig) return "no run.json";
@@ -131,7 +142,7 @@ RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursiv
       continue;
     }
     if (fs::is_regular_file(st)) {
-      if (dir.filename() != "signal.txt") {
+      if (dir.filename() != "signal.txt" && dir.filename() != "signal.npy") {
         skipped.emplace_back(shown, "not a folder (give run folders or their signal.txt)");
         continue;
       }

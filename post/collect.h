@@ -18,7 +18,8 @@ struct RunFolders {
   std::vector<std::pair<std::string, std::string>> skipped;  // path, reason (in scan order)
 };
 
-// Each path given is a run folder, a run's signal.txt (its folder is the run), or - with
+// A run is a folder holding run.json and signal.txt (or signal.npy). Each path given is a run
+// folder, a run's signal file (its folder is the run), or - with
 // `recursive` - a folder searched with its subfolders (hidden ones excepted, symbolic links to
 // folders not followed). Skipped, with the reason: a given path that is not a run (does not
 // exist, lacks signal.txt or run.json; with `recursive`: holds no run at all), and, while
@@ -28,6 +29,10 @@ struct RunFolders {
 // run but holds sweep_cases.csv, doc/case_table.md) gives, without `recursive`, the case
 // folders it lists; a listed case that is not a run is skipped with its line number.
 RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursive);
+
+// A run's signal file: RUN/signal.txt, or RUN/signal.npy when only that one exists (the deck's
+// -var signal_format npy).
+std::string run_signal_file(const std::string &run);
 
 // Natural order of paths: runs of digits compare by value ("size_2" < "size_10"), then
 // byte-wise as a tie-break. A strict weak ordering.

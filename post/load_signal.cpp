@@ -28,11 +28,13 @@ bool is_mat_input(const InputOptions &opt)
   return has_mat_extension(f) || (std::filesystem::is_regular_file(f, ec) && has_mat_header(f));
 }
 
-// .npy files likewise: --input npy, or their magic (the extension alone is not trusted).
+// .npy files likewise: --input npy, or their magic (the extension alone is not trusted); a
+// binary table is a table (`--input table`, what collect asks for, reads it too).
 bool is_npy_input(const InputOptions &opt)
 {
   if (opt.format == "npy") return true;
-  return opt.format == "auto" && opt.files.front() != "-" && has_npy_header(opt.files.front());
+  return (opt.format == "auto" || opt.format == "table") && opt.files.front() != "-" &&
+         has_npy_header(opt.files.front());
 }
 
 std::string detect(const InputOptions &opt, LineReader &in)

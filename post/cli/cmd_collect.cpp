@@ -56,7 +56,7 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
 {
   RunResult r;
   r.run = run;
-  const std::string signal = run + "/signal.txt", json = run + "/run.json";
+  const std::string signal = run_signal_file(run), json = run + "/run.json";
   std::vector<std::string> ns;
   r.params = run_parameters(json, &ns);
   r.params.erase(std::remove_if(r.params.begin(), r.params.end(),

@@ -93,6 +93,15 @@ def test_npy_equal(r, post):
         return [l for l in res.stdout.splitlines() if not l.startswith("#")]
     st, sb = stats(text, "signal.txt"), stats(binary, "signal.npy")
     check(len(st) > 5 and st == sb, "npy_equal: ohmdem-post stats identical from both files")
+    res = subprocess.run([post, "collect", text, binary, "--format", "csv"], capture_output=True,
+                         text=True)
+    rows = [l.split(",") for l in res.stdout.splitlines() if l and not l.startswith("#")]
+    head = rows[0] if rows else []
+    keep = [i for i, k in enumerate(head) if k not in ("run", "out")]
+    check(res.returncode == 0 and len(rows) == 3 and
+          [rows[1][i] for i in keep] == [rows[2][i] for i in keep],
+          f"npy_equal: collect finds the signal.npy run and gives it the text run's row "
+          f"({res.stderr.strip()})")
 
 
 def test_npy_restart_append(r):
