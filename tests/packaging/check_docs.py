@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Every style page of doc/ has the sections of a LAMMPS/LIGGGHTS doc page, in order, the
 plain-text (doc/src/*.txt) syntax block, and says how it behaves under fix_modify (or
-compute_modify), across runs (start/stop) and during minimize.
+compute_modify), across runs (start/stop) and during minimize; the keywords of the Markdown
+syntax list and of the plain-text block are the same (a keyword added to one only is named).
 
     check_docs.py SOURCE_DIR
 """
@@ -12,6 +13,20 @@ import sys
 
 SECTIONS = ["Syntax", "Examples", "Description", "Output info", "Restart info",
             "Restrictions", "Related commands", "Default", "References"]
+
+
+def keyword_drift(markdown, block):
+    """The keywords of the Markdown list and of the plain-text block must be the same."""
+    out = []
+    listed = set(re.findall(r"^ {2,}\* `([A-Za-z_]+)", markdown, flags=re.M))
+    words = set(re.findall(r"[A-Za-z_]+", block))
+    for k in sorted(listed - words):
+        out.append("'%s' is in the Markdown syntax list but not in the plain-text block" % k)
+    line = re.search(r"^keyword = (.*):l$", block, flags=re.M)
+    for k in re.findall(r"\{([A-Za-z_/]+)\}", line.group(1) if line else ""):
+        if "`" + k not in markdown:
+            out.append("keyword '%s' of the plain-text block is not in the Markdown syntax" % k)
+    return out
 
 
 def problems(path):
@@ -39,6 +54,7 @@ def problems(path):
                        % kind)
         if "ID, group-ID are documented in" not in b or ":ulb,l" not in b or ":ule" not in b:
             out.append("the plain-text block needs the argument list (:ulb,l ... :ule)")
+        out += keyword_drift(syntax[:block.start()], b)
     restart = text.split("## Restart info")[-1].split("\n## Restrictions")[0]
     modify = "fix_modify" if kind == "fix" else "compute_modify"
     for needle, what in [(modify, modify), ("`start` and `stop`", "run start/stop"),
