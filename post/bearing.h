@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Rolling-bearing geometry, the bearing catalog it comes from, and the kinematic (defect)
 // frequencies (Harris' formulas for a rotating inner ring and a fixed outer ring).
 #ifndef OHMDEM_POST_BEARING_H

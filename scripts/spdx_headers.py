@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """SPDX license lines in every source file of ohmdem (C++, CMake, shell, Python).
 
     scripts/spdx_headers.py --check   lists the files without the line, exit 1 if any

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs what is missing, builds ohmdem and ohmdem-post, and runs the whole test suite.
 #   scripts/test.sh            (the README's test command; CI runs it too)
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The cases of inputs/bearing_6208/in.sweep as a Slurm job array: one job per case, each
 # running the bearing deck on its own (MPI inside a job is fine: -n > 1 gives the same
 # numbers). Submit from the repository root:

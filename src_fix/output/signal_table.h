@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A '#'-headed table of numbers written row by row at full rate: each value in its shortest
 // round-trip decimal form (std::to_chars: reads back to the same double), rows gathered in a
 // large buffer and written in blocks, flushed at least every `flush_seconds` of wall time so

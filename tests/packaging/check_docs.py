@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Every style page of doc/ has the sections of a LAMMPS/LIGGGHTS doc page, in order, the
 plain-text (doc/src/*.txt) syntax block, and says how it behaves under fix_modify (or
 compute_modify), across runs (start/stop) and during minimize; the keywords of the Markdown

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # cmake --install gives a working tree: install BUILD into a temporary prefix, then run the
 # bearing deck from there the two ways README "Install" documents (a short run) and the post
 # tool on its signal, away from the source tree.

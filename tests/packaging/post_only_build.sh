@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The post-only build (-DOHMDEM_POST_ONLY=ON) for people who only analyse records: configures
 # without LIGGGHTS, MPI, Eigen and hypre, builds ohmdem-post and its tests, runs them (label post).
 #   post_only_build.sh SOURCE_DIR BUILD_DIR
