@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem: the LIGGGHTS engine with the ohmdem styles.
 //
 // Identical to LIGGGHTS' own main(): same command line (-in, -var, -log, -screen, -echo,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The styles of src_fix/ (BEARING/, ELECTRIC/, OUTPUT/), one line each. No include guard on
 // purpose: this list is included once for the class declarations and again with FIX_CLASS /
 // COMPUTE_CLASS defined, where each header expands to its FixStyle(...) / ComputeStyle(...)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Registers the ohmdem styles in LIGGGHTS' style tables.
 //
 // LIGGGHTS 3.8 has no plugin loader and keeps its style maps (Modify::fix_map,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // How a run ended, recorded in ${out}/run.json; standard streams flushed before an abort.
 #include "run_status.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // How a run ended, recorded where its outputs are (doc/run_status.md).
 #ifndef OHMDEM_RUN_STATUS_H
 #define OHMDEM_RUN_STATUS_H

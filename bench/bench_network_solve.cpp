@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Speed versus accuracy of the network solvers on packing-like networks (2D and 3D lattices
 // of particles, one node per contact, eq. 1 cliques inside each particle): sparse direct
 // (LDL^T) against preconditioned CG, cold and warm-started, from 1e3 to 1e5 nodes, plus the

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Regenerates the study report, REPORT_DIR/report.md, with its figures: the healthy and
 # defective signals, the Fig. 13 / Fig. 15 counterparts, the validation numbers (from the test
 # suite), the detectability and the load/speed studies, and the speed tables (ours vs stock

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Finds Debian's LIGGGHTS 3.8 development files (package libliggghts-dev):
 # headers under /usr/include/liggghts and libliggghts.so. Defines LIGGGHTS::LIGGGHTS.
 find_path(LIGGGHTS_INCLUDE_DIR NAMES lammps.h fix.h modify.h

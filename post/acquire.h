@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The measurement chain of an instrument: what a data acquisition system records of a signal.
 // In order: scale and offset (sensor sensitivity, e.g. the injected current turning R into a
 // voltage), anti-alias Butterworth low-pass at the input rate, sampling at the instrument's

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 #include "bearing.h"
 
 #include <dirent.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -19,6 +21,9 @@
 #ifndef OHMDEM_CATALOG_DIR
 #define OHMDEM_CATALOG_DIR "inputs/bearings"
 #endif
+#ifndef OHMDEM_INSTALLED_CATALOG
+#define OHMDEM_INSTALLED_CATALOG "../share/ohmdem/inputs/bearings"
+#endif
 
 namespace ohmdem::post {
 
@@ -28,6 +33,26 @@ bool is_regular(const std::string &path)
 {
   struct stat st {};
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+bool is_folder(const std::string &path)
+{
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+// The catalog installed beside this executable (PREFIX/bin -> PREFIX/share/ohmdem/...), or ""
+// when the executable runs from a build tree.
+std::string installed_catalog_dir()
+{
+  std::string exe(4096, '\0');
+  const ssize_t n = ::readlink("/proc/self/exe", exe.data(), exe.size() - 1);
+  if (n <= 0) return "";
+  exe.resize(static_cast<std::size_t>(n));
+  const std::string dir = exe.substr(0, exe.rfind('/')) + "/" + OHMDEM_INSTALLED_CATALOG;
+  if (!is_folder(dir)) return "";
+  std::unique_ptr<char, decltype(&std::free)> clean(::realpath(dir.c_str(), nullptr), std::free);
+  return clean ? std::string(clean.get()) : dir;  // PREFIX/share/..., not PREFIX/bin/../share/...
 }
 
 std::string joined(const std::vector<std::string> &names)
@@ -57,7 +82,9 @@ BearingGeometry CatalogEntry::geometry() const
 std::string default_catalog_dir()
 {
   const char *env = std::getenv("OHMDEM_CATALOG");
-  return env && *env ? env : OHMDEM_CATALOG_DIR;
+  if (env && *env) return env;
+  const std::string installed = installed_catalog_dir();
+  return installed.empty() ? OHMDEM_CATALOG_DIR : installed;
 }
 
 std::vector<std::string> catalog_names(const std::string &dir)

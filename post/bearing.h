@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Rolling-bearing geometry, the bearing catalog it comes from, and the kinematic (defect)
 // frequencies (Harris' formulas for a rotating inner ring and a fixed outer ring).
 #ifndef OHMDEM_POST_BEARING_H
@@ -29,8 +30,9 @@ struct CatalogEntry {
   BearingGeometry geometry() const;
 };
 
-// The catalog folder: $OHMDEM_CATALOG if set and not empty, else the source tree's
-// inputs/bearings (compile-time default).
+// The catalog folder: $OHMDEM_CATALOG if set and not empty, else the installed catalog
+// (PREFIX/share/ohmdem/inputs/bearings) when this executable is the installed one, else the
+// source tree's inputs/bearings (compile-time default).
 std::string default_catalog_dir();
 // Entries of DIR: regular files whose name has no dot, sorted. Throws Error if DIR is no folder.
 std::vector<std::string> catalog_names(const std::string &dir);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Digital Butterworth low-pass filters as second-order sections, designed as
 // scipy.signal.butter(N, fc, fs=fs, output='sos') does (analog prototype poles, bilinear
 // transform with the cut-off prewarped, 'nearest' pole-zero pairing, gain in the first section),

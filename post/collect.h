@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Gathering many runs into one table (ohmdem-post collect): finding the run folders (a folder
 // holding signal.txt and run.json), their swept parameters (the scalar keys of run.json), and
 // the indicators' names and values as `stats` prints them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A table of numeric columns read from a text file, with enough provenance (source line of each
 // row, printed resolution of each column, first non-finite entry) for precise error messages.
 #ifndef OHMDEM_POST_COLUMN_TABLE_H

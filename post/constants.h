@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Constants of the post-processing library, defined once (std::numbers is C++20).
 #ifndef OHMDEM_POST_CONSTANTS_H
 #define OHMDEM_POST_CONSTANTS_H

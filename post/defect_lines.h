@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The kinematic lines of a bearing - shaft, cage, outer race, inner race, ball spin, ball
 // defect - as one table: peak labels, fault bands, plot markers, the `frequencies` listing and
 // the diagnosis columns all read it, in this order.

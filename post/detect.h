@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Fault detection, the first stage of `diagnose`: is the signal unlike a healthy one, whatever
 // the defect? Statistics with explicit thresholds at a stated false-alarm probability per test:
 // against the Gaussian law (kurtosis, crest factor, spectral kurtosis of the envelope band) and,

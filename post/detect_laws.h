@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Sampling laws of detection statistics under the Gaussian law (kurtosis, crest factor,
 // spectral kurtosis) and the Student t law of the baseline bounds: p-values and thresholds,
 // each checked against scipy.stats (tests/post/test_detect.cpp).

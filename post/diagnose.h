@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Defect diagnosis in two stages: detection (is the record unlike a healthy one: detect.h), then
 // identification: peaks of the spectrum and of the envelope spectrum matched against the
 // bearing's defect families (harmonic combs with shaft/cage sidebands, a tolerance for slip),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Envelope analysis: ideal band-pass in the frequency domain and Hilbert transform through
 // FFTW (|analytic signal|), and the fast spectral-kurtosis kurtogram used to choose the band.
 #ifndef OHMDEM_POST_ENVELOPE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Errors of the post-processing library: one exception type, caught by the command line,
 // which prints "ERROR: <message>" on stderr and exits non-zero.
 #ifndef OHMDEM_POST_ERROR_H

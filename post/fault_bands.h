@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Fault bands of a spectrum: for each harmonic of each kinematic line of a bearing, the band
 // h f (1 +- tolerance), its largest bin (interpolated) and its power.
 #ifndef OHMDEM_POST_FAULT_BANDS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // FFTW behind a small interface (PIMPL: including this header does not pull in fftw3.h).
 // Plans are made once per size and kind with FFTW_ESTIMATE (deterministic) and reused through
 // FFTW's new-array execute functions; of the plans longer than 65536 points only the last one

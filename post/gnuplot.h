@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // PNG figures rendered by gnuplot (Debian gnuplot-nox, pngcairo terminal): the data go to
 // temporary files, gnuplot runs as a child process (no shell), its messages are reported on
 // failure. The gnuplot executable is $OHMDEM_GNUPLOT if set, else `gnuplot` from PATH.

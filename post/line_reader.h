@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Line-by-line reading of a text input with line numbers: a file, or standard input for "-".
 // The input is opened and read once, so pipes, FIFOs and /dev/stdin work like files: format
 // detection peeks at the first non-blank line and hands it back to the parser. Lines are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Turns input files into one uniformly sampled Signal: detects the format (our signal.txt and
 // other column files, LIGGGHTS logs, LIGGGHTS dumps, plain one-column signals), picks the value
 // and time columns, converts time steps to seconds, checks uniform sampling, applies the window.

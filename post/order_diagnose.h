@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Diagnosis of a record whose shaft speed varies: the signal is resampled at constant shaft
 // angle (order tracking) and diagnosed there - "sampling rate" = samples per revolution, shaft
 // frequency = 1 - so that the defect lines, constant in orders, stay sharp; the results are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Order tracking: a signal sampled uniformly in time is resampled at constant increments of the
 // shaft angle, so that lines tied to the shaft (orders: cycles per revolution, such as the
 // defect families BPFI/fr, BPFO/fr, 2 BSF/fr, FTF/fr) stay sharp while the speed varies. The

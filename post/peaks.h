@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Peaks of a spectrum: local maxima standing out of a running-median noise floor, with the
 // frequency and amplitude interpolated from the window's exact transform.
 #ifndef OHMDEM_POST_PEAKS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Rectangular pulses in a level signal (our R(t): a constant level with steps while a ball's
 // path is broken): direct detection at half height, and a time-synchronous average at a known
 // repetition frequency for noisy records. Used to estimate the defect size from pulse widths.

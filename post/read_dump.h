@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Streaming reader for LIGGGHTS text dumps (`dump custom` with `ITEM: ATOMS ...` and
 // `dump local` with `ITEM: ENTRIES ...`): one column is aggregated over the rows of each frame,
 // giving one value per time step. Several files are merged, sorted by time step, duplicates

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Reader for LIGGGHTS/LAMMPS log files: the thermo blocks of every run (a block starts at a
 // header line whose first word is `Step` and ends at `Loop time of`), and the `timestep`
 // commands echoed in the log.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // MATLAB .mat records (v5, and v7.3 when libmatio is built with HDF5, as Debian's is) through
 // libmatio: real numeric vectors (double, single, integer classes) as doubles, with errors that
 // name the variables present. Used by load_signal for `--input mat` and `.mat` files.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Reader for whitespace-separated column files: our signal.txt, LIGGGHTS `fix ave/time` and
 // `fix print` files, and plain one- or many-column signals without a header.
 #ifndef OHMDEM_POST_READ_TABLE_H

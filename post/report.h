@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What a command found, built once as a Result, and the shared renderers that print it in the
 // three output forms: an aligned text table (default), CSV (header row with units in the column
 // names, '#' metadata lines) and JSON.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The source line of each row of a table, stored as runs of consecutive lines: a data file
 // whose rows follow each other costs a few words instead of one per row (for messages only).
 #ifndef OHMDEM_POST_ROW_LINES_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The run's metadata written by our decks next to signal.txt (run.json): bearing, speed, time
 // step, sliding-phase end. Every field is optional; present fields are type-checked.
 #ifndef OHMDEM_POST_RUN_METADATA_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A uniformly sampled signal, the input of every analysis, and the operations that produce one
 // from time-stamped samples (uniformity check, optional resampling) or restrict it in time.
 #ifndef OHMDEM_POST_SAMPLED_SIGNAL_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Short-time amplitude spectrum of a record as an image: the amplitude spectrum of segments
 // of a fixed length, hopping along the record, in dB.
 #ifndef OHMDEM_POST_SPECTROGRAM_H

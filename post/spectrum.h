@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // One-sided spectra of a real signal through FFTW: amplitude (a sine of amplitude A reads A at
 // its bin, window coherent gain corrected), power (A^2/2 per sine, sums to the mean square) or
 // power spectral density (ENBW corrected, unit^2/Hz). Detrending, zero padding and Welch

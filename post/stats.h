@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Statistical indicators of a signal (paper section 4, plus skewness, impulse and clearance).
 #ifndef OHMDEM_POST_STATS_H
 #define OHMDEM_POST_STATS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Small text helpers shared by the readers: splitting, strict number parsing and the decimal
 // resolution of a printed number (used to tell printing jitter from non-uniform sampling).
 #ifndef OHMDEM_POST_TEXT_SCAN_H

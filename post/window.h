@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Spectral windows (periodic / "DFT-even" cosine sums, as scipy.signal.get_window), their
 // amplitude (coherent gain) and noise (ENBW) corrections, and the exact transform of each
 // window, used to interpolate spectral peaks.

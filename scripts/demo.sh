@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The README's demo: installs what is missing, builds, runs the SKF 6208 scene healthy and with
 # an inner-race defect, post-processes both (indicators, spectra, diagnosis) and plots them.
 #   scripts/demo.sh [OUTPUT_DIR]      (default: demo-output)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs the Debian packages ohmdem needs to build, test and run its demo, if missing.
 set -euo pipefail
 packages=(

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Installs what is missing, builds ohmdem and ohmdem-post, and runs the whole test suite.
 #   scripts/test.sh            (the README's test command; CI runs it too)
 set -euo pipefail
@@ -9,7 +10,11 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
-ctest --test-dir build --output-on-failure -j2
+ctest --test-dir build --output-on-failure -j2 -LE build
+
+# The post-only build (-DOHMDEM_POST_ONLY=ON: ohmdem-post and its tests without LIGGGHTS, MPI,
+# hypre) in a build folder of its own: a step apart, as it compiles the post tool again.
+ctest --test-dir build --output-on-failure -L build
 
 # The post-processing and network kernels again under AddressSanitizer + UBSan: bad input
 # must give a clear error, never a memory error (the engine itself links the uninstrumented

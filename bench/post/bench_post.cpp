@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Times the post-processing library on one long signal: the amplitude spectrum (mean removed,
 // Hann window, FFTW r2c) and the envelope spectrum (Hilbert envelope of the whole band through
 // FFTW, then its amplitude spectrum). Prints one JSON object; run_bench.py compares it with

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Cost of the electrical compute on the SKF 6208 scene, as ratios measured in one run:
 # the mechanics alone, then R evaluated at every step (fix ave/time) in each mode, with the
 # value of R each mode gives (greenwood against the exact Hertz areas: speed against error).

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Cost of writing the signal at full rate on the SKF 6208 deck: the loop time (LIGGGHTS' "Loop
 # time of", the time stepping alone) with signal.txt written every step against every 100th
 # step (fix signal/table; R evaluated for every row written), every step in the binary .npy

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Speed against error on the SKF 6208 scene with a 1 deg inner-race defect: for each time step
 # and mode, the wall time per simulated second (R computed at every step, signal.txt written at
 # 100 kHz) next to the error of what users read against the finest run (dt = 2.5e-7 s): mean R,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Cage speed after the sliding phase, from a bearing time series.
 
 usage: cage_speed.py FILE [--theory W] [--tol 0.01] [--window 10]

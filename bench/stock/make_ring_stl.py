@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """ASCII STL of a race built the stock LIGGGHTS way: a cylinder band about the z axis.
 
 usage: make_ring_stl.py --radius R --height H (--segments N | --max-error E)

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Bearing benchmark runner: SKF 6208 balls between races, one run per scene, then a table of
 # wall time per step and cage-speed error after the sliding phase (bench/README.md).
 #

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The 4-case partition sweep on 2 processes against the same 4 cases one after another (one
 # partition, one process), in one run: wall times and their ratio (goal: at most 0.6).
 #   bench/sweep/run_sweep_bench.sh [TEND]      (default 0.05 s simulated per case)

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The paper's defect study on the SKF 6208 (Machado et al. 2014, §4), with ohmdem:
 #  - Fig. 13 counterpart: the four defect kinds at 500 rad/s (outer ring under the paper's
 #    isotropic force), R(t), spectra and the diagnosis of ohmdem-post;

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The detectability study: the smallest defect an instrument can see (Machado et al. 2014 end on
 it: "due to the limited sampling frequency of measuring devices, it will not be possible to
 identify defects with a small size, but the expected resolution will be better than vibrational

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The detectability study: defect sizes x instruments (sampling rate, noise, ADC bits) x
 # channels (electrical R, ring acceleration), acquired and diagnosed with ohmdem-post.
 # Writes OUT/detectability.csv, OUT/detectability.md and the maps.

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The load and speed study the paper announced (Machado et al. 2014, conclusion): statistical
 indicators of R(t) (RMS, kurtosis, crest, peak) and the diagnosis against the load F and the
 inner ring speed, healthy and with a 1 deg inner-race defect, outer ring under force control

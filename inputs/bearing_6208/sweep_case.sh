@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Called by in.bearing with -var resume 1 (sweeps): is the case in OUT already finished with the
 # same parameters? OUT/run.done.json is the run.json of the case when it finished; OUT/run.json
 # was just written for this run (status running). Writes OUT/resume.lmp:

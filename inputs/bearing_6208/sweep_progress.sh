@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Called by in.sweep: `start` notes when the sweep began (kept across resumed runs); a case
 # that ends is recorded in ROOT/finished.txt and the sweep's progress is printed.
 #   sweep_progress.sh ROOT NCASES start

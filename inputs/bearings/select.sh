@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # Called by inputs/bearing_6208/in.bearing (through LIGGGHTS' shell command, on rank 0) to turn
 # -var bearing NAME into a LIGGGHTS snippet OUT that the deck includes:
 #   - NAME in the catalog: include the catalog file, and define catalog_X for each of its

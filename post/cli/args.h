@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Command-line options of one ohmdem-post command: declared with their help text, parsed
 // strictly (an unknown option or a missing value is an error naming it), printed by --help.
 #ifndef OHMDEM_POST_CLI_ARGS_H

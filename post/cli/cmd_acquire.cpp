@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post acquire: what an instrument records of a signal (sensitivity, anti-alias filter,
 // sampling, noise, ADC), written as a '#'-headed "time value" table the other commands read.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post collect: the indicators of many run folders in one table, one row per run, with
 // the swept parameters read from each run's own run.json.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post diagnose: detection (is something wrong), then the most likely bearing defect,
 // its score, evidence and size.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post envelope: band-pass + Hilbert envelope, its spectrum, and the kurtogram.
 #include <algorithm>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post frequencies: kinematic defect frequencies from geometry and shaft speed.
 #include <iostream>
 

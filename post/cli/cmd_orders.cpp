@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post orders: order spectrum and envelope order spectrum of a signal resampled at
 // constant shaft-angle increments (order tracking), with the defect families marked in orders.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post plot: PNG figures through gnuplot.
 #include <algorithm>
 #include <cmath>

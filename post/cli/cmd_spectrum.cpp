@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post spectrum: one-sided spectrum and its peaks.
 #include <iostream>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post stats: the statistical indicators of the paper and more, over a window or per
 // sliding window.
 #include <cmath>

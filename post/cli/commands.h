@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The dispatch table of ohmdem-post: one entry per command (issue 6 adds `collect` here).
 #ifndef OHMDEM_POST_CLI_COMMANDS_H
 #define OHMDEM_POST_CLI_COMMANDS_H

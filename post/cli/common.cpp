@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 #include "common.h"
 
 #include <algorithm>
@@ -119,8 +120,8 @@ void add_bearing_options(Args &a)
            "a bearing of the catalog (inputs/bearings, e.g. 6208 the paper's, 6205-2RS_JEM "
            "CWRU's drive end)");
   a.option("--catalog", "DIR",
-           "bearing catalog folder (default: $OHMDEM_CATALOG, else the source tree's "
-           "inputs/bearings)");
+           "bearing catalog folder (default: $OHMDEM_CATALOG, else the installed "
+           "share/ohmdem/inputs/bearings, else the source tree's inputs/bearings)");
   a.option("--nb", "N", "number of balls");
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Options shared by several commands: input selection, output format, bearing and speed.
 #ifndef OHMDEM_POST_CLI_COMMON_H
 #define OHMDEM_POST_CLI_COMMON_H

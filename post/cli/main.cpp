@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post: the post-processing command line (commands in commands.cpp).
 #include "commands.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The shaft angle of a record for order tracking: an angle column (rad), a speed column
 // integrated (rad/s, rpm or Hz), or our signal.txt's `angle_inner` column found automatically.
 #ifndef OHMDEM_POST_CLI_SHAFT_ANGLE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Spectrum and peak options shared by `spectrum` and `envelope`.
 #ifndef OHMDEM_POST_CLI_SPECTRUM_OPTIONS_H
 #define OHMDEM_POST_CLI_SPECTRUM_OPTIONS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - the common base of fix bearing/race and fix bearing/cage.
 ------------------------------------------------------------------------- */

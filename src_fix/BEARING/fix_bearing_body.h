@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - the common base of fix bearing/race and fix bearing/cage: a rigid
    body of the bearing with its own degrees of freedom, a contact state per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/cage. Contact physics in cage_contact.{h,cpp}; this file
    parses, assigns balls to pockets, integrates the cage rotation, reduces the

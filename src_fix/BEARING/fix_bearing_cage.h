@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/cage: a rigid cage with N pockets, one rotational
    degree of freedom, driven by the balls.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/defect. Pit geometry in contact/defect_geometry.*; the
    races and the cage ask this fix about each contact (recess(), breaks_wall()),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/defect: a local defect of a bearing (a pit on a race
    or on a ball, or a broken cage bar), seen by fix bearing/race and fix

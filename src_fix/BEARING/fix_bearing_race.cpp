@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/race: an analytic bearing ring with a toroidal groove.
    Contact physics lives in contact/race_contact.{h,cpp}, the arguments in

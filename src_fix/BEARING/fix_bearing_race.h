@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - electrical signatures of bearing defects, a LIGGGHTS extension.
    fix bearing/race: an analytic bearing ring with a toroidal groove.

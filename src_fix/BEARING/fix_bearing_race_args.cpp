@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/race: its arguments (the keywords, what each load mode
    needs, the load vector) and the variables omega/force may name. The step is in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // fix bearing/race: what stops a run before it goes wrong — a load beyond the contacts'
 // elastic range, a restart whose geometry changed, and the per-step runaway check
 // (contact/runaway.h; doc/run_status.md).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute contact/area. The contacts and their areas come from
    ELECTRIC/contact_set.*; this file parses and fills the local array.

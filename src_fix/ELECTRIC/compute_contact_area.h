@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute contact/area: one row per conducting contact with its
    rigid-Hertz contact ellipse (paper eqs. 2-5), for dump local.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance. The contacts come from ELECTRIC/contact_set.*,
    conductances from electric/, the solve from network/;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance: the electrical resistance of a
    contact network between two electrodes (paper eq. 1, Kirchhoff + Ohm).

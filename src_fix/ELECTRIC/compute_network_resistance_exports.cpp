@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // compute network/resistance: the SPICE netlist and VTK exports of the network (keywords
 // netlist and vtk), checked on every process at the start of a run, written by process 0.
 #include <mpi.h>

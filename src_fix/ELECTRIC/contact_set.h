@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The conducting contacts of a group on the current step, for the electrical computes:
 // ball–race contacts from every fix bearing/race, and particle–particle contacts from the
 // granular pair style (the normal force LIGGGHTS' pair style applies, read through an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix signal/table. The table itself (formatting, buffering, continuing
    a file after a restart) is plain C++ in signal_table.{h,cpp}; this file parses,

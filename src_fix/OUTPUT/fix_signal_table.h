@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - fix signal/table: global values of computes, fixes and variables
    written every N steps to a '#'-headed table, at full rate (buffered,

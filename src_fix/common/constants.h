@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The one home of the mathematical constants of the engine side. kPi is the double nearest
 // to pi, the same value as POSIX M_PI (which the C++ standard does not promise).
 #ifndef OHMDEM_CONSTANTS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Cube root for the per-step hot loops (plain C++, no LIGGGHTS types).
 //
 // Contact areas go as fn^(2/3), so the closed-form bearing resistance takes one cube root per

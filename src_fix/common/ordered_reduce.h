@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Sums per-particle contributions over all MPI ranks in particle-tag order, so that the
 // result is bitwise the same whatever the domain decomposition (1 or N processes).
 // A plain MPI_Allreduce would add partial sums in an order that depends on which rank

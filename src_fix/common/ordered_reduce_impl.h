@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Template implementation of ordered_reduce.h (kept apart so the header reads as an API).
 #ifndef OHMDEM_ORDERED_REDUCE_IMPL_H
 #define OHMDEM_ORDERED_REDUCE_IMPL_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Ball–pocket contact of a bearing cage: a rigid ring with N pockets turning about the
 // bearing axis. A pocket is a slot bounded by two flat walls parallel to the radial line
 // through its centre, at +-(ball radius + clearance) from that line; the cage does not hold

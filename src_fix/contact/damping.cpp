@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Restitution damping; see damping.h.
 #include "contact/damping.h"
 

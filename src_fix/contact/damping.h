@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Viscous contact damping set by a coefficient of restitution, LIGGGHTS' Hertz form, shared
 // by the race and cage contact kernels: gamma = -2 sqrt(5/6) beta sqrt(S m), with S the
 // contact stiffness dQ/ddelta (or the tangential one), m the ball mass and

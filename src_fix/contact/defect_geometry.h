@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Defects as pits: the geometry of a local surface defect of a bearing (plain C++).
 //
 // A defect is a zone of angular size Δφ on a race (fixed on the ring), or on a ball (turning

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Hertz contact geometry of two elastic bodies with principal curvatures (elliptic contact),
 // plain C++ (no LIGGGHTS types). Physics and sources: doc/hertz_contact.md.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Ball–race contact of a bearing: a ball in the toroidal groove of an analytic ring, in the
 // bearing plane (2D: positions and velocities in x, y; spins about z).
 //

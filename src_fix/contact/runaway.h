@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Signs that the integration of a race and its balls has run away (a time step too large for
 // the contact stiffness, a ring or ball without mass, a damping that overshoots): past them the
 // physics is gone and every output would be garbage, so the run must stop and say why.

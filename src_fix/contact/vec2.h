@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A vector in the bearing plane (x, y), shared by the contact kernels.
 #ifndef OHMDEM_VEC2_H
 #define OHMDEM_VEC2_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The conduction laws: paper eq. 1 with the small-angle bound, Holm's constriction; see
 // conductance_laws.h, doc/conduction_network.md and doc/compute_network_resistance.md.
 #include "electric/conductance_laws.h"

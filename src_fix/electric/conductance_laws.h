@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The conduction laws, each written once, plain C++ (no LIGGGHTS types): the bulk law (paper
 // eq. 1, inside a particle), the constriction law (Holm, across a contact spot) and the mixing
 // rule of two bodies' resistivities. electric/conduction_model.h composes them.

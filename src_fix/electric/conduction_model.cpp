@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The composition table of the conduction model and the run-constant part of the bearing's
 // closed form; see conduction_model.h.
 #include "electric/conduction_model.h"

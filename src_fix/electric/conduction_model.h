@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The electrical model of a contact network, plain C++ (no LIGGGHTS types): two slots,
 //   bulk          the path inside a conducting particle between two of its spots: eq. 1 or none;
 //   constriction  the resistance of a contact spot between two bodies: Holm or none;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The general network of the conduction model; see network_builder.h.
 #include "electric/network_builder.h"
 

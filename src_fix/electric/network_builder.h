@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The general evaluation of the conduction model: the contact network of any scene (races,
 // particle-particle contacts, electrode groups) as a ConductionNetwork, plain C++ (no
 // LIGGGHTS types). The records are what compute network/resistance gathers over MPI, each

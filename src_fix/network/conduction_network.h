@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Electrical network of a contact network: Kirchhoff + Ohm on a graph whose nodes are
 // contact points and whose edges are conductances (paper eq. 1 inside particles, optionally
 // Holm constriction conductances across contacts). Two nodes are electrodes: current I

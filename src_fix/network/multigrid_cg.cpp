@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // CG + BoomerAMG through hypre's IJ interface (see multigrid_cg.h).
 #include "network/multigrid_cg.h"
 

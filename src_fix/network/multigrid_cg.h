@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Conjugate gradients preconditioned by algebraic multigrid (hypre's BoomerAMG), for the
 // large network solves: CG with a diagonal preconditioner needs iterations in proportion to
 // the network's diameter (time ~ N^1.35 on 3D packings), one AMG V-cycle per iteration keeps

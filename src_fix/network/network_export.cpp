@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // SPICE and legacy-VTK writers; see network_export.h for the conventions.
 #include "network/network_export.h"
 

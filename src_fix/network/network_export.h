@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Writers for a ConductionNetwork: a SPICE netlist (independent check with a circuit
 // simulator, e.g. `ngspice -b`) and legacy-VTK line sets (ParaView). Output is a function of
 // the network content only, never of the insertion order.

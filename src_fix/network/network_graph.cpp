@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The graph of a conduction network; see network_graph.h.
 #include "network/network_graph.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The graph of a conduction network (internal to network/): edges in canonical order, node
 // indices, adjacency lists with parallel edges merged, the component of an electrode.
 #ifndef OHMDEM_NETWORK_GRAPH_H

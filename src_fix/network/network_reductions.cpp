@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Exact reductions of a conduction network; see network_reductions.h.
 #include "network/network_reductions.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Exact reductions of a conduction network (internal to network/): Kirchhoff's series and
 // dangling-node rules before a solve, and the subtraction-free Kron elimination used when a
 // factorization cannot reach its accuracy. doc/conduction_network.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The solve strategy of a conduction network; see network_solve.h.
 #include "network/network_solve.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The solve strategy of a conduction network (internal to network/): the grounded, diagonally
 // scaled Laplacian of the reduced graph solved by CG (diagonal, incomplete Cholesky or
 // multigrid preconditioner, warm-started), else by sparse LDL^T with iterative refinement,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A table of numbers written row by row at full rate, rows gathered in a large buffer and
 // written in blocks, flushed at least every `flush_seconds` of wall time so that a reader
 // (tail -f, a crash) sees recent rows. Two formats: text ('#'-headed, each value in its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Argument parsing for the ohmdem styles: every error names the style, the keyword and the
 // expected form (LIGGGHTS' force->numeric() only says "Expected floating point parameter").
 #ifndef OHMDEM_STYLE_ARGS_H

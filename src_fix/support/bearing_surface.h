@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // What flows between the bearing styles, as values (no style includes another): a body (a
 // race or the cage) describes its surface as a BearingSurface; a defect answers queries about
 // a contact on such a surface. fix bearing/race and fix bearing/cage implement BearingBody,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Global restart data of an ohmdem fix, the LAMMPS convention for Fix::write_restart: process
 // 0 writes the size in bytes, then the values; Fix::restart(buf) gets the values back.
 #ifndef OHMDEM_STYLE_GLOBAL_RESTART_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Per-type material properties from `fix property/global ... peratomtype[pair]`, the way the
 // stock granular models read them. Shared by the ohmdem styles (adapter code: LIGGGHTS types).
 #ifndef OHMDEM_MATERIAL_TABLE_H

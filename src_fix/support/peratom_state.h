@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Per-atom state of an ohmdem fix, kept in a `fix property/atom` (vector style) so that it
 // migrates with the atoms between processes and is written to restart files — the LIGGGHTS
 // idiom. A fix re-defined after read_restart with the same ID gets its state back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The contact of one ball with a race, as fix bearing/race publishes it to the electrical
 // computes: named fields over the race's per-atom row (its first columns, the per-atom output
 // documented in doc/fix_bearing_race.md). The one place that knows the layout of that row.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The ohmdem styles work in SI units (lengths in m, forces in N, conductivities in S/m, the
 // Hertz and Holm laws with SI constants): a deck in other units stops with a clear error.
 #ifndef OHMDEM_SUPPORT_REQUIRE_SI_H

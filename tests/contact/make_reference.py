@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reference values for tests/contact, independent of the C++ kernel.
 
 Run:  /usr/bin/python3 tests/contact/make_reference.py > tests/contact/hertz_reference.inc

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Unit tests of the defect (pit) geometry kernel, src_fix/contact/defect_geometry.*.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The inline cube root of the hot loops (src_fix/common/fast_cbrt.h) against libm's std::cbrt,
 // which is the reference (correctly rounded to within 1 ulp in glibc).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Unit tests of the Hertz contact kernel against independent references: scipy (via
 // make_reference.py -> hertz_reference.inc), Johnson's closed forms, std::comp_ellint_*.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The runaway check of the ball-race contacts (src_fix/contact/runaway.*): silent on sound
 // states, a message with the numbers and the likely cause on runaway ones.
 #include <gtest/gtest.h>

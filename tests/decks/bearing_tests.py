@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the SKF 6208 bearing scene (issue: the bearing runs).
 
 Each test runs build/ohmdem on a deck in a fresh folder and checks the physics against

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the bearing catalog (inputs/bearings, issue: any deep-groove ball bearing).
 
 Each test runs build/ohmdem on inputs/bearing_6208/in.bearing with -var bearing NAME and checks

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Shared by the deck test drivers: report a check, remember failures, read signal.txt."""
 import sys
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Defects as contact masks (issue: defects), on the SKF 6208 deck.
 
 Checks against the kinematic frequencies (Harris), the duty of a rectangle train

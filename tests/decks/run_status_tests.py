@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of how a run ends (doc/run_status.md).
 
   finished     exit 0; run.json "status": "finished", "time_reached" = tend; no warning about

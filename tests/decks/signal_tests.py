@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of fix signal/table (the bearing deck's signal.txt writer).
 
   print_equal     every value of signal.txt equals fix print's (15 significant digits, what

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The partition sweep (inputs/bearing_6208/in.sweep): folders, identical signals whatever
 runs the case, resume after a kill (only the cases finished with the same parameters are
 skipped), per-case logs, and a bad case failing alone.

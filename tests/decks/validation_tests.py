@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Validation of compute network/resistance on the decks of inputs/validation/.
 
 chain: R against the closed-form series sum of eq. 1 resistors, computed here from the sphere

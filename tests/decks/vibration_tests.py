@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the vibration channel (outer ring centre velocity and acceleration,
 signal.txt columns vel_along, vel_across, acc_along, acc_across; fix bearing/race vector 12-15).
 

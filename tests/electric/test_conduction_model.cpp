@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The conduction model: its composition table, and closed form == network on the same balls
 // for every row of the table (the bearing's two evaluations of one model).
 #include <gtest/gtest.h>

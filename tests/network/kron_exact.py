@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Exact resistance between `ehigh` and `0` of a SPICE netlist written by write_spice_netlist.
 
 An independent reference for ill-conditioned networks (doc/conduction_network.md, Accuracy).

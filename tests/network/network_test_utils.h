@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Shared helpers for the network tests: random networks, an independent dense reference
 // solve (long double, full-pivot LU), and an ngspice runner.
 #ifndef OHMDEM_TESTS_NETWORK_TEST_UTILS_H

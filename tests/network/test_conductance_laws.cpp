@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Paper eq. 1 conductance, the small-angle clamp and the per-particle helper.
 // Reference numbers: hand calculation with Python's math module (formula in the comments).
 #include <gtest/gtest.h>

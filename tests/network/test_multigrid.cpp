@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // CG preconditioned by algebraic multigrid (src_fix/network/multigrid_cg.*, hypre's BoomerAMG) and
 // its use by the network solver. References: a dense long-double solve (test utils), the sparse
 // direct solve, ngspice, and the analytic solution of a 1D Laplacian. A separate executable:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Networks with a closed-form resistance: series, parallel, Wheatstone bridge, ladder, and
 // the bearing (one resistor per ball, with and without series contact resistances).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Hard cases: empty networks, ignored conductances, floating clusters, no path, nodes that
 // lose their edges between steps, caller errors.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // SPICE netlist and legacy-VTK writers: format, lossless numbers, order independence.
 #include <gtest/gtest.h>
 

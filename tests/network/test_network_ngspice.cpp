@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Independent check with a circuit simulator: the exported netlist is run by `ngspice -b`
 // (Debian package ngspice; CI installs it) and V(ehigh) / I must equal our R to 1e-9.
 // ngspice factorizes the full MNA system with its own sparse LU, without our reduction,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Sparse solvers against an independent dense long-double solve; direct vs CG; warm start;
 // exact reduction; Kirchhoff's current law; bitwise determinism under shuffled insertion.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The signal table writer: every value reads back to the same double, the header, buffering
 // and flushing, and continuing a file after a restart (rows after the restart point dropped,
 // a line cut by a crash dropped, another header refused).

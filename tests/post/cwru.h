@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The measured CWRU records of ../shared/data/bearing-real (beside the source tree, as in CI):
 // where they are, and the rates, speeds and bearing geometry their README lists.
 #ifndef OHMDEM_TESTS_POST_CWRU_H

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
 # usage: expect_error.sh REGEX COMMAND [ARGS...]
 # Passes when COMMAND exits with a status in 1..125 (an error, not a signal or a sanitizer
 # abort), its stderr starts with "ERROR: ", matches REGEX (extended), and carries no

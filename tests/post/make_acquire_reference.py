@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reference values for the acquire tests (test_acquire.cpp), computed with scipy (Debian
 python3-scipy): the anti-alias Butterworth filter's sections and its output.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Small MATLAB files for the .mat reader tests (tests/post/test_mat.cpp), written with
 scipy.io.savemat (MAT v5, uncompressed unless named _z; one v4 file).
 

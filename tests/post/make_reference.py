@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reference values for the ohmdem-post tests, computed with numpy/scipy (Debian python3-scipy).
 
 Writes into reference/ (next to this script):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Synthetic test signals: resistance-like rectangle trains of each defect kind (the shape our
 // engine writes), sines, impulse trains through a resonance, Gaussian noise. Deterministic:
 // a fixed-seed mt19937_64 and our own Box-Muller (std::normal_distribution is not portable).

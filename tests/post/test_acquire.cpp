@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The measurement chain of `acquire`: the Butterworth design and filtering against scipy, the
 // ADC against the theory of uniform quantization, the noise against its density, aliasing
 // against the filter's response, the interpolation against its error bound.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // `ohmdem-post acquire` end to end: its record is read back by stats, spectrum and diagnose;
 // round trip, CSV, warnings, the seed, the input rate option, input-referred noise.
 #include <gtest/gtest.h>

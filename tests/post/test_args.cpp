@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Ranged options of the command line: a value outside its range is an error naming the option,
 // the expected form and the value; inside, the value (or the default) is returned.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The bearing catalog (inputs/bearings): every entry parses and gives valid kinematics, the
 // 6208 entry is the paper's Table 1, the CWRU entries give CWRU's published defect multiples,
 // and malformed files are errors that name the file and the line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The command line end to end: our run layout (signal.txt + run.json), formats, commands.
 #include <gtest/gtest.h>
 #include <sys/stat.h>

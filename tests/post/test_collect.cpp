@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post collect: finding run folders, their parameters, the collected table (values equal
 // to `stats` / `diagnose` on the same window), skipped and bad runs, determinism; and the
 // row selection of `plot --kind indicators --where` on its output.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The table of a bearing's kinematic lines and what is computed from it: peak labels, the
 // kurtogram's band width, fault bands (checked against Parseval on a sine on a bin) and the
 // spectrogram (a sine's amplitude in dB, its columns and rows).

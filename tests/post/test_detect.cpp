@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The detection stage of `diagnose` (post/detect.h): the Gaussian sampling laws against scipy
 // (reference/detect_reference.txt, tests/post/make_detect_reference.py), the false-alarm rate
 // measured on seeded Gaussian noise, the measured CWRU records (healthy and defective), an

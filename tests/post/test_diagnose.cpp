@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Diagnosis of synthetic SKF 6208 resistance signals (rectangle trains at BPFI, BPFO, 2 BSF
 // with FTF modulation, FTF) with and without noise; the defect size from the pulse widths.
 #include <gtest/gtest.h>

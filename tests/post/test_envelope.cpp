@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Envelope: agreement with scipy.signal.hilbert, an AM carrier, an impulse train through a
 // resonance (with the kurtogram choosing the band), spectral kurtosis of noise.
 #include <gtest/gtest.h>

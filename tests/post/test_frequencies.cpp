@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Kinematic frequencies against the values of the paper (SKF 6208) and the bearing data
 // center's published fault-frequency multiples (SKF 6205 drive end).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // MATLAB .mat input (libmatio): the fixtures of tests/post/make_mat_fixtures.py (scipy.io.savemat)
 // and the measured CWRU records found beside the repository (if present), whose .mat and .txt
 // give the same statistics.

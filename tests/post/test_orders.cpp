@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Order tracking: resampling at constant shaft angle against a run-up with a known phase (the
 // record of tests/post/make_order_reference.py), its order spectrum against scipy on the same
 // angle-domain data, the anti-alias filter, and the angle from a speed column.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Order tracking, spectrogram and MAT input through the command line: a run-up with an inner-race
 // defect (impulses at 5.4152 orders, the 6205's BPFI/fr, ringing a 1 kHz resonance) whose speed
 // comes from an angle column, an rpm column or our angle_inner; diagnose switches to orders.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Readers on genuine LIGGGHTS 3.8 outputs (tests/post/data, made by data/in.fixtures), on our
 // signal.txt layout, and on bad input (the library throws Error with a precise message).
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The shared renderers of command results: the same Result as an aligned table (its own
 // layout or its table), CSV (metadata, header, 12 digits, empty undefined cells) and JSON (its
 // own document or {"meta", "columns", "rows"}).

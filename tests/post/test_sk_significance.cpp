@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Spectral kurtosis significance (issue 17): the Gaussian-noise threshold of the kurtogram's
 // estimator, checked by its false-positive rate on seeded Gaussian records, per band and for the
 // best band of the whole kurtogram; impulses are significant.

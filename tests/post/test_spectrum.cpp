@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Spectrum: frequencies and amplitudes of sines (window correction, interpolation, padding,
 // Welch), Parseval, and agreement with scipy.signal.welch / periodogram.
 #include <gtest/gtest.h>

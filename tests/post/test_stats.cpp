@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Indicators against numpy/scipy reference values (tests/post/make_reference.py) to 1e-12.
 #include <gtest/gtest.h>
 

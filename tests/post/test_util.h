@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Helpers of the post tests: reference data location and small file utilities.
 #ifndef OHMDEM_TESTS_POST_TEST_UTIL_H
 #define OHMDEM_TESTS_POST_TEST_UTIL_H

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """`ohmdem -help` lists every style that stock `liggghts -help` lists, plus a section
 "* ohmdem styles" naming at least one of ours.
 

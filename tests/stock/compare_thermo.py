@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Stock equivalence: run one LIGGGHTS deck with stock `liggghts` and with `ohmdem`, compare
 the thermo output of the two log files.
 

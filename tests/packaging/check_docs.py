@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Every style page of doc/ has the sections of a LAMMPS/LIGGGHTS doc page, in order, the
+plain-text (doc/src/*.txt) syntax block, and says how it behaves under fix_modify (or
+compute_modify), across runs (start/stop) and during minimize; the keywords of the Markdown
+syntax list and of the plain-text block are the same (a keyword added to one only is named).
+
+    check_docs.py SOURCE_DIR
+"""
+import glob
+import os
+import re
+import sys
+
+SECTIONS = ["Syntax", "Examples", "Description", "Output info", "Restart info",
+            "Restrictions", "Related commands", "Default", "References"]
+
+
+def keyword_drift(markdown, block):
+    """The keywords of the Markdown list and of the plain-text block must be the same."""
+    out = []
+    listed = set(re.findall(r"^ {2,}\* `([A-Za-z_]+)", markdown, flags=re.M))
+    words = set(re.findall(r"[A-Za-z_]+", block))
+    for k in sorted(listed - words):
+        out.append("'%s' is in the Markdown syntax list but not in the plain-text block" % k)
+    line = re.search(r"^keyword = (.*):l$", block, flags=re.M)
+    for k in re.findall(r"\{([A-Za-z_/]+)\}", line.group(1) if line else ""):
+        if "`" + k not in markdown:
+            out.append("keyword '%s' of the plain-text block is not in the Markdown syntax" % k)
+    return out
+
+
+def problems(path):
+    text = open(path, encoding="utf-8").read()
+    name = os.path.basename(path)
+    kind = "fix" if name.startswith("fix_") else "compute"
+    found = re.findall(r"^## (.+?)\s*$", text, flags=re.M)
+    out = []
+    missing = [s for s in SECTIONS if s not in found]
+    if missing:
+        out.append("missing section(s): " + ", ".join(missing))
+    elif [s for s in found if s in SECTIONS] != SECTIONS:
+        out.append("sections out of order: " + ", ".join(found))
+    syntax = text.split("\n## Examples")[0]
+    block = re.search(r"```text\n(.*?)```", syntax, flags=re.S)
+    if not block:
+        out.append("no plain-text syntax block (```text ... ```) in Syntax")
+    else:
+        b = block.group(1)
+        style = re.search(r"^# (fix|compute) (\S+) command", text, flags=re.M)
+        first = b.splitlines()[0] if b.strip() else ""
+        if not (style and first.startswith("%s ID group-ID %s" % (kind, style.group(2)))
+                and first.endswith(":pre")):
+            out.append("the plain-text block must start with '%s ID group-ID STYLE ... :pre'"
+                       % kind)
+        if "ID, group-ID are documented in" not in b or ":ulb,l" not in b or ":ule" not in b:
+            out.append("the plain-text block needs the argument list (:ulb,l ... :ule)")
+        out += keyword_drift(syntax[:block.start()], b)
+    restart = text.split("## Restart info")[-1].split("\n## Restrictions")[0]
+    modify = "fix_modify" if kind == "fix" else "compute_modify"
+    for needle, what in [(modify, modify), ("`start` and `stop`", "run start/stop"),
+                         ("minimize", "minimize")]:
+        if needle not in restart:
+            out.append("Restart info does not say what %s does" % what)
+    refs = text.split("## References")[-1] if "## References" in text else ""
+    if "Machado" not in refs:
+        out.append("References do not cite the paper (Machado et al. 2014)")
+    return out
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.stderr.write("usage: check_docs.py SOURCE_DIR\n")
+        return 2
+    pages = sorted(glob.glob(os.path.join(sys.argv[1], "doc", "fix_*.md")) +
+                   glob.glob(os.path.join(sys.argv[1], "doc", "compute_*.md")))
+    if not pages:
+        print("ERROR: no style page under %s/doc" % sys.argv[1])
+        return 1
+    bad = 0
+    for p in pages:
+        for msg in problems(p):
+            print("ERROR: %s: %s" % (os.path.relpath(p, sys.argv[1]), msg))
+            bad += 1
+    print("doc check: %d style page(s), %d problem(s)" % (len(pages), bad))
+    return 1 if bad else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,61 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
+# cmake --install gives a working tree: install BUILD into a temporary prefix, then run the
+# bearing deck from there the two ways README "Install" documents (a short run) and the post
+# tool on its signal, away from the source tree.
+#   install_test.sh BUILD_DIR WORK_DIR
+set -eu
+build=$1 work=$2
+rm -rf "$work"
+mkdir -p "$work"
+prefix=$work/prefix
+cmake --install "$build" --prefix "$prefix" >"$work/install.log"
+share=$prefix/share/ohmdem/inputs
+for f in bin/ohmdem bin/ohmdem-post share/ohmdem/inputs/bearings/select.sh \
+         share/ohmdem/inputs/bearing_6208/sweep_case.sh share/ohmdem/inputs/bearings/6208 \
+         share/ohmdem/inputs/bearing_6208/in.bearing share/doc/ohmdem/LICENSE \
+         share/doc/ohmdem/CITATION.cff share/doc/ohmdem/README.md \
+         share/doc/ohmdem/fix_bearing_race.md share/doc/ohmdem/ohmdem-post.md; do
+  [ -e "$prefix/$f" ] || { echo "ERROR: $f not installed"; exit 1; }
+done
+for f in bearings/select.sh bearing_6208/sweep_case.sh bearing_6208/sweep_progress.sh; do
+  [ -x "$share/$f" ] || { echo "ERROR: $f installed without its execute bit"; exit 1; }
+done
+
+finished() {  # finished DIR: the run wrote rows to signal.txt and ended with status finished
+  rows=$(grep -vc '^#' "$1/signal.txt" || true)
+  [ "$rows" -gt 0 ] || { echo "ERROR: $1/signal.txt has no rows"; exit 1; }
+  grep -q '"status": "finished"' "$1/run.json" || { echo "ERROR: $1/run.json not finished"; exit 1; }
+  echo "$1: $rows rows, finished"
+}
+short="-var tend 2e-4 -var dt 1e-5 -screen none"
+
+# 1. from the installed data folder (the deck's default catalog: inputs/bearings under it)
+(cd "$prefix/share/ohmdem" &&
+  "$prefix/bin/ohmdem" -in inputs/bearing_6208/in.bearing -var out "$work/run_share" \
+    -log "$work/run_share.log" $short)
+finished "$work/run_share"
+
+# 2. from anywhere, the catalog named by OHMDEM_CATALOG; a sweep case (resume 1) calls the
+#    installed sweep_case.sh through -var here
+cd "$work"
+OHMDEM_CATALOG=$share/bearings "$prefix/bin/ohmdem" -in "$share/bearing_6208/in.bearing" \
+  -var out run_env -var here "$share/bearing_6208" -var resume 1 -log run_env.log $short
+finished run_env
+cp run_env/run.json run_env/run.done.json
+OHMDEM_CATALOG=$share/bearings "$prefix/bin/ohmdem" -in "$share/bearing_6208/in.bearing" \
+  -var out run_env -var here "$share/bearing_6208" -var resume 1 -log run_env2.log $short \
+  >run_env2.out  # the script's message (LIGGGHTS' shell command) goes to standard output
+grep -q "already finished with the same parameters: skipped" run_env2.out ||
+  { echo "ERROR: the installed sweep_case.sh did not skip the finished case"; exit 1; }
+
+# 3. the installed post tool reads the signal and finds the installed catalog by itself
+env -u OHMDEM_CATALOG "$prefix/bin/ohmdem-post" stats run_env/signal.txt >post_stats.txt
+env -u OHMDEM_CATALOG "$prefix/bin/ohmdem-post" frequencies --bearing 6205 --rpm 1797 >post_freq.txt
+if env -u OHMDEM_CATALOG "$prefix/bin/ohmdem-post" frequencies --bearing nosuch --rpm 1 \
+     2>post_err.txt; then
+  echo "ERROR: an unknown bearing was accepted"; exit 1
+fi
+grep -q "catalog $(realpath "$share/bearings")" post_err.txt ||
+  { echo "ERROR: the installed ohmdem-post does not read the installed catalog:"; cat post_err.txt; exit 1; }
+echo "install test: passed"
