@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Reader for NumPy .npy files (format versions 1.0, 2.0, 3.0): the binary signal tables that
 // `fix signal/table` writes (a 1-D array of records, one float64 field per column: the field
 // names become the column names) and the arrays numpy.save writes (1-D: one column; 2-D: one

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The case table of a sweep (doc/case_table.md): a CSV file, one column per deck variable, one
 row per case. Read by inputs/bearing_6208/in.sweep (partitions), inputs/cluster/sweep_slurm.sh
 (job array) and the study scripts; stdlib only.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: GPL-2.0-or-later
 # The cases of a case table (doc/case_table.md) as a Slurm job array: array task k runs the
 # cases k*K .. k*K+K-1 (0-based rows of the table) one after the other, each with the bearing
 # deck on its own (the cases are serial and short: K of them per task saves scheduling). Run

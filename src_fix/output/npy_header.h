@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The header of a NumPy .npy file holding a table: a 1-D array of records with one
 // little-endian float64 field per column ("descr": [('time', '<f8'), ('R', '<f8'), ...]), so
 // that numpy.load gives named columns (a['R']). The row count is written in a fixed-width

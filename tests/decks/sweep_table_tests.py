@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Case tables (doc/case_table.md) through every launcher: a 2 x 3 grid (F x defect size) through
 LIGGGHTS' partitions (inputs/bearing_6208/in.sweep) and through the Slurm array script run by
 hand (inputs/cluster/sweep_slurm.sh, every task index), collected by `ohmdem-post collect ROOT`

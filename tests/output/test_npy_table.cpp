@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The .npy format of the signal table writer: the header layout numpy expects (magic,
 // version, 64-byte alignment, the row count rewritten in place), the rows as raw float64
 // records, and continuing a file after a restart (rows after the restart point dropped, a row

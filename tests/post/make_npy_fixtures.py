@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Small NumPy .npy files for the .npy reader tests (tests/post/test_npy.cpp), written by numpy
 itself (numpy.save / numpy.lib.format.write_array), independent of ohmdem's writer.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // NumPy .npy input: the fixtures of tests/post/make_npy_fixtures.py, written by numpy itself
 // (record tables, 1-D and 2-D arrays in C and Fortran order, float32 and integers, format
 // 2.0), read back value for value; the layouts numpy writes that we refuse, refused by name.
