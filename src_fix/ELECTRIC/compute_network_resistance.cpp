@@ -52,6 +52,9 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   extvector = 0;
   peratom_flag = 1;
   size_peratom_cols = 0;
+  local_flag = 1;  // per-contact rows (compute_network_resistance_local.cpp)
+  size_local_cols = ohmdem::ContactFlow::kColumns;
+  size_local_rows = 0;
   vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
   contacts_ = std::make_unique<ContactSet>(
@@ -62,6 +65,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
 ComputeNetworkResistance::~ComputeNetworkResistance()
 {
   memory->destroy(vector_atom);
+  memory->destroy(array_local);
 }
 
 void ComputeNetworkResistance::parse(int narg, char **arg)
@@ -193,7 +197,8 @@ void ComputeNetworkResistance::evaluate()
     memory->destroy(vector_atom);
     memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
   }
-  if (!evaluate_between_races()) build_and_solve();
+  closed_form_used_ = evaluate_between_races();
+  if (!closed_form_used_) build_and_solve();
 }
 
 void ComputeNetworkResistance::report(double resistance, int contacts, int dropped, int iterations,

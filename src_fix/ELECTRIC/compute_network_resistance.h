@@ -21,6 +21,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include "common/ordered_reduce.h"
 #include "compute.h"
 #include "electric/conduction_model.h"
+#include "electric/contact_flows.h"
 #include "electric/network_builder.h"
 
 namespace ohmdem {
@@ -40,6 +41,7 @@ class ComputeNetworkResistance : public Compute {
   double compute_scalar() override;
   void compute_vector() override;
   void compute_peratom() override;
+  void compute_local() override;  // compute_network_resistance_local.cpp
   double memory_usage() override;
 
  private:
@@ -59,6 +61,11 @@ class ComputeNetworkResistance : public Compute {
   void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
   void check_export_files();
+  // The local array (compute_network_resistance_local.cpp): per-contact rows of this step.
+  void closed_form_flows(std::vector<ohmdem::ContactFlow> &rows);
+  void network_flows(std::vector<ohmdem::ContactFlow> &rows);
+  void masked_flows(std::vector<ohmdem::ContactFlow> &rows);
+  int race_electrode(int race) const;  // +1 high, -1 low, 0 neither
 
   double current_ = 0;
   Electrode high_, low_;
@@ -93,6 +100,10 @@ class ComputeNetworkResistance : public Compute {
   std::vector<double> gamma_race_;
   ohmdem::NetworkBuild built_;
   int nmax_ = 0;
+  bool closed_form_used_ = false;  // the last evaluation took the closed form
+  // The local array: this process's rows (contacts whose atom it owns), kept for reuse.
+  std::vector<ohmdem::ContactFlow> flows_, all_flows_;
+  int local_capacity_ = 0;
 };
 
 }  // namespace LAMMPS_NS
