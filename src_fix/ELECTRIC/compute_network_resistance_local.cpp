@@ -98,11 +98,14 @@ void ComputeNetworkResistance::compute_local()
   else
     network_flows(flows_);
   masked_flows(flows_);
-  // A fixed order: by atom, then partner, then the high electrode before the low one.
+  // A fixed order, the same with any number of processes: by atom, then partner, the high
+  // electrode before the low one, then conductance and current.
   std::sort(flows_.begin(), flows_.end(), [](const auto &a, const auto &b) {
     if (a.atom != b.atom) return a.atom < b.atom;
     if (a.partner != b.partner) return a.partner < b.partner;
-    return a.electrode > b.electrode;
+    if (a.electrode != b.electrode) return a.electrode > b.electrode;
+    if (a.conductance != b.conductance) return a.conductance < b.conductance;
+    return a.current < b.current;
   });
   const int n = static_cast<int>(flows_.size());
   if (n > local_capacity_) {

@@ -49,9 +49,9 @@ void bulk_spot_sums(const NetworkScene &scene, const NetworkBuild &built,
           if (x.node == y.node) continue;  // one electrode: no current inside
           const double ub[3] = {y.point[0] - p->centre[0], y.point[1] - p->centre[1],
                                 y.point[2] - p->centre[2]};
-          const double gab = eq1_conductance(gamma, x.area, y.area, volume, angle_between(ua, ub),
-                                             p->radius)
-                                 .conductance;
+          const double gab =
+              eq1_conductance(gamma, x.area, y.area, volume, angle_between(ua, ub), p->radius)
+                  .conductance;
           if (!(gab > 0.0)) continue;
           const double iab = gab * (v[a] - v[b]);
           g[a] += gab;
@@ -101,14 +101,19 @@ void network_contact_flows(const ConductionModel &model, const NetworkScene &sce
       atom_spot = other[k];
       partner_spot = own[k];
       partner_body = member_node(p->member);
+    } else if (q && q->member == Membership::None) {
+      // Two particles: the row belongs to the smaller ID, whichever process saw the contact.
+      const bool swap = q->tag < p->tag;
+      row.atom = swap ? q->tag : p->tag;
+      row.partner = swap ? p->tag : q->tag;
+      atom_spot = swap ? other[k] : own[k];
+      partner_spot = swap ? own[k] : other[k];
+      partner_body = 0;
     } else {
       row.atom = p->tag;
       atom_spot = own[k];
       partner_spot = q ? other[k] : -1;
-      partner_body = !q                              ? race_node(c.race)
-                     : q->member != Membership::None ? member_node(q->member)
-                                                     : NodeKey(0);
-      row.partner = q && q->member == Membership::None ? q->tag : 0;
+      partner_body = q ? member_node(q->member) : race_node(c.race);
     }
     if (atom_spot < 0) continue;
     row.electrode = partner_body ? electrode_of(net, partner_body) : 0;

@@ -20,7 +20,7 @@ struct ContactFlow {
   // The columns of the local array, in this order.
   enum Column { kAtom, kPartner, kConductance, kCurrent, kDrop, kMasked, kElectrode, kColumns };
 
-  std::int64_t atom = 0;     // the particle (never an electrode-group member)
+  std::int64_t atom = 0;     // the particle (never an electrode member; of two, the smaller ID)
   std::int64_t partner = 0;  // the other particle; 0 for a race or an electrode
   // The contact's element: with a constriction slot, the constriction across the contact;
   // without one (eq. 1 only), the contact spot's conductance into the atom's bulk, the sum of
