@@ -122,10 +122,13 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       netlist_ = a.word(kw, "a file name");
     } else if (kw == "vtk") {
       vtk_ = a.word(kw, "a file name");
+    } else if (kw == "every") {
+      every_ = a.integer(kw, "a whole number of steps N >= 1", 1, std::numeric_limits<int>::max());
     } else if (kw == "closedform" || kw == "closed_form") {
       closed_form_ = a.yes_no(kw);
     } else {
-      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk closedform");
+      a.unknown(kw.c_str(),
+                "current high low area model solver pair netlist vtk every closedform");
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
@@ -248,7 +251,10 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
 // is anything else.
 bool ComputeNetworkResistance::evaluate_between_races()
 {
-  if (!closed_form_ || !netlist_.empty() || !vtk_.empty() || high_.kind != ElectrodeKind::Race ||
+  // An export step needs the network itself (every: the other steps keep the closed form).
+  const bool export_step = (!netlist_.empty() || !vtk_.empty()) &&
+                           (every_ == 0 || update->ntimestep % every_ == 0);
+  if (!closed_form_ || export_step || high_.kind != ElectrodeKind::Race ||
       low_.kind != ElectrodeKind::Race || contacts_->uses_pair())
     return false;
   const auto &races = contacts_->races();

@@ -23,6 +23,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include "electric/conduction_model.h"
 #include "electric/contact_flows.h"
 #include "electric/network_builder.h"
+#include "output/vtk_series.h"
 
 namespace ohmdem {
 class ConductionNetwork;
@@ -59,6 +60,9 @@ class ComputeNetworkResistance : public Compute {
   void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
                     std::vector<ohmdem::ContactRecord> &contacts);
   void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
+  // compute_network_resistance_exports.cpp: the VTK companions of the network file.
+  std::string write_particles(const std::string &path);
+  std::string write_bearing_geometry();  // "" without a race; rewritten only when it moved
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
   void check_export_files();
   // The local array (compute_network_resistance_local.cpp): per-contact rows of this step.
@@ -73,8 +77,12 @@ class ComputeNetworkResistance : public Compute {
   int solver_ = 0;                 // ohmdem::SolverKind
   bool multigrid_ = false;         // solver amg: CG preconditioned by algebraic multigrid
   bool area_exact_ = false;
-  int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
-  std::string netlist_, vtk_;
+  int pair_mode_ = -1;         // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
+  std::string netlist_, vtk_;  // a `*` stands for the step (vtk_series.h)
+  bigint every_ = 0;           // exports on steps that are multiples of every_ (0: each evaluation)
+  std::unique_ptr<ohmdem::PvdIndex> pvd_;  // the .pvd of a VTK series
+  std::vector<double> geometry_drawn_;     // what the last bearing geometry file shows
+  std::string geometry_file_;
   bool closed_form_ = true;  // keyword closedform: use the two-race closed form when it applies
 
   std::unique_ptr<ContactSet> contacts_;
