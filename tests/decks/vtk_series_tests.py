@@ -11,11 +11,13 @@ import re
 import subprocess
 import sys
 import tempfile
-import xml.etree.ElementTree as ET
-
 import numpy as np
 
 from deck_checks import check, finish
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "scripts"))
+from vtk_legacy import read_pvd, read_vtk  # noqa: E402  (scripts/: also the figure's reader)
 
 
 def run(exe, deck, out, **var):
@@ -27,83 +29,6 @@ def run(exe, deck, out, **var):
     res = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
     if res.returncode != 0:
         sys.exit(f"FAIL: {' '.join(cmd)}\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
-
-
-def read_vtk(path):
-    """A legacy ASCII POLYDATA file: points, cells {kind: [index lists]}, data {name: array},
-    field data; raises ValueError on any inconsistency."""
-    tok = open(path).read().split("\n")
-    if not tok[0].startswith("# vtk DataFile") or tok[2].strip() != "ASCII" or \
-            tok[3].strip() != "DATASET POLYDATA":
-        raise ValueError("not an ASCII legacy POLYDATA file")
-    words = " ".join(tok[4:]).split()
-    k, pts, cells, data, field, where = 0, None, {}, {}, {}, None
-    ncell = npoint = 0
-    while k < len(words):
-        w = words[k]
-        if w == "POINTS":
-            n = int(words[k + 1])
-            pts = np.array(words[k + 3:k + 3 + 3 * n], dtype=float).reshape(n, 3)
-            k += 3 + 3 * n
-        elif w in ("VERTICES", "LINES", "POLYGONS"):
-            n, size = int(words[k + 1]), int(words[k + 2])
-            vals = list(map(int, words[k + 3:k + 3 + size]))
-            lists, j = [], 0
-            for _ in range(n):
-                lists.append(vals[j + 1:j + 1 + vals[j]])
-                j += 1 + vals[j]
-            if j != size:
-                raise ValueError(f"{w}: size {size}, read {j}")
-            cells[w] = lists
-            k += 3 + size
-        elif w in ("CELL_DATA", "POINT_DATA"):
-            where = w
-            if w == "CELL_DATA":
-                ncell = int(words[k + 1])
-            else:
-                npoint = int(words[k + 1])
-            k += 2
-        elif w == "SCALARS":
-            name = words[k + 1]
-            n = ncell if where == "CELL_DATA" else npoint
-            k += 3
-            if words[k].isdigit():  # the optional number of components
-                k += 1
-            if words[k] == "LOOKUP_TABLE":
-                k += 2
-            data[(where, name)] = np.array(words[k:k + n], dtype=float)
-            k += n
-        elif w == "FIELD":
-            arrays = int(words[k + 2])
-            k += 3
-            for _ in range(arrays):
-                name, comp, tup = words[k], int(words[k + 1]), int(words[k + 2])
-                field[name] = np.array(words[k + 4:k + 4 + comp * tup], dtype=float)
-                k += 4 + comp * tup
-        else:
-            raise ValueError(f"unexpected '{w}'")
-    total = sum(len(c) for c in cells.values())
-    if pts is None or not np.all(np.isfinite(pts)):
-        raise ValueError("no or non-finite points")
-    for lists in cells.values():
-        if any(i < 0 or i >= len(pts) for c in lists for i in c):
-            raise ValueError("a cell refers to a missing point")
-    if ncell and ncell != total:
-        raise ValueError(f"CELL_DATA {ncell} for {total} cells")
-    if npoint and npoint != len(pts):
-        raise ValueError(f"POINT_DATA {npoint} for {len(pts)} points")
-    for (where, name), a in data.items():
-        if len(a) != (ncell if where == "CELL_DATA" else npoint) or not np.all(np.isfinite(a)):
-            raise ValueError(f"{name}: wrong length or not finite")
-    return pts, cells, data, field
-
-
-def read_pvd(path):
-    """{time: [files by part]} of a ParaView collection."""
-    steps = {}
-    for ds in ET.parse(path).getroot().iter("DataSet"):
-        steps.setdefault(float(ds.get("timestep")), {})[int(ds.get("part"))] = ds.get("file")
-    return {t: [parts[p] for p in sorted(parts)] for t, parts in steps.items()}
 
 
 def check_series(folder, pattern_re, expected_steps, dt, what):
