@@ -433,5 +433,6 @@ void ComputeNetworkResistance::compute_peratom()
 
 double ComputeNetworkResistance::memory_usage()
 {
-  return static_cast<double>(nmax_) * sizeof(double);
+  return static_cast<double>(nmax_) * sizeof(double) +
+         static_cast<double>(local_capacity_) * ohmdem::ContactFlow::kColumns * sizeof(double);
 }

@@ -6,6 +6,7 @@ from signal.txt, the closed form against the general network, 1 against 2 MPI pr
 Usage: contact_output_tests.py TEST --exe OHMDEM --src SOURCE_DIR"""
 import argparse
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -127,6 +128,29 @@ def by_position(out, steps):
     return mapped
 
 
+def test_reduce(r):
+    # compute network/contacts forwards the local array to compute reduce (which reads a
+    # compute's per-atom output whenever it has one): max and sum of the current column
+    # against the dump's.
+    deck = open(os.path.join(r.src, "inputs", "validation", "in.packing")).read()
+    extra = ("compute C all network/contacts R\ncompute Imax all reduce max c_C[4]\n"
+             "compute Isum all reduce sum c_C[4]\n")
+    deck = re.sub(r"^thermo_style( +custom[^\n]*)", lambda m: extra + "thermo_style" + m.group(1) +
+                  " c_Imax c_Isum", deck, count=1, flags=re.M)
+    deck += '\nvariable imax equal c_Imax\nvariable isum equal c_Isum\n' \
+            'print "REDUCE ${imax} ${isum}"\n'
+    path = os.path.join(r.wd, "in.packing_reduce")
+    open(path, "w").write(deck)
+    out = run(r.exe, path, os.path.join(r.wd, "reduce"), contacts=1, cells=3)
+    steps, _ = check_dump(os.path.join(out, "contacts.dump"), I)
+    last = steps[max(steps)]
+    got = [float(x) for x in re.findall(r"^REDUCE (\S+) (\S+)",
+                                        open(os.path.join(out, "log.txt")).read(), re.M)[-1]]
+    want = [last[:, 3].max(), last[:, 3].sum()]
+    check(np.allclose(got, want, rtol=1e-13, atol=0),
+          f"compute reduce max/sum of the current column {got} = the dump's {want}")
+
+
 def test_mpi(r):
     # Holm only: particles are equipotential, a row's element is the contact's constriction,
     # the same whichever particle has the smaller ID.
@@ -146,7 +170,7 @@ def test_mpi(r):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("test", choices=["bearing", "bearing_holm", "bearing_defect", "packing",
-                                     "mpi"])
+                                     "reduce", "mpi"])
     ap.add_argument("--exe", required=True)
     ap.add_argument("--src", required=True)
     a = ap.parse_args()
