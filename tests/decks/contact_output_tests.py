@@ -110,6 +110,16 @@ def test_bearing_defect(r):
 def test_packing(r):
     for model in ("eq1", "eq1+holm"):
         packing(r, model.replace("+", "_"), model=model)
+    # Holm only: every conductance of the network is one contact's row, so by Tellegen's
+    # theorem the power of the rows, sum(current * drop), is the power R I^2 the source
+    # delivers, with R the compute's own (the log's PACKING_R).
+    out, steps = packing(r, "holm", model="holm")
+    log = open(os.path.join(out, "log.txt")).read()
+    R = float(re.findall(r"^PACKING_R (\S+)", log, re.M)[-1])
+    rows = steps[max(steps)]
+    power = float(np.sum(rows[:, 3] * rows[:, 4]))
+    check(abs(power / (R * I * I) - 1.0) < 1e-9, f"packing holm: power of the rows {power!r} W "
+          f"= R I^2 = {R * I * I!r} W (R = {R!r} ohm from the compute)")
 
 
 def by_position(out, steps):
