@@ -7,5 +7,6 @@
 #include "BEARING/fix_bearing_defect.h"
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/compute_contact_area.h"
+#include "ELECTRIC/compute_network_contacts.h"
 #include "ELECTRIC/compute_network_resistance.h"
 #include "OUTPUT/fix_signal_table.h"

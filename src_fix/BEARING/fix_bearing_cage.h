@@ -45,6 +45,12 @@ class FixBearingCage : public FixBearingBody {
   double angle() const { return angle_; }
   double omega() const { return omega_; }
   int pockets() const { return npockets_; }
+  double pitch_radius() const { return pitch_radius_; }
+  void centre(double &x, double &y) const
+  {
+    x = cx_;
+    y = cy_;
+  }
   ohmdem::BearingSurface surface() const override;
 
  private:

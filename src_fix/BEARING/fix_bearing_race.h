@@ -50,6 +50,7 @@ class FixBearingRace : public FixBearingBody {
   ohmdem::RaceContactView contact_of(int i) const { return ohmdem::RaceContactView(array_atom[i]); }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return inner_; }
+  double groove() const { return groove_; }  // groove radius (m)
   double current_radius() const;
   void centre(double &x, double &y) const
   {

@@ -53,6 +53,9 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   extvector = 0;
   peratom_flag = 1;
   size_peratom_cols = 0;
+  local_flag = 1;  // per-contact rows (compute_network_resistance_local.cpp)
+  size_local_cols = ohmdem::ContactFlow::kColumns;
+  size_local_rows = 0;
   vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
   contacts_ = std::make_unique<ContactSet>(
@@ -63,6 +66,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
 ComputeNetworkResistance::~ComputeNetworkResistance()
 {
   memory->destroy(vector_atom);
+  memory->destroy(array_local);
 }
 
 void ComputeNetworkResistance::parse(int narg, char **arg)
@@ -119,10 +123,13 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       netlist_ = a.word(kw, "a file name");
     } else if (kw == "vtk") {
       vtk_ = a.word(kw, "a file name");
+    } else if (kw == "every") {
+      every_ = a.integer(kw, "a whole number of steps N >= 1", 1, std::numeric_limits<int>::max());
     } else if (kw == "closedform" || kw == "closed_form") {
       closed_form_ = a.yes_no(kw);
     } else {
-      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk closedform");
+      a.unknown(kw.c_str(),
+                "current high low area model solver pair netlist vtk every closedform");
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
@@ -194,7 +201,8 @@ void ComputeNetworkResistance::evaluate()
     memory->destroy(vector_atom);
     memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
   }
-  if (!evaluate_between_races()) build_and_solve();
+  closed_form_used_ = evaluate_between_races();
+  if (!closed_form_used_) build_and_solve();
 }
 
 void ComputeNetworkResistance::report(double resistance, int contacts, int dropped, int iterations,
@@ -244,7 +252,10 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
 // is anything else.
 bool ComputeNetworkResistance::evaluate_between_races()
 {
-  if (!closed_form_ || !netlist_.empty() || !vtk_.empty() || high_.kind != ElectrodeKind::Race ||
+  // An export step needs the network itself (every: the other steps keep the closed form).
+  const bool export_step = (!netlist_.empty() || !vtk_.empty()) &&
+                           (every_ == 0 || update->ntimestep % every_ == 0);
+  if (!closed_form_ || export_step || high_.kind != ElectrodeKind::Race ||
       low_.kind != ElectrodeKind::Race || contacts_->uses_pair())
     return false;
   const auto &races = contacts_->races();
@@ -423,5 +434,6 @@ void ComputeNetworkResistance::compute_peratom()
 
 double ComputeNetworkResistance::memory_usage()
 {
-  return static_cast<double>(nmax_) * sizeof(double);
+  return static_cast<double>(nmax_) * sizeof(double) +
+         static_cast<double>(local_capacity_) * ohmdem::ContactFlow::kColumns * sizeof(double);
 }

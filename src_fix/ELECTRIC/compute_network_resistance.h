@@ -22,7 +22,9 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include "common/ordered_reduce.h"
 #include "compute.h"
 #include "electric/conduction_model.h"
+#include "electric/contact_flows.h"
 #include "electric/network_builder.h"
+#include "output/vtk_series.h"
 
 namespace ohmdem {
 class ConductionNetwork;
@@ -41,6 +43,7 @@ class ComputeNetworkResistance : public Compute {
   double compute_scalar() override;
   void compute_vector() override;
   void compute_peratom() override;
+  void compute_local() override;  // compute_network_resistance_local.cpp
   double memory_usage() override;
 
  private:
@@ -58,8 +61,16 @@ class ComputeNetworkResistance : public Compute {
   void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
                     std::vector<ohmdem::ContactRecord> &contacts);
   void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
+  // compute_network_resistance_exports.cpp: the VTK companions of the network file.
+  std::string write_particles(const std::string &path);
+  std::string write_bearing_geometry();  // "" without a race; rewritten only when it moved
   void report(double resistance, int contacts, int dropped, int iterations, double residual);
   void check_export_files();
+  // The local array (compute_network_resistance_local.cpp): per-contact rows of this step.
+  void closed_form_flows(std::vector<ohmdem::ContactFlow> &rows);
+  void network_flows(std::vector<ohmdem::ContactFlow> &rows);
+  void masked_flows(std::vector<ohmdem::ContactFlow> &rows);
+  int race_electrode(int race) const;  // +1 high, -1 low, 0 neither
 
   double current_ = 0;
   Electrode high_, low_;
@@ -67,8 +78,12 @@ class ComputeNetworkResistance : public Compute {
   int solver_ = 0;                 // ohmdem::SolverKind
   bool multigrid_ = false;         // solver amg: CG preconditioned by algebraic multigrid
   bool area_exact_ = false;
-  int pair_mode_ = -1;  // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
-  std::string netlist_, vtk_;
+  int pair_mode_ = -1;         // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
+  std::string netlist_, vtk_;  // a `*` stands for the step (vtk_series.h)
+  bigint every_ = 0;           // exports on steps that are multiples of every_ (0: each evaluation)
+  std::unique_ptr<ohmdem::PvdIndex> pvd_;  // the .pvd of a VTK series
+  std::vector<double> geometry_drawn_;     // what the last bearing geometry file shows
+  std::string geometry_file_;
   bool closed_form_ = true;  // keyword closedform: use the two-race closed form when it applies
 
   std::unique_ptr<ContactSet> contacts_;
@@ -94,6 +109,10 @@ class ComputeNetworkResistance : public Compute {
   std::vector<double> gamma_race_;
   ohmdem::NetworkBuild built_;
   int nmax_ = 0;
+  bool closed_form_used_ = false;  // the last evaluation took the closed form
+  // The local array: this process's rows (contacts whose atom it owns), kept for reuse.
+  std::vector<ohmdem::ContactFlow> flows_, all_flows_;
+  int local_capacity_ = 0;
 };
 
 }  // namespace LAMMPS_NS

@@ -122,6 +122,15 @@ class BallBetweenRaces {
   {
     return kernel().conductance(t, gamma, r, fn_hi, fn_lo, u, w);
   }
+  // The constriction resistances (Ohm) of the two spots of a ball of type t with normal
+  // forces fn_hi, fn_lo > 0, as conductance() adds them (0 without a constriction slot): the
+  // per-contact output splits a ball's series resistance with them.
+  void constrictions(int t, double fn_hi, double fn_lo, double &r_hi, double &r_lo) const
+  {
+    const bool on = races_conduct_ && model_.has_constriction();
+    r_hi = on ? holm_per_type_[2 * t] / cbrt_fast(fn_hi) : 0.0;
+    r_lo = on ? holm_per_type_[2 * t + 1] / cbrt_fast(fn_lo) : 0.0;
+  }
 
  private:
   // Any angle (the small-angle clamp of eq. 1 may apply): the laws as written.

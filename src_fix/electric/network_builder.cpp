@@ -87,8 +87,9 @@ void Builder::add_contact(const ContactRecord &c)
   ++out_.conducting_contacts;
   const NodeKey mine = side_node(*p, other_id, shared);
   const double *pt = c.point;
-  out_.spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}});
-  if (q) out_.spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}});
+  const int index = static_cast<int>(&c - scene_.contacts->data());
+  out_.spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}, index});
+  if (q) out_.spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}, index});
   if (!model_.has_constriction()) return;
   // The constriction of the spot, in series between the two bodies.
   const double rc = model_.constriction_resistance(gp, go, c.a, c.b);

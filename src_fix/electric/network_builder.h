@@ -84,6 +84,7 @@ struct NetworkBuild {
   struct Spot {
     std::int64_t tag;  // the particle whose side of a contact this is
     ContactSpot spot;
+    int contact = -1;  // index of its contact in NetworkScene::contacts
   };
   std::vector<Spot> spots;  // sorted by tag
   std::vector<VtkEdge> drawn;
