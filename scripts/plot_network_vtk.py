@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Top view of one step of a compute network/resistance VTK series, rendered headless with
 gnuplot (pngcairo): the bearing rings and cage (the geometry file), the balls (the particles
 file) and the current network (the network file, each conductance coloured by its current).

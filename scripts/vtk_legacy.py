@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Reader of the legacy ASCII VTK POLYDATA files and ParaView .pvd collections that compute
 network/resistance writes (numpy only: no VTK library needed). Raises ValueError on any
 inconsistency, so it doubles as a format check (tests/decks/vtk_series_tests.py)."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // compute network/contacts: forwards the local array of a compute network/resistance
 // (doc/compute_network_resistance.md, "Output info"); see compute_network_contacts.h.
 #include "ELECTRIC/compute_network_contacts.h"

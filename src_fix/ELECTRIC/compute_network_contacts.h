@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/contacts: the per-contact local array of a compute
    network/resistance, alone. LIGGGHTS' compute reduce reads a compute's per-atom output

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // compute network/resistance: the local array, one row per conducting contact whose atom
 // this process owns (electric/contact_flows.h gives the rows; columns in its ContactFlow).
 // Computed only on the steps a dump or compute asks for it.

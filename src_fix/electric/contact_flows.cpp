@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Per-contact electrical output; see contact_flows.h.
 #include "electric/contact_flows.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Per-contact electrical output of a solved conduction model, plain C++ (no LIGGGHTS types):
 // one row per conducting contact with the conductance, current and voltage drop of the
 // element the contact stands for, oriented from the partner into the atom. The rows satisfy

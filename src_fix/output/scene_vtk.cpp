@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The bodies around a contact network as legacy VTK; see scene_vtk.h.
 #include "output/scene_vtk.h"
 

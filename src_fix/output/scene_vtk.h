@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The bodies around a contact network as legacy-VTK POLYDATA, for ParaView next to the
 // network (network_export.h), plain C++ (no LIGGGHTS types): the analytic bearing rings and
 // cage as surfaces, the particles as points with their radius (a Glyph of spheres scaled by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Time series of exported files; see vtk_series.h.
 #include "output/vtk_series.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Time series of exported files, the way LAMMPS dumps and ParaView expect them, plain C++
 // (no LIGGGHTS types): a `*` in a file name stands for the step; a ParaView collection
 // (.pvd) indexes the files of each written step with its time; companion files (particles,

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """compute network/resistance's local array (per-contact rows) on the bearing deck and the
 validation packing, checked by kirchhoff_check.py (numpy, independent of the C++): Kirchhoff
 at every particle, the electrodes carrying I, Ohm on every row; the bearing's rows against R

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Independent check of compute network/resistance's local array (a `dump local` of its 7
 columns: atom, partner, conductance, current, drop, masked, electrode), with numpy only.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """The VTK/netlist series of compute network/resistance read back (numpy, no VTK library):
 every legacy-VTK file parses (counts consistent, data arrays of the right length, finite),
 the .pvd lists exactly the written steps with their times and files, and the bearing's

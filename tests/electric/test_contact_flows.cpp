@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // Per-contact rows of a solved network (electric/contact_flows.h): a chain against eq. 1
 // written out here, Kirchhoff and Ohm on a branched scene for every model, the bearing closed
 // form's rows against the general network's.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The file-series helpers (src_fix/output/vtk_series.*) and the bearing geometry writer
 // (scene_vtk.*): names, the .pvd index, and the drawn dimensions read back.
 #include <gtest/gtest.h>
