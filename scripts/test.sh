@@ -12,7 +12,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2 -LE build
 
-# The post-only build (-DOHMDEM_POST_ONLY=ON: ohmdem-post and its tests without LIGGGHTS, MPI,
+# The post-only build (-DOHMDEM_POST_ONLY=ON: ohmdem-post without LIGGGHTS, MPI,
 # hypre) in a build folder of its own: a step apart, as it compiles the post tool again.
 ctest --test-dir build --output-on-failure -L build
 
