@@ -58,6 +58,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   size_local_rows = 0;
   vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
+  array_local = nullptr;  // LIGGGHTS' Compute leaves it unset: the destructor frees it
   contacts_ = std::make_unique<ContactSet>(
       lmp, id, area_exact_ ? ohmdem::AreaModel::Exact : ohmdem::AreaModel::Greenwood,
       pair_mode_ != 0);
