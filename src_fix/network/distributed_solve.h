@@ -29,7 +29,7 @@
 namespace ohmdem {
 
 struct DistributedOptions {
-  double tolerance = 1e-10;  // CG: ||b - A x||_2 <= tolerance ||b||_2
+  double tolerance = 1e-12;  // CG: ||b - A x||_2 <= tolerance ||b||_2
   int max_iterations = 1000;
   bool reuse_setup = true;
   double reuse_tolerance = 0.1;  // largest relative change of an entry that keeps the setup

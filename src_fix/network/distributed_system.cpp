@@ -69,6 +69,7 @@ void build_rows(const std::vector<Entry> &in, int n, int first, DistributedSyste
   s.columns.clear();
   s.values.clear();
   s.rhs.assign(n, 0.0);
+  s.to_low.assign(n, 0.0);
   touches.assign(n, 0);
   std::size_t p = 0;
   for (int i = 0; i < n; ++i) {
@@ -87,6 +88,7 @@ void build_rows(const std::vector<Entry> &in, int n, int first, DistributedSyste
         continue;
       }
       if (col == kLow) {
+        s.to_low[i] = sum;
         touches[i] |= 2;
         continue;
       }
@@ -196,6 +198,7 @@ void mark_floating(MPI_Comm comm, int n, int first, const std::vector<unsigned c
       ++nfloat;
       cols.push_back(first + i), vals.push_back(1.0);
       s.rhs[i] = 0.0;
+      s.to_low[i] = 0.0;
     } else {
       cols.insert(cols.end(), s.columns.begin() + s.row_start[i],
                   s.columns.begin() + s.row_start[i + 1]);
@@ -208,9 +211,34 @@ void mark_floating(MPI_Comm comm, int n, int first, const std::vector<unsigned c
   s.columns.swap(cols);
   s.values.swap(vals);
   MPI_Allreduce(&nfloat, &s.floating_rows, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  s.ghosts.clear();
+  for (int c : s.columns)
+    if (c < first || c >= first + n) s.ghosts.push_back(c);
+  std::sort(s.ghosts.begin(), s.ghosts.end());
+  s.ghosts.erase(std::unique(s.ghosts.begin(), s.ghosts.end()), s.ghosts.end());
 }
 
 }  // namespace
+
+std::vector<double> ghost_values(MPI_Comm comm, const DistributedSystem &s,
+                                 const std::vector<double> &mine)
+{
+  const int size = static_cast<int>(s.starts.size()) - 1;
+  std::vector<std::vector<int>> ask(size);
+  for (int g : s.ghosts) {
+    const int r = static_cast<int>(std::upper_bound(s.starts.begin(), s.starts.end(), g) -
+                                   s.starts.begin()) - 1;
+    ask[r].push_back(g);
+  }
+  std::vector<int> asked_by;
+  const std::vector<int> asked = exchange_blocks(ask, comm, &asked_by);
+  std::vector<std::vector<double>> reply(size);
+  std::size_t q = 0;
+  for (int r = 0; r < size; ++r)
+    for (int k = 0; k < asked_by[r]; ++k, ++q) reply[r].push_back(mine[asked[q] - s.first_row]);
+  // Ghosts are sorted and ranks own increasing ranges: the answers come back in ghost order.
+  return exchange_blocks(reply, comm);
+}
 
 double ordered_rank_sum(double mine, MPI_Comm comm)
 {
@@ -249,6 +277,7 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   const int my_first = s.first_row;
   MPI_Allgather(&my_first, 1, MPI_INT, starts.data(), 1, MPI_INT, comm);
   starts[size] = s.total_rows;
+  s.starts = starts;
   auto owner = [&](int row) {
     return static_cast<int>(std::upper_bound(starts.begin(), starts.end(), row) - starts.begin()) -
            1;

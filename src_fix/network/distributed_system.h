@@ -39,6 +39,9 @@ struct DistributedSystem {
   std::vector<int> columns;
   std::vector<double> values;
   std::vector<double> rhs;         // per row: conductance to the high electrode (V_high = 1)
+  std::vector<double> to_low;      // per row: conductance to the low electrode
+  std::vector<int> starts;         // first row of every rank, and total_rows at the end
+  std::vector<int> ghosts;         // columns owned elsewhere, sorted
   std::vector<char> floating;      // per row: in a component that reaches no electrode
   double direct = 0;               // conductance high-low summed over all ranks (rank order)
   bool connected = false;          // some path joins high and low (all ranks agree)
@@ -53,6 +56,10 @@ struct DistributedSystem {
 void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
                           const std::vector<DistributedEdge> &edges, NodeKey high, NodeKey low,
                           DistributedSystem &out);
+
+// Collective: the values of the ghost columns (sys.ghosts) given this rank's row values.
+std::vector<double> ghost_values(MPI_Comm comm, const DistributedSystem &sys,
+                                 const std::vector<double> &mine);
 
 // Sums one double per rank in rank order: bitwise the same for a fixed number of ranks.
 double ordered_rank_sum(double mine, MPI_Comm comm);
