@@ -149,7 +149,8 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
     for (int r = 0; r < nraces; ++r)
       if (k == ohmdem::race_node(r) && k != setup.high && k != setup.low) race_used[r] = 1;
   };
-  for (const ohmdem::NetworkEdge &e : edges_.edges()) {
+  edges_.added_edges(added_);
+  for (const ohmdem::NetworkEdge &e : added_) {
     share_.push_back({e.a, e.b, e.conductance});
     if (particle_of(e.a) == 0) note_race(e.a);
     if (particle_of(e.b) == 0) note_race(e.b);

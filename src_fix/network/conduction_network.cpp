@@ -302,6 +302,13 @@ std::vector<NetworkEdge> ConductionNetwork::edges() const
   return out;
 }
 
+void ConductionNetwork::added_edges(std::vector<NetworkEdge> &out) const
+{
+  out.clear();
+  out.reserve(impl_->raw.size());
+  for (const net::RawEdge &e : impl_->raw) out.push_back({e.a, e.b, e.g, 0.0, false});
+}
+
 std::vector<NetworkNode> ConductionNetwork::nodes() const
 {
   impl_->prepare();

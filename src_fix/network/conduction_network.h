@@ -151,6 +151,9 @@ class ConductionNetwork {
   // zero if the network changed since). They sort lazily (cached): not for concurrent calls.
   std::vector<NetworkEdge> edges() const;
   std::vector<NetworkNode> nodes() const;
+  // The accepted conductances as added (no sorting, no solve state; current 0): for a caller
+  // that only collects a network, such as the distributed path.
+  void added_edges(std::vector<NetworkEdge> &out) const;
 
  private:
   class Impl;

@@ -187,7 +187,7 @@ std::vector<double> DistributedNetworkSolver::Impl::start_guess() const
 // spread in digits: bulk and constriction conductances are decades apart).
 double DistributedNetworkSolver::Impl::power(const std::vector<double> &x) const
 {
-  const std::vector<double> ghost = ghost_values(comm_, sys_, x);
+  const std::vector<double> ghost = values_at_rows(comm_, sys_, x, sys_.ghosts);
   const int first = sys_.first_row, n = static_cast<int>(x.size());
   double mine = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -312,26 +312,35 @@ double DistributedNetworkSolver::potential(NodeKey key) const
 
 std::vector<double> DistributedNetworkSolver::potentials(const std::vector<NodeKey> &keys) const
 {
-  KeyDirectory dir(impl_->comm_);
-  std::vector<KeyDirectory::Entry> mine(impl_->sys_.keys.size());
-  for (std::size_t i = 0; i < mine.size(); ++i) {
-    std::int64_t bits;
-    std::memcpy(&bits, &impl_->x_[i], sizeof bits);
-    mine[i] = {impl_->sys_.keys[i], bits};
-  }
-  dir.publish(mine);
-  std::vector<NodeKey> ask;
+  const Impl &m = *impl_;
+  const auto &own = m.sys_.keys;
+  // Own nodes and electrodes here; the others' rows from the directory, values from owners.
+  std::vector<NodeKey> need;
   for (NodeKey k : keys)
-    if (k != impl_->high_ && k != impl_->low_) ask.push_back(k);
-  const std::vector<std::int64_t> got = dir.lookup(ask);
+    if (k != m.high_ && k != m.low_ && !std::binary_search(own.begin(), own.end(), k))
+      need.push_back(k);
+  std::sort(need.begin(), need.end());
+  need.erase(std::unique(need.begin(), need.end()), need.end());
+  const std::vector<std::int64_t> found = m.sys_.directory.lookup(need);
+  std::vector<int> rows;
+  for (std::int64_t r : found)
+    if (r != KeyDirectory::kMissing) rows.push_back(static_cast<int>(r));
+  std::sort(rows.begin(), rows.end());
+  rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+  const std::vector<double> at = values_at_rows(m.comm_, m.sys_, m.x_, rows);
   std::vector<double> out(keys.size(), 0.0);
-  std::size_t q = 0;
   for (std::size_t i = 0; i < keys.size(); ++i) {
-    if (keys[i] == impl_->high_) {
-      out[i] = impl_->v_high_;
-    } else if (keys[i] != impl_->low_) {
-      const std::int64_t bits = got[q++];
-      if (bits != KeyDirectory::kMissing) std::memcpy(&out[i], &bits, sizeof bits);
+    const NodeKey k = keys[i];
+    if (k == m.high_) {
+      out[i] = m.v_high_;
+    } else if (k == m.low_) {
+      out[i] = 0.0;
+    } else if (std::binary_search(own.begin(), own.end(), k)) {
+      out[i] = m.x_[std::lower_bound(own.begin(), own.end(), k) - own.begin()];
+    } else {
+      const std::int64_t r = found[std::lower_bound(need.begin(), need.end(), k) - need.begin()];
+      if (r != KeyDirectory::kMissing)
+        out[i] = at[std::lower_bound(rows.begin(), rows.end(), static_cast<int>(r)) - rows.begin()];
     }
   }
   return out;

@@ -220,12 +220,12 @@ void mark_floating(MPI_Comm comm, int n, int first, const std::vector<unsigned c
 
 }  // namespace
 
-std::vector<double> ghost_values(MPI_Comm comm, const DistributedSystem &s,
-                                 const std::vector<double> &mine)
+std::vector<double> values_at_rows(MPI_Comm comm, const DistributedSystem &s,
+                                   const std::vector<double> &mine, const std::vector<int> &rows)
 {
   const int size = static_cast<int>(s.starts.size()) - 1;
   std::vector<std::vector<int>> ask(size);
-  for (int g : s.ghosts) {
+  for (int g : rows) {
     const int r = static_cast<int>(std::upper_bound(s.starts.begin(), s.starts.end(), g) -
                                    s.starts.begin()) - 1;
     ask[r].push_back(g);
@@ -236,7 +236,7 @@ std::vector<double> ghost_values(MPI_Comm comm, const DistributedSystem &s,
   std::size_t q = 0;
   for (int r = 0; r < size; ++r)
     for (int k = 0; k < asked_by[r]; ++k, ++q) reply[r].push_back(mine[asked[q] - s.first_row]);
-  // Ghosts are sorted and ranks own increasing ranges: the answers come back in ghost order.
+  // Rows are sorted and ranks own increasing ranges: the answers come back in row order.
   return exchange_blocks(reply, comm);
 }
 
@@ -284,16 +284,23 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   };
 
   // Rows of the edges' ends, from the directory.
-  KeyDirectory dir(comm);
+  s.directory = KeyDirectory(comm);
+  KeyDirectory &dir = s.directory;
   {
     std::vector<KeyDirectory::Entry> mine(s.keys.size());
-    for (std::size_t i = 0; i < s.keys.size(); ++i) mine[i] = {s.keys[i], my_first + static_cast<long long>(i)};
+    for (std::size_t i = 0; i < s.keys.size(); ++i)
+      mine[i] = {s.keys[i], my_first + static_cast<long long>(i)};
     dir.publish(mine);
   }
+  // Most ends are this rank's own nodes; the others are asked of the directory.
+  auto own_row = [&](NodeKey k) -> int {
+    auto it = std::lower_bound(s.keys.begin(), s.keys.end(), k);
+    return it != s.keys.end() && *it == k ? my_first + static_cast<int>(it - s.keys.begin()) : -3;
+  };
   std::vector<NodeKey> need;
   for (const DistributedEdge &e : edges)
     for (NodeKey k : {e.a, e.b})
-      if (k != high && k != low) need.push_back(k);
+      if (k != high && k != low && own_row(k) < 0) need.push_back(k);
   std::sort(need.begin(), need.end());
   need.erase(std::unique(need.begin(), need.end()), need.end());
   const std::vector<std::int64_t> rows = dir.lookup(need);
@@ -305,6 +312,8 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   auto row_of = [&](NodeKey k) -> int {
     if (k == high) return kHigh;
     if (k == low) return kLow;
+    const int r = own_row(k);
+    if (r >= 0) return r;
     return static_cast<int>(rows[std::lower_bound(need.begin(), need.end(), k) - need.begin()]);
   };
 
@@ -332,9 +341,21 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   }
   std::vector<Entry> in = exchange_blocks(out, comm);
   out.clear();
-  std::sort(in.begin(), in.end(), [](const Entry &x, const Entry &y) {
-    return std::tie(x.row, x.col, x.g) < std::tie(y.row, y.col, y.g);
-  });
+  // Bucketed by row, then each row's few entries sorted by (column, g): the sums below do
+  // not depend on the order of arrival.
+  {
+    std::vector<std::size_t> at(static_cast<std::size_t>(n) + 1, 0);
+    for (const Entry &x : in) ++at[x.row - my_first + 1];
+    for (long long i = 0; i < n; ++i) at[i + 1] += at[i];
+    std::vector<Entry> sorted(in.size());
+    std::vector<std::size_t> next(at.begin(), at.end() - 1);
+    for (const Entry &x : in) sorted[next[x.row - my_first]++] = x;
+    for (long long i = 0; i < n; ++i)
+      std::sort(sorted.begin() + at[i], sorted.begin() + at[i + 1], [](const Entry &x, const Entry &y) {
+        return std::tie(x.col, x.g) < std::tie(y.col, y.g);
+      });
+    in.swap(sorted);
+  }
   long long counts[3] = {accepted, ignored, loops}, sums[3];
   MPI_Allreduce(counts, sums, 3, MPI_LONG_LONG, MPI_SUM, comm);
   s.edges = sums[0], s.ignored = sums[1], s.self_loops = sums[2];

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "network/conduction_network.h"
+#include "network/key_directory.h"
 
 namespace ohmdem {
 
@@ -42,6 +43,7 @@ struct DistributedSystem {
   std::vector<double> to_low;      // per row: conductance to the low electrode
   std::vector<int> starts;         // first row of every rank, and total_rows at the end
   std::vector<int> ghosts;         // columns owned elsewhere, sorted
+  KeyDirectory directory;          // key -> global row, for every owned key
   std::vector<char> floating;      // per row: in a component that reaches no electrode
   double direct = 0;               // conductance high-low summed over all ranks (rank order)
   bool connected = false;          // some path joins high and low (all ranks agree)
@@ -57,9 +59,9 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
                           const std::vector<DistributedEdge> &edges, NodeKey high, NodeKey low,
                           DistributedSystem &out);
 
-// Collective: the values of the ghost columns (sys.ghosts) given this rank's row values.
-std::vector<double> ghost_values(MPI_Comm comm, const DistributedSystem &sys,
-                                 const std::vector<double> &mine);
+// Collective: the values at `rows` (global, sorted, unique) given this rank's row values.
+std::vector<double> values_at_rows(MPI_Comm comm, const DistributedSystem &sys,
+                                   const std::vector<double> &mine, const std::vector<int> &rows);
 
 // Sums one double per rank in rank order: bitwise the same for a fixed number of ranks.
 double ordered_rank_sum(double mine, MPI_Comm comm);

@@ -24,6 +24,7 @@ class KeyDirectory {
   using Entry = std::pair<Key, std::int64_t>;
   static constexpr std::int64_t kMissing = INT64_MIN;
 
+  KeyDirectory() = default;  // empty, on no communicator: assign one before use
   explicit KeyDirectory(MPI_Comm comm);
   // Collective. Replaces the map by the union of every rank's entries (keys should be unique
   // over all ranks; a key published twice keeps the smaller value, so the map stays defined).
@@ -34,7 +35,7 @@ class KeyDirectory {
   std::size_t stored() const { return here_.size(); }
 
  private:
-  MPI_Comm comm_;
+  MPI_Comm comm_ = MPI_COMM_NULL;
   int size_ = 1, rank_ = 0;
   std::vector<Entry> here_;  // the keys whose home is this rank, sorted
 };
