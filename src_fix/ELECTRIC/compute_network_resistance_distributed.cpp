@@ -149,12 +149,13 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
     for (int r = 0; r < nraces; ++r)
       if (k == ohmdem::race_node(r) && k != setup.high && k != setup.low) race_used[r] = 1;
   };
-  edges_.added_edges(added_);
-  for (const ohmdem::NetworkEdge &e : added_) {
-    share_.push_back({e.a, e.b, e.conductance});
-    if (particle_of(e.a) == 0) note_race(e.a);
-    if (particle_of(e.b) == 0) note_race(e.b);
-  }
+  share_.reserve(edges_.num_edges());
+  edges_.for_each_added([&](ohmdem::NodeKey a, ohmdem::NodeKey b, double g) {
+    share_.push_back({a, b, g});
+    if (particle_of(a) == 0) note_race(a);
+    if (particle_of(b) == 0) note_race(b);
+  });
+  edges_ = ohmdem::ConductionNetwork();  // its memory is not needed through the solve
   if (nraces) MPI_Allreduce(MPI_IN_PLACE, race_used.data(), nraces, MPI_INT, MPI_MAX, world);
   owned_nodes_.clear();
   for (const auto &s : built_.spots)
@@ -202,8 +203,7 @@ double NetworkResistanceDistributed::memory_usage() const
                              contacts_.capacity() * sizeof(ohmdem::ContactRecord) +
                              built_.spots.capacity() * sizeof(ohmdem::NetworkBuild::Spot) +
                              share_.capacity() * sizeof(ohmdem::DistributedEdge) +
-                             owned_nodes_.capacity() * sizeof(ohmdem::NodeKey) +
-                             edges_.num_edges() * 64);
+                             owned_nodes_.capacity() * sizeof(ohmdem::NodeKey));
 }
 
 // ---- the compute's side of the distributed path ----

@@ -54,7 +54,6 @@ class NetworkResistanceDistributed : protected Pointers {
   std::vector<ohmdem::ParticleRecord> particles_;
   std::vector<ohmdem::ContactRecord> contacts_;
   ohmdem::ConductionNetwork edges_;  // collects this process's share of the conductances
-  std::vector<ohmdem::NetworkEdge> added_;
   ohmdem::NetworkBuild built_;
   std::vector<ohmdem::NodeKey> owned_nodes_;
   std::vector<ohmdem::DistributedEdge> share_;

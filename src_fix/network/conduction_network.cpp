@@ -302,11 +302,10 @@ std::vector<NetworkEdge> ConductionNetwork::edges() const
   return out;
 }
 
-void ConductionNetwork::added_edges(std::vector<NetworkEdge> &out) const
+NetworkEdge ConductionNetwork::added_edge(std::size_t k) const
 {
-  out.clear();
-  out.reserve(impl_->raw.size());
-  for (const net::RawEdge &e : impl_->raw) out.push_back({e.a, e.b, e.g, 0.0, false});
+  const net::RawEdge &e = impl_->raw[k];
+  return {e.a, e.b, e.g, 0.0, false};
 }
 
 std::vector<NetworkNode> ConductionNetwork::nodes() const

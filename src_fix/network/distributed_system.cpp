@@ -7,6 +7,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <tuple>
+#include <unordered_map>
 
 #include "network/key_directory.h"
 
@@ -15,6 +16,7 @@ namespace ohmdem {
 namespace {
 
 constexpr int kHigh = -1, kLow = -2;  // column of an electrode in a routed entry
+constexpr int kUnknown = -3;          // not yet looked up
 
 struct Entry {
   int row, col;  // global; col kHigh / kLow for an electrode
@@ -292,15 +294,27 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
       mine[i] = {s.keys[i], my_first + static_cast<long long>(i)};
     dir.publish(mine);
   }
-  // Most ends are this rank's own nodes; the others are asked of the directory.
-  auto own_row = [&](NodeKey k) -> int {
-    auto it = std::lower_bound(s.keys.begin(), s.keys.end(), k);
-    return it != s.keys.end() && *it == k ? my_first + static_cast<int>(it - s.keys.begin()) : -3;
-  };
+  // The rows of the edges' ends: most are this rank's own nodes (a hash map), the others are
+  // asked of the directory.
+  std::unordered_map<NodeKey, int> own;
+  own.reserve(s.keys.size() * 2);
+  for (std::size_t i = 0; i < s.keys.size(); ++i) own.emplace(s.keys[i], my_first + static_cast<int>(i));
+  std::vector<int> ends(2 * edges.size());
   std::vector<NodeKey> need;
-  for (const DistributedEdge &e : edges)
-    for (NodeKey k : {e.a, e.b})
-      if (k != high && k != low && own_row(k) < 0) need.push_back(k);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    for (int side = 0; side < 2; ++side) {
+      const NodeKey k = side ? edges[e].b : edges[e].a;
+      int &r = ends[2 * e + side];
+      if (k == high) {
+        r = kHigh;
+      } else if (k == low) {
+        r = kLow;
+      } else {
+        auto it = own.find(k);
+        r = it != own.end() ? it->second : kUnknown;
+        if (r == kUnknown) need.push_back(k);
+      }
+    }
   std::sort(need.begin(), need.end());
   need.erase(std::unique(need.begin(), need.end()), need.end());
   const std::vector<std::int64_t> rows = dir.lookup(need);
@@ -309,19 +323,20 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPI_INT, MPI_MAX, comm);
   if (missing)
     throw std::invalid_argument("distributed network: an edge names a node that no rank owns");
-  auto row_of = [&](NodeKey k) -> int {
-    if (k == high) return kHigh;
-    if (k == low) return kLow;
-    const int r = own_row(k);
-    if (r >= 0) return r;
-    return static_cast<int>(rows[std::lower_bound(need.begin(), need.end(), k) - need.begin()]);
-  };
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    for (int side = 0; side < 2; ++side) {
+      int &r = ends[2 * e + side];
+      if (r != kUnknown) continue;
+      const NodeKey k = side ? edges[e].b : edges[e].a;
+      r = static_cast<int>(rows[std::lower_bound(need.begin(), need.end(), k) - need.begin()]);
+    }
 
   // Each edge to the owners of both ends.
   std::vector<std::vector<Entry>> out(size);
   long long accepted = 0, ignored = 0, loops = 0;
   double direct = 0.0;
-  for (const DistributedEdge &e : edges) {
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const DistributedEdge &e = edges[k];
     if (!(e.g > 0.0) || !std::isfinite(e.g)) {
       ++ignored;
       continue;
@@ -331,7 +346,7 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
       continue;
     }
     ++accepted;
-    const int ra = row_of(e.a), rb = row_of(e.b);
+    const int ra = ends[2 * k], rb = ends[2 * k + 1];
     if (ra < 0 && rb < 0) {
       direct += e.g;
       continue;
@@ -339,6 +354,7 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
     if (ra >= 0) out[owner(ra)].push_back({ra, rb, e.g});
     if (rb >= 0) out[owner(rb)].push_back({rb, ra, e.g});
   }
+  std::vector<int>().swap(ends);
   std::vector<Entry> in = exchange_blocks(out, comm);
   out.clear();
   // Bucketed by row, then each row's few entries sorted by (column, g): the sums below do
@@ -363,6 +379,7 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
 
   std::vector<unsigned char> touches;
   build_rows(in, static_cast<int>(n), s.first_row, s, touches);
+  std::vector<Entry>().swap(in);
   mark_floating(comm, static_cast<int>(n), s.first_row, touches, s);
 }
 
