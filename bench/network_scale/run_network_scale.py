@@ -14,8 +14,9 @@ same run without the compute (the engine's own memory). Usage:
       [--gathered-max 24] [--today]
 
 --gathered-max: the largest size also run with the gathered solve (every rank holds the
-whole network). --today: also the deck as it was before (netlist and VTK exports on, which
-force the gathered solve) at the first size >= 24.
+whole network; `gathered` is solver auto on 1 process, `gath.amg` solver amg on 1 and 2).
+--today: also the deck as it was before (netlist and VTK exports on, which force the gathered
+solve) at the first size >= 24.
 """
 import argparse
 import os
@@ -63,13 +64,16 @@ def main():
             common = {"cells": cells, "steps": a.steps, "squeeze": 1e-5}
             engine = {np_: run(exe, np_, os.path.join(wd, f"e{cells}_{np_}"), network="no",
                                **common) for np_ in (1, 2)}
-            modes = [("distributed", {"solver": "distributed", "export": "no"})]
+            # gathered: auto (1 process only: with more, auto goes distributed from 20000
+            # spheres) and amg (the gathered multigrid, the distributed solve's counterpart).
+            modes = [("distributed", (1, 2), {"solver": "distributed", "export": "no"})]
             if cells <= a.gathered_max:
-                modes.insert(0, ("gathered", {"solver": "auto", "export": "no"}))
+                modes[:0] = [("gathered", (1,), {"solver": "auto", "export": "no"}),
+                             ("gath.amg", (1, 2), {"solver": "amg", "export": "no"})]
             if a.today and cells >= 24 and not any(r[1] == "today" for r in rows):
-                modes.insert(0, ("today", {"solver": "auto", "export": "both"}))
-            for name, var in modes:
-                for np_ in (1, 2):
+                modes.insert(0, ("today", (1, 2), {"solver": "auto", "export": "both"}))
+            for name, nps, var in modes:
+                for np_ in nps:
                     r = run(exe, np_, os.path.join(wd, f"{name}{cells}_{np_}"), **common, **var)
                     t = r["other"] / a.steps
                     # CPU of the busiest rank spent on R: the run's minus the engine-only
@@ -86,7 +90,7 @@ def main():
         by = {(r[1], r[2]): r for r in rows if r[0] == n}
         one = [by[k] for k in by if k[1] == 1]
         best1 = min(one, key=lambda r: r[3])
-        for name in ("today", "gathered", "distributed"):
+        for name in ("today", "gath.amg", "distributed"):
             if (name, 2) in by:
                 r2 = by[(name, 2)]
                 print(f"  {n:>9} spheres, {name:>11}: wall {r2[3] / best1[3]:.2f}x, busiest "
