@@ -7,8 +7,8 @@
 // potentials are scaled to the given current. Plain C++ with MPI, no LIGGGHTS types.
 //
 // AMG reuse: the hierarchy of the last setup is kept while the sparsity pattern (the rows of
-// every rank and their columns) is the same and no matrix entry moved by more than
-// reuse_tolerance (relative) from its value at that setup; otherwise it is set up again.
+// every rank and their columns) is the same and the matrix moved by at most reuse_tolerance
+// from the one of that setup (Frobenius norm, relative); otherwise it is set up again.
 // CG with a kept hierarchy is exact CG on the new matrix with a fixed (older) preconditioner:
 // only the iteration count can change, not the answer's accuracy.
 //
@@ -32,7 +32,7 @@ struct DistributedOptions {
   double tolerance = 1e-12;  // CG: ||b - A x||_2 <= tolerance ||b||_2
   int max_iterations = 1000;
   bool reuse_setup = true;
-  double reuse_tolerance = 0.1;  // largest relative change of an entry that keeps the setup
+  double reuse_tolerance = 0.1;  // ||A - A_setup||_F / ||A_setup||_F that still keeps it
   bool warm_start = true;        // CG starts from the last potentials of the same keys
 };
 
