@@ -8,9 +8,8 @@
 #include <mpi.h>
 
 #include <algorithm>
-#include <tuple>
-
 #include <string>
+#include <tuple>
 
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/compute_network_resistance.h"
@@ -135,8 +134,8 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
                                                                          double *phi)
 {
   route(contacts, setup);
-  const ohmdem::NetworkScene scene{&particles_, &contacts_, setup.gamma_type, setup.gamma_race,
-                                   false, &owned_tags_};
+  const ohmdem::NetworkScene scene{&particles_,      &contacts_, setup.gamma_type,
+                                   setup.gamma_race, false,      &owned_tags_};
   ohmdem::build_network(*setup.model, scene, edges_, built_);
 
   // This process's share of the conductances, and the nodes it owns: the contact nodes of
@@ -174,7 +173,8 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
   // Per-atom potential: the mean over the particle's contact nodes (0 without a contact).
   std::vector<ohmdem::NodeKey> keys;
   for (const auto &s : built_.spots)
-    if (std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag)) keys.push_back(s.spot.node);
+    if (std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag))
+      keys.push_back(s.spot.node);
   const std::vector<double> v = solver_->potentials(keys);
   std::vector<std::pair<std::int64_t, double>> by_tag;
   std::size_t k = 0;
@@ -227,7 +227,8 @@ void ComputeNetworkResistance::solve_distributed()
 {
   if (!distributed_) distributed_ = std::make_unique<NetworkResistanceDistributed>(lmp);
   gamma_race_.clear();
-  for (const FixBearingRace *r : contacts_->races()) gamma_race_.push_back(gamma_type_[r->race_type()]);
+  for (const FixBearingRace *r : contacts_->races())
+    gamma_race_.push_back(gamma_type_[r->race_type()]);
   auto node = [&](const Electrode &e, ohmdem::Membership member) {
     return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
   };
@@ -243,11 +244,11 @@ void ComputeNetworkResistance::solve_distributed()
   const auto r = distributed_->solve(*contacts_, setup, current_, vector_atom);
   const ohmdem::DistributedSolution &s = r.solution;
   if (!s.converged && comm->me == 0)
-    error->warning(FLERR, ("compute network/resistance: the distributed CG stopped at step " +
-                           std::to_string(update->ntimestep) + " after " +
-                           std::to_string(s.iterations) + " iterations, relative residual " +
-                           std::to_string(s.relative_residual))
-                              .c_str());
+    error->warning(FLERR,
+                   ("compute network/resistance: the distributed CG stopped at step " +
+                    std::to_string(update->ntimestep) + " after " + std::to_string(s.iterations) +
+                    " iterations, relative residual " + std::to_string(s.relative_residual))
+                       .c_str());
   report(s.resistance, static_cast<int>(r.contacts), static_cast<int>(s.floating_nodes),
          s.iterations, s.relative_residual);
 }

@@ -64,7 +64,8 @@ void make_matrix(MPI_Comm comm, const DistributedSystem &s, IJMatrix &m)
   HYPRE_IJMatrixSetObjectType(m.h, HYPRE_PARCSR);
   if (n) HYPRE_IJMatrixSetRowSizes(m.h, sizes.data());
   HYPRE_IJMatrixInitialize(m.h);
-  if (n) HYPRE_IJMatrixSetValues(m.h, n, sizes.data(), rows.data(), s.columns.data(), s.values.data());
+  if (n)
+    HYPRE_IJMatrixSetValues(m.h, n, sizes.data(), rows.data(), s.columns.data(), s.values.data());
   HYPRE_IJMatrixAssemble(m.h);
 }
 
@@ -113,7 +114,7 @@ class DistributedNetworkSolver::Impl {
   MPI_Comm comm_;
   DistributedOptions opt_;
   DistributedSystem sys_;
-  std::vector<double> x_;        // potentials of sys_.keys (V) after the last solve
+  std::vector<double> x_;           // potentials of sys_.keys (V) after the last solve
   std::vector<NodeKey> warm_keys_;  // keys and per-volt potentials of the last solve
   std::vector<double> warm_x_;
   // The kept hierarchy and the matrix it was set up on (BoomerAMG keeps using it).

@@ -37,7 +37,7 @@ struct DistributedOptions {
 };
 
 struct DistributedSolution {
-  double resistance = 0;        // ohm; +inf when no path joins the electrodes
+  double resistance = 0;  // ohm; +inf when no path joins the electrodes
   bool connected = false;
   bool converged = true;
   int iterations = 0;

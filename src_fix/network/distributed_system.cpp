@@ -54,8 +54,7 @@ std::vector<T> gather_to_root(const std::vector<T> &mine, MPI_Comm comm, std::ve
   MPI_Gather(&bytes, 1, MPI_INT, rb.data(), 1, MPI_INT, 0, comm);
   for (int r = 0; r < size; ++r) disp[r + 1] = disp[r] + rb[r];
   std::vector<T> all(rank == 0 ? static_cast<std::size_t>(disp[size]) / sizeof(T) + 1 : 1);
-  MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), rb.data(), disp.data(), MPI_BYTE, 0,
-              comm);
+  MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), rb.data(), disp.data(), MPI_BYTE, 0, comm);
   all.pop_back();
   counts.resize(size);
   for (int r = 0; r < size; ++r) counts[r] = rb[r] / static_cast<int>(sizeof(T));
@@ -228,8 +227,9 @@ std::vector<double> values_at_rows(MPI_Comm comm, const DistributedSystem &s,
   const int size = static_cast<int>(s.starts.size()) - 1;
   std::vector<std::vector<int>> ask(size);
   for (int g : rows) {
-    const int r = static_cast<int>(std::upper_bound(s.starts.begin(), s.starts.end(), g) -
-                                   s.starts.begin()) - 1;
+    const int r =
+        static_cast<int>(std::upper_bound(s.starts.begin(), s.starts.end(), g) - s.starts.begin()) -
+        1;
     ask[r].push_back(g);
   }
   std::vector<int> asked_by;
@@ -262,9 +262,9 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   MPI_Comm_rank(comm, &rank);
   std::sort(owned.begin(), owned.end());
   owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
-  owned.erase(std::remove_if(owned.begin(), owned.end(),
-                             [&](NodeKey k) { return k == high || k == low; }),
-              owned.end());
+  owned.erase(
+      std::remove_if(owned.begin(), owned.end(), [&](NodeKey k) { return k == high || k == low; }),
+      owned.end());
   // Contiguous rows per rank, in rank order.
   long long n = static_cast<long long>(owned.size()), first = 0, total = 0;
   MPI_Exscan(&n, &first, 1, MPI_LONG_LONG, MPI_SUM, comm);
@@ -298,7 +298,8 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   // asked of the directory.
   std::unordered_map<NodeKey, int> own;
   own.reserve(s.keys.size() * 2);
-  for (std::size_t i = 0; i < s.keys.size(); ++i) own.emplace(s.keys[i], my_first + static_cast<int>(i));
+  for (std::size_t i = 0; i < s.keys.size(); ++i)
+    own.emplace(s.keys[i], my_first + static_cast<int>(i));
   std::vector<int> ends(2 * edges.size());
   std::vector<NodeKey> need;
   for (std::size_t e = 0; e < edges.size(); ++e)
@@ -367,9 +368,10 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
     std::vector<std::size_t> next(at.begin(), at.end() - 1);
     for (const Entry &x : in) sorted[next[x.row - my_first]++] = x;
     for (long long i = 0; i < n; ++i)
-      std::sort(sorted.begin() + at[i], sorted.begin() + at[i + 1], [](const Entry &x, const Entry &y) {
-        return std::tie(x.col, x.g) < std::tie(y.col, y.g);
-      });
+      std::sort(sorted.begin() + at[i], sorted.begin() + at[i + 1],
+                [](const Entry &x, const Entry &y) {
+                  return std::tie(x.col, x.g) < std::tie(y.col, y.g);
+                });
     in.swap(sorted);
   }
   long long counts[3] = {accepted, ignored, loops}, sums[3];

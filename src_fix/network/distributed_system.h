@@ -33,24 +33,24 @@ struct DistributedEdge {
 };
 
 struct DistributedSystem {
-  int first_row = 0;               // global index of this rank's first row
-  int total_rows = 0;              // over all ranks
-  std::vector<NodeKey> keys;       // owned keys, sorted: row first_row + i
-  std::vector<int> row_start;      // compressed rows: global columns, sorted, diagonal included
+  int first_row = 0;           // global index of this rank's first row
+  int total_rows = 0;          // over all ranks
+  std::vector<NodeKey> keys;   // owned keys, sorted: row first_row + i
+  std::vector<int> row_start;  // compressed rows: global columns, sorted, diagonal included
   std::vector<int> columns;
   std::vector<double> values;
-  std::vector<double> rhs;         // per row: conductance to the high electrode (V_high = 1)
-  std::vector<double> to_low;      // per row: conductance to the low electrode
-  std::vector<int> starts;         // first row of every rank, and total_rows at the end
-  std::vector<int> ghosts;         // columns owned elsewhere, sorted
-  KeyDirectory directory;          // key -> global row, for every owned key
-  std::vector<char> floating;      // per row: in a component that reaches no electrode
-  double direct = 0;               // conductance high-low summed over all ranks (rank order)
-  bool connected = false;          // some path joins high and low (all ranks agree)
-  long long floating_rows = 0;     // over all ranks
-  long long edges = 0;             // accepted edges over all ranks
-  long long ignored = 0;           // over all ranks: g <= 0 or non-finite
-  long long self_loops = 0;        // over all ranks: a == b
+  std::vector<double> rhs;      // per row: conductance to the high electrode (V_high = 1)
+  std::vector<double> to_low;   // per row: conductance to the low electrode
+  std::vector<int> starts;      // first row of every rank, and total_rows at the end
+  std::vector<int> ghosts;      // columns owned elsewhere, sorted
+  KeyDirectory directory;       // key -> global row, for every owned key
+  std::vector<char> floating;   // per row: in a component that reaches no electrode
+  double direct = 0;            // conductance high-low summed over all ranks (rank order)
+  bool connected = false;       // some path joins high and low (all ranks agree)
+  long long floating_rows = 0;  // over all ranks
+  long long edges = 0;          // accepted edges over all ranks
+  long long ignored = 0;        // over all ranks: g <= 0 or non-finite
+  long long self_loops = 0;     // over all ranks: a == b
 };
 
 // Collective over comm. Throws std::invalid_argument if an edge names a node that no rank

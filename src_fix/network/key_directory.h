@@ -44,7 +44,7 @@ class KeyDirectory {
 // returns what every rank sent to this one, in rank order (so the order is deterministic).
 template <class T>
 std::vector<T> exchange_blocks(const std::vector<std::vector<T>> &out, MPI_Comm comm,
-                        std::vector<int> *counts_in = nullptr)
+                               std::vector<int> *counts_in = nullptr)
 {
   int size = 1;
   MPI_Comm_size(comm, &size);

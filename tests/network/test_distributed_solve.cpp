@@ -172,8 +172,8 @@ TEST(Distributed, FloatingComponentsAreDroppedAndAnOpenNetworkIsInfinite)
   const NodeKey H = 1, L = 2, A = 11, B = 12, X = 21, Y = 22, Z = 23, D = 31;
   RandomNetwork net;
   net.keys = {H, L, A, B, X, Y, Z, D};
-  net.edges = {{H, A, 1.0},     {H, B, 0.5}, {A, L, 1.0 / 3}, {B, L, 0.2}, {A, B, 1.0 / 7},
-               {X, Y, 2.0},     {Y, Z, 3.0}, {Z, X, 4.0},     {H, D, 5.0}};
+  net.edges = {{H, A, 1.0}, {H, B, 0.5}, {A, L, 1.0 / 3}, {B, L, 0.2}, {A, B, 1.0 / 7},
+               {X, Y, 2.0}, {Y, Z, 3.0}, {Z, X, 4.0},     {H, D, 5.0}};
   DistributedNetworkSolver solver(MPI_COMM_WORLD);
   const DistributedSolution r = solve(solver, net, 1.0);
   EXPECT_NEAR(r.resistance, 257.0 / 101.0, 1e-12);
