@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "BEARING/fix_bearing_race.h"
+#include "ELECTRIC/compute_network_resistance_distributed.h"
 #include "ELECTRIC/contact_set.h"
 #include "atom.h"
 #include "comm.h"
@@ -108,16 +109,17 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       const std::string m = a.word(kw, names.c_str());
       if (!ohmdem::find_model(m, model_)) a.fail(kw, names.c_str(), m.c_str());
     } else if (kw == "solver") {
-      const std::string m = a.word(kw, "auto, direct, cg or amg");
+      const std::string m = a.word(kw, "auto, direct, cg, amg or distributed");
       multigrid_ = m == "amg";
-      if (m == "auto")
+      distributed_solver_ = m == "distributed";
+      if (m == "auto" || m == "distributed")
         solver_ = static_cast<int>(ohmdem::SolverKind::Auto);
       else if (m == "direct")
         solver_ = static_cast<int>(ohmdem::SolverKind::Direct);
       else if (m == "cg" || m == "amg")
         solver_ = static_cast<int>(ohmdem::SolverKind::ConjugateGradient);
       else
-        a.fail(kw, "auto, direct, cg or amg", m.c_str());
+        a.fail(kw, "auto, direct, cg, amg or distributed", m.c_str());
     } else if (kw == "pair") {
       pair_mode_ = a.yes_no(kw) ? 1 : 0;
     } else if (kw == "netlist") {
@@ -137,6 +139,9 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
   if (!have_high)
     a.fail("high", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
   if (!have_low) a.fail("low", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
+  if (distributed_solver_ && (!netlist_.empty() || !vtk_.empty()))
+    a.fail("solver", "not distributed with netlist or vtk (the exports need the whole network "
+                     "on one process)", "distributed");
   if (high_.kind == low_.kind && high_.name == low_.name)
     a.fail("low", "an electrode other than the high one", low_.name.c_str());
 }
@@ -372,6 +377,8 @@ void ComputeNetworkResistance::gather_scene(std::vector<ohmdem::ParticleRecord> 
 
 void ComputeNetworkResistance::build_and_solve()
 {
+  distributed_used_ = use_distributed();
+  if (distributed_used_) return solve_distributed();
   // The scene in members: their memory is reused from step to step.
   gather_scene(particles_, contact_records_);
   gamma_race_.clear();
@@ -436,5 +443,6 @@ void ComputeNetworkResistance::compute_peratom()
 double ComputeNetworkResistance::memory_usage()
 {
   return static_cast<double>(nmax_) * sizeof(double) +
-         static_cast<double>(local_capacity_) * ohmdem::ContactFlow::kColumns * sizeof(double);
+         static_cast<double>(local_capacity_) * ohmdem::ContactFlow::kColumns * sizeof(double) +
+         (distributed_ ? distributed_->memory_usage() : 0.0);
 }

@@ -34,6 +34,7 @@ namespace LAMMPS_NS {
 
 class ContactSet;
 class FixBearingRace;
+class NetworkResistanceDistributed;
 
 class ComputeNetworkResistance : public Compute {
  public:
@@ -58,6 +59,8 @@ class ComputeNetworkResistance : public Compute {
   void evaluate();                // builds and solves the network once per time step
   bool evaluate_between_races();  // closed form when every ball joins the two races
   void build_and_solve();         // the general network
+  bool use_distributed();         // compute_network_resistance_distributed.cpp
+  void solve_distributed();
   void gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
                     std::vector<ohmdem::ContactRecord> &contacts);
   void write_exports(const std::vector<ohmdem::VtkEdge> &drawn);
@@ -77,6 +80,8 @@ class ComputeNetworkResistance : public Compute {
   ohmdem::ConductionModel model_;  // from the keyword `model` (conduction_model.h's table)
   int solver_ = 0;                 // ohmdem::SolverKind
   bool multigrid_ = false;         // solver amg: CG preconditioned by algebraic multigrid
+  bool distributed_solver_ = false;  // solver distributed
+  std::unique_ptr<NetworkResistanceDistributed> distributed_;
   bool area_exact_ = false;
   int pair_mode_ = -1;         // -1 auto (use the granular pair style if there is one), 0 no, 1 yes
   std::string netlist_, vtk_;  // a `*` stands for the step (vtk_series.h)
@@ -110,6 +115,7 @@ class ComputeNetworkResistance : public Compute {
   ohmdem::NetworkBuild built_;
   int nmax_ = 0;
   bool closed_form_used_ = false;  // the last evaluation took the closed form
+  bool distributed_used_ = false;  // the last general solve was distributed (no local rows)
   // The local array: this process's rows (contacts whose atom it owns), kept for reuse.
   std::vector<ohmdem::ContactFlow> flows_, all_flows_;
   int local_capacity_ = 0;

@@ -11,6 +11,7 @@
 #include "ELECTRIC/contact_set.h"
 #include "atom.h"
 #include "electric/contact_flows.h"
+#include "error.h"
 #include "memory.h"
 #include "network/conduction_network.h"
 #include "update.h"
@@ -94,10 +95,17 @@ void ComputeNetworkResistance::compute_local()
   invoked_local = update->ntimestep;
   evaluate();
   flows_.clear();
-  if (closed_form_used_)
+  if (closed_form_used_) {
     closed_form_flows(flows_);
-  else
+  } else if (distributed_used_) {
+    // The rows need every node potential: the distributed solve keeps each on its owner.
+    error->all(FLERR,
+               "compute network/resistance: the per-contact local array needs the gathered "
+               "network solve, not solver distributed (solver auto goes distributed from 20000 "
+               "particles on more than one process): give solver direct, cg or amg");
+  } else {
     network_flows(flows_);
+  }
   masked_flows(flows_);
   // A fixed order, the same with any number of processes: by atom, then partner, the high
   // electrode before the low one, then conductance and current.

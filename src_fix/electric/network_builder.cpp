@@ -28,6 +28,11 @@ class Builder {
 
  private:
   const ParticleRecord *find(std::int64_t tag) const;
+  bool owned(std::int64_t tag) const
+  {
+    const auto *t = scene_.owned_tags;
+    return !t || std::binary_search(t->begin(), t->end(), tag);
+  }
   NodeKey side_node(const ParticleRecord &p, std::uint32_t other, NodeKey shared) const;
   void add_contact(const ContactRecord &c);
   void add_bulk();
@@ -84,13 +89,14 @@ void Builder::add_contact(const ContactRecord &c)
     other_side = side_node(*q, static_cast<std::uint32_t>(p->tag), shared);
   }
   if (!(gp > 0.0) || !(go > 0.0)) return;  // an insulator on either side: no current
-  ++out_.conducting_contacts;
+  const bool built_here = owned(p->tag);
+  if (built_here) ++out_.conducting_contacts;
   const NodeKey mine = side_node(*p, other_id, shared);
   const double *pt = c.point;
   const int index = static_cast<int>(&c - scene_.contacts->data());
   out_.spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}, index});
   if (q) out_.spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}, index});
-  if (!model_.has_constriction()) return;
+  if (!model_.has_constriction() || !built_here) return;
   // The constriction of the spot, in series between the two bodies.
   const double rc = model_.constriction_resistance(gp, go, c.a, c.b);
   if (!(std::isfinite(rc) && rc > 0.0)) return;
@@ -123,7 +129,7 @@ void Builder::add_bulk()
     std::size_t e = s;
     while (e < spots.size() && spots[e].tag == spots[s].tag) ++e;
     const ParticleRecord *p = find(spots[s].tag);
-    if (p && p->member == Membership::None) {
+    if (p && p->member == Membership::None && owned(p->tag)) {
       mine.clear();
       for (std::size_t k = s; k < e; ++k) mine.push_back(spots[k].spot);
       const ConductingParticle cp{{p->centre[0], p->centre[1], p->centre[2]},

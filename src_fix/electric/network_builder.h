@@ -78,6 +78,10 @@ struct NetworkScene {
   const std::vector<double> *gamma_type;  // conductivity of each atom type (S/m), 1-based
   const std::vector<double> *gamma_race;  // conductivity of each race (S/m)
   bool draw = false;                      // fill NetworkBuild::drawn (VTK)
+  // A rank's share of a distributed network (sorted tags; nullptr: the whole network): the
+  // bulk law of these particles only, and the constriction (and count) of a contact only if
+  // its first particle (ContactRecord::tag) is one of these, so each edge is built once.
+  const std::vector<std::int64_t> *owned_tags = nullptr;
 };
 
 struct NetworkBuild {

@@ -303,6 +303,12 @@ std::vector<NetworkEdge> ConductionNetwork::edges() const
   return out;
 }
 
+NetworkEdge ConductionNetwork::added_edge(std::size_t k) const
+{
+  const net::RawEdge &e = impl_->raw[k];
+  return {e.a, e.b, e.g, 0.0, false};
+}
+
 std::vector<NetworkNode> ConductionNetwork::nodes() const
 {
   impl_->prepare();

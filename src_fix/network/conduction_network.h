@@ -152,6 +152,17 @@ class ConductionNetwork {
   // zero if the network changed since). They sort lazily (cached): not for concurrent calls.
   std::vector<NetworkEdge> edges() const;
   std::vector<NetworkNode> nodes() const;
+  // The accepted conductances as added (no sorting, no solve state; current 0): for a caller
+  // that only collects a network, such as the distributed path.
+  template <class F>
+  void for_each_added(F &&f) const
+  {
+    for (std::size_t k = 0, n = num_edges(); k < n; ++k) {
+      const NetworkEdge e = added_edge(k);
+      f(e.a, e.b, e.conductance);
+    }
+  }
+  NetworkEdge added_edge(std::size_t k) const;  // current 0
 
  private:
   class Impl;

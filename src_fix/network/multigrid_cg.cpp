@@ -6,12 +6,12 @@
 #include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
 #include <mpi.h>
-#include <omp.h>
 
-#include <cstdlib>
 #include <numeric>
 #include <type_traits>
 #include <vector>
+
+#include "network/hypre_env.h"
 
 namespace ohmdem {
 
@@ -20,40 +20,6 @@ static_assert(std::is_same<HYPRE_Int, int>::value && std::is_same<HYPRE_BigInt, 
 static_assert(std::is_same<HYPRE_Complex, double>::value, "hypre must use double");
 
 namespace {
-
-void ensure_started()
-{
-  int started = 0;
-  MPI_Initialized(&started);
-  if (!started) {  // a plain C++ caller (a test, a benchmark): hypre needs MPI
-    MPI_Init(nullptr, nullptr);
-    std::atexit([] {
-      int finished = 0;
-      MPI_Finalized(&finished);
-      if (!finished) MPI_Finalize();
-    });
-  }
-  static const bool ready = [] {
-    HYPRE_Init();
-    return true;
-  }();
-  (void)ready;
-}
-
-// hypre's OpenMP loops on one thread: their reductions would otherwise add in an order that
-// depends on the thread count (set by the machine and by MPI's core binding), so the last
-// bits of R could change from one launch to another. Measured: no loss of speed on these
-// networks (the same times with OMP_NUM_THREADS=1 and 2).
-class OneThread {
- public:
-  OneThread() : threads_(omp_get_max_threads()) { omp_set_num_threads(1); }
-  ~OneThread() { omp_set_num_threads(threads_); }
-  OneThread(const OneThread &) = delete;
-  OneThread &operator=(const OneThread &) = delete;
-
- private:
-  int threads_;
-};
 
 // hypre's handles, released in every exit path.
 struct Handles {
@@ -91,8 +57,8 @@ MultigridResult multigrid_cg(int n, const int *row_start, const int *columns, co
     out.converged = true;
     return out;
   }
-  ensure_started();
-  const OneThread one_thread;
+  ensure_hypre_started();
+  const HypreOneThread one_thread;  // determinism: hypre_env.h
   Handles h;
   std::vector<int> rows(n), sizes(n);
   std::iota(rows.begin(), rows.end(), 0);

@@ -89,6 +89,13 @@ def read_R(log, key):
     return float(re.search(rf"^{key} (\S+)", log, re.M).group(1))
 
 
+def thermo_R(log):
+    """R of every thermo row of the last run, as printed (17 digits: every bit)."""
+    block = log[log.rindex("Step"):]
+    block = block[:block.index("Loop time")]
+    return [row.split()[2] for row in block.splitlines()[1:] if row.strip()]
+
+
 def ngspice_R(cir, current):
     raw = cir + ".raw"
     env = dict(os.environ, SPICE_ASCIIRAWFILE="1")
@@ -189,6 +196,60 @@ def main():
                                 "PACKING_R"))
             check(abs(R[1] / R[0] - 1) < 1e-12,
                   f"packing: R with 1 and 2 processes {R[0]:.17g} / {R[1]:.17g}")
+        elif a.test == "chain_distributed":
+            # solver distributed (each process assembles its particles' rows, hypre on all
+            # processes) against the closed form, in all three models (their node schemes
+            # differ), with 1, 2 and 3 processes; then a chain cut open: R = inf, no NaN.
+            for model in ("eq1", "holm", "eq1+holm"):
+                for nprocs in (1, 2, 3):
+                    out = os.path.join(wd, f"d_{model}_{nprocs}")
+                    log = run(exe, os.path.join(val, "in.chain"), out, nprocs=nprocs, N=10,
+                              emodel=model, solver="distributed")
+                    R = read_R(log, "CHAIN_R")
+                    ref = chain_reference(os.path.join(out, "atoms.dump"), 5.88e7, model=model)
+                    check(abs(R / ref - 1) < 1e-10,
+                          f"distributed, {model}, {nprocs} processes: R = {R:.12g} ohm, closed "
+                          f"form {ref:.12g} (rel. diff {R / ref - 1:+.1e})")
+            out = os.path.join(wd, "d_gap")
+            log = run(exe, os.path.join(val, "in.chain"), out, nprocs=2, N=10, gapat=5,
+                      solver="distributed")
+            check(read_R(log, "CHAIN_R") == math.inf, "distributed, an open contact: R = inf")
+            sig = open(os.path.join(out, "signal.txt")).read()
+            check("nan" not in sig.lower(), "distributed, open chain: no NaN in signal.txt")
+        elif a.test == "packing_distributed":
+            # solver distributed with 1, 2 and 3 processes against the gathered solve and
+            # against ngspice on the netlist of that same network, with one conductivity and
+            # with conductivities 1e12 apart.
+            for extra in ({}, {"gamma2": 5.88e-5}):
+                what = "conductivities 1e12 apart" if extra else "one conductivity"
+                out = os.path.join(wd, f"serial{len(extra)}")
+                serial = float(thermo_R(run(exe, os.path.join(val, "in.packing"), out,
+                                            **extra))[-1])
+                ref = ngspice_R(os.path.join(out, "network.cir"), 0.1)
+                for nprocs in (1, 2, 3):
+                    out = os.path.join(wd, f"dist{len(extra)}_np{nprocs}")
+                    R = float(thermo_R(run(exe, os.path.join(val, "in.packing"), out,
+                                           nprocs=nprocs, solver="distributed", export="no",
+                                           **extra))[-1])
+                    check(abs(R / serial - 1) < 1e-10 and abs(R / ref - 1) < 1e-9,
+                          f"packing, distributed, {nprocs} processes ({what}): R = {R:.15g} ohm, "
+                          f"gathered {serial:.15g} ({R / serial - 1:+.1e}), ngspice {ref:.15g} "
+                          f"({R / ref - 1:+.1e})")
+            # A packing squeezed over 4 steps (the multigrid setup kept or renewed): the same
+            # bits twice with 2 processes, and the gathered solve's R (2 processes too) at
+            # every step.
+            moving = {"steps": 4, "squeeze": 4e-6, "export": "no"}
+            runs = [thermo_R(run(exe, os.path.join(val, "in.packing"), os.path.join(wd, f"m{k}"),
+                                 nprocs=2, solver="distributed", **moving)) for k in (0, 1)]
+            check(runs[0] == runs[1] and len(runs[0]) == 5,
+                  f"packing squeezed, distributed, 2 processes: the same {len(runs[0])} R "
+                  f"bit for bit in two runs")
+            serial = thermo_R(run(exe, os.path.join(val, "in.packing"), os.path.join(wd, "ms"),
+                                  nprocs=2, **moving))
+            worst = max(abs(float(a) / float(b) - 1) for a, b in zip(runs[0], serial))
+            check(worst < 1e-10 and len(set(serial)) == 5,
+                  f"packing squeezed: R changes every step, distributed = gathered within "
+                  f"{worst:.1e}")
         else:
             sys.exit(f"unknown test {a.test}")
     finish()

@@ -1,0 +1,254 @@
+/* ----------------------------------------------------------------------
+   ohmdem - compute network/resistance, the distributed path; see
+   compute_network_resistance_distributed.h.
+------------------------------------------------------------------------- */
+
+#include "ELECTRIC/compute_network_resistance_distributed.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <string>
+#include <tuple>
+
+#include "BEARING/fix_bearing_race.h"
+#include "ELECTRIC/compute_network_resistance.h"
+#include "ELECTRIC/contact_set.h"
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "group.h"
+#include "network/key_directory.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+ohmdem::ParticleRecord record_of(const Atom &atom, int i, int high_bit, int low_bit)
+{
+  const int m = atom.mask[i];
+  const auto member = (m & high_bit)  ? ohmdem::Membership::High
+                      : (m & low_bit) ? ohmdem::Membership::Low
+                                      : ohmdem::Membership::None;
+  return {static_cast<std::int64_t>(atom.tag[i]),
+          {atom.x[i][0], atom.x[i][1], atom.x[i][2]},
+          atom.radius[i],
+          atom.type[i],
+          member};
+}
+
+// A contact between processes, sent to the owner of its second particle with the first one.
+struct Routed {
+  ohmdem::ContactRecord::Packed contact;
+  ohmdem::ParticleRecord::Packed first;
+};
+
+// The particle owning a node (NodeKey scheme of network_builder.cpp: the tag is the upper
+// 32 bits, that of the smaller tag for a node shared by two particles); 0 for an electrode
+// or a race.
+std::int64_t particle_of(ohmdem::NodeKey k)
+{
+  return static_cast<std::int64_t>(k >> 32);
+}
+
+}  // namespace
+
+NetworkResistanceDistributed::NetworkResistanceDistributed(LAMMPS *lmp)
+    : Pointers(lmp), solver_(std::make_unique<ohmdem::DistributedNetworkSolver>(world))
+{
+}
+
+NetworkResistanceDistributed::~NetworkResistanceDistributed() = default;
+
+// Every contact of this process's particles, and the particles at their other ends: a
+// contact held here whose partner is owned elsewhere also goes to the partner's owner (found
+// through a directory of tags), so both owners can build the bulk law of their particle.
+void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setup)
+{
+  std::vector<ContactSet::Contact> local;
+  contacts.collect(local);
+  owned_tags_.clear();
+  particles_.clear();
+  for (int i = 0; i < atom->nlocal; ++i) {
+    if (!(atom->mask[i] & setup.groupbit)) continue;
+    owned_tags_.push_back(static_cast<std::int64_t>(atom->tag[i]));
+    particles_.push_back(record_of(*atom, i, setup.high_bit, setup.low_bit));
+  }
+  std::sort(owned_tags_.begin(), owned_tags_.end());
+
+  ohmdem::KeyDirectory owners(world);
+  {
+    std::vector<ohmdem::KeyDirectory::Entry> mine;
+    for (std::int64_t t : owned_tags_) mine.push_back({static_cast<std::uint64_t>(t), comm->me});
+    owners.publish(mine);
+  }
+  std::vector<ohmdem::KeyDirectory::Key> partners;
+  for (const auto &c : local)
+    if (c.race < 0) partners.push_back(static_cast<std::uint64_t>(c.tag2));
+  const std::vector<std::int64_t> owner = owners.lookup(partners);
+
+  contacts_.clear();
+  std::vector<std::vector<Routed>> out(comm->nprocs);
+  std::size_t q = 0;
+  for (const auto &c : local) {
+    const ohmdem::ContactRecord rec{static_cast<std::int64_t>(c.tag1),
+                                    static_cast<std::int64_t>(c.tag2),
+                                    c.race,
+                                    c.fn,
+                                    {c.point[0], c.point[1], c.point[2]},
+                                    c.ellipse.a,
+                                    c.ellipse.b};
+    contacts_.push_back(rec);
+    if (c.race >= 0) continue;
+    const std::int64_t o = owner[q++];
+    const int j = atom->map(c.tag2);  // the partner, owned or a ghost, is known here
+    if (j >= 0) particles_.push_back(record_of(*atom, j, setup.high_bit, setup.low_bit));
+    if (o != comm->me && o != ohmdem::KeyDirectory::kMissing) {
+      const int i = atom->map(c.tag1);
+      out[o].push_back({rec.pack(), record_of(*atom, i, setup.high_bit, setup.low_bit).pack()});
+    }
+  }
+  for (const Routed &r : ohmdem::exchange_blocks(out, world)) {
+    contacts_.push_back(ohmdem::ContactRecord::unpack(r.contact));
+    particles_.push_back(ohmdem::ParticleRecord::unpack(r.first));
+  }
+  // Sorted: the build's order, hence the numbers, do not depend on arrival order.
+  std::sort(particles_.begin(), particles_.end(),
+            [](const ohmdem::ParticleRecord &a, const ohmdem::ParticleRecord &b) {
+              return a.tag < b.tag;
+            });
+  particles_.erase(std::unique(particles_.begin(), particles_.end(),
+                               [](const ohmdem::ParticleRecord &a,
+                                  const ohmdem::ParticleRecord &b) { return a.tag == b.tag; }),
+                   particles_.end());
+  std::sort(contacts_.begin(), contacts_.end(),
+            [](const ohmdem::ContactRecord &a, const ohmdem::ContactRecord &b) {
+              return std::tie(a.tag, a.race, a.other) < std::tie(b.tag, b.race, b.other);
+            });
+}
+
+NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(ContactSet &contacts,
+                                                                         const Setup &setup,
+                                                                         double current,
+                                                                         double *phi)
+{
+  route(contacts, setup);
+  const ohmdem::NetworkScene scene{&particles_,      &contacts_, setup.gamma_type,
+                                   setup.gamma_race, false,      &owned_tags_};
+  ohmdem::build_network(*setup.model, scene, edges_, built_);
+
+  // This process's share of the conductances, and the nodes it owns: the contact nodes of
+  // its particles (a node shared by two particles: the one with the smaller tag), and on
+  // rank 0 the races that are not electrodes but conduct somewhere.
+  share_.clear();
+  const int nraces = static_cast<int>(setup.gamma_race->size());
+  std::vector<int> race_used(nraces, 0);
+  auto note_race = [&](ohmdem::NodeKey k) {
+    for (int r = 0; r < nraces; ++r)
+      if (k == ohmdem::race_node(r) && k != setup.high && k != setup.low) race_used[r] = 1;
+  };
+  share_.reserve(edges_.num_edges());
+  edges_.for_each_added([&](ohmdem::NodeKey a, ohmdem::NodeKey b, double g) {
+    share_.push_back({a, b, g});
+    if (particle_of(a) == 0) note_race(a);
+    if (particle_of(b) == 0) note_race(b);
+  });
+  edges_ = ohmdem::ConductionNetwork();  // its memory is not needed through the solve
+  if (nraces) MPI_Allreduce(MPI_IN_PLACE, race_used.data(), nraces, MPI_INT, MPI_MAX, world);
+  owned_nodes_.clear();
+  for (const auto &s : built_.spots)
+    if (particle_of(s.spot.node) == s.tag &&
+        std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag))
+      owned_nodes_.push_back(s.spot.node);
+  if (comm->me == 0)
+    for (int r = 0; r < nraces; ++r)
+      if (race_used[r]) owned_nodes_.push_back(ohmdem::race_node(r));
+
+  Result out;
+  out.solution = solver_->solve(owned_nodes_, share_, setup.high, setup.low, current);
+  long long n = built_.conducting_contacts;
+  MPI_Allreduce(&n, &out.contacts, 1, MPI_LONG_LONG, MPI_SUM, world);
+
+  // Per-atom potential: the mean over the particle's contact nodes (0 without a contact).
+  std::vector<ohmdem::NodeKey> keys;
+  for (const auto &s : built_.spots)
+    if (std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag))
+      keys.push_back(s.spot.node);
+  const std::vector<double> v = solver_->potentials(keys);
+  std::vector<std::pair<std::int64_t, double>> by_tag;
+  std::size_t k = 0;
+  for (const auto &s : built_.spots)
+    if (std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag))
+      by_tag.push_back({s.tag, v[k++]});
+  for (int i = 0; i < atom->nlocal; ++i) {
+    phi[i] = 0.0;
+    if (!(atom->mask[i] & setup.groupbit)) continue;
+    const std::int64_t tag = atom->tag[i];
+    auto lo = std::lower_bound(
+        by_tag.begin(), by_tag.end(), tag,
+        [](const std::pair<std::int64_t, double> &x, std::int64_t t) { return x.first < t; });
+    double sum = 0.0;
+    int m = 0;
+    for (; lo != by_tag.end() && lo->first == tag; ++lo, ++m) sum += lo->second;
+    phi[i] = m ? sum / m : 0.0;
+  }
+  return out;
+}
+
+double NetworkResistanceDistributed::memory_usage() const
+{
+  return static_cast<double>(solver_->memory_bytes()) +
+         static_cast<double>(particles_.capacity() * sizeof(ohmdem::ParticleRecord) +
+                             contacts_.capacity() * sizeof(ohmdem::ContactRecord) +
+                             built_.spots.capacity() * sizeof(ohmdem::NetworkBuild::Spot) +
+                             share_.capacity() * sizeof(ohmdem::DistributedEdge) +
+                             owned_nodes_.capacity() * sizeof(ohmdem::NodeKey));
+}
+
+// ---- the compute's side of the distributed path ----
+
+namespace {
+// solver auto goes distributed from this many particles in the group (with more than one
+// process and no export): measured crossover, bench/network_scale/README.md.
+constexpr bigint kAutoDistributedParticles = 20000;
+}  // namespace
+
+bool ComputeNetworkResistance::use_distributed()
+{
+  if (distributed_solver_) return true;
+  if (static_cast<ohmdem::SolverKind>(solver_) != ohmdem::SolverKind::Auto || comm->nprocs < 2 ||
+      !netlist_.empty() || !vtk_.empty())
+    return false;
+  return group->count(igroup) >= kAutoDistributedParticles;
+}
+
+void ComputeNetworkResistance::solve_distributed()
+{
+  if (!distributed_) distributed_ = std::make_unique<NetworkResistanceDistributed>(lmp);
+  gamma_race_.clear();
+  for (const FixBearingRace *r : contacts_->races())
+    gamma_race_.push_back(gamma_type_[r->race_type()]);
+  auto node = [&](const Electrode &e, ohmdem::Membership member) {
+    return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
+  };
+  const NetworkResistanceDistributed::Setup setup{
+      &model_,
+      &gamma_type_,
+      &gamma_race_,
+      groupbit,
+      high_.kind == ElectrodeKind::Group ? high_.index : 0,
+      low_.kind == ElectrodeKind::Group ? low_.index : 0,
+      node(high_, ohmdem::Membership::High),
+      node(low_, ohmdem::Membership::Low)};
+  const auto r = distributed_->solve(*contacts_, setup, current_, vector_atom);
+  const ohmdem::DistributedSolution &s = r.solution;
+  if (!s.converged && comm->me == 0)
+    error->warning(FLERR,
+                   ("compute network/resistance: the distributed CG stopped at step " +
+                    std::to_string(update->ntimestep) + " after " + std::to_string(s.iterations) +
+                    " iterations, relative residual " + std::to_string(s.relative_residual))
+                       .c_str());
+  report(s.resistance, static_cast<int>(r.contacts), static_cast<int>(s.floating_nodes),
+         s.iterations, s.relative_residual);
+}
