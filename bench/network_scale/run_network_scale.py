@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
 """Scaling of compute network/resistance on packings (inputs/validation/in.packing).
 
 For each packing size (-var cells N: 4 N^3 spheres) and each process count, runs the deck

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance, the distributed path; see
    compute_network_resistance_distributed.h.

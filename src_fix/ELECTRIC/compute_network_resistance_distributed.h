@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance, the distributed path (`solver distributed`, or
    `solver auto` with several processes and a large group): each process builds the part of

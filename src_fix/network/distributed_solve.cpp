@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The distributed network solve: hypre IJ/ParCSR, CG + BoomerAMG; see distributed_solve.h.
 #include "network/distributed_solve.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The resistance of a conduction network spread over the ranks of an MPI communicator:
 // each rank gives the nodes it owns and its share of the conductances
 // (distributed_system.h), the system is a hypre ParCSR matrix on that communicator, solved by

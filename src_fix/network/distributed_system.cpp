@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The distributed Kirchhoff system; see distributed_system.h.
 #include "network/distributed_system.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The grounded Kirchhoff system of a conduction network spread over MPI ranks, each rank
 // holding the rows of the nodes it owns (no rank holds the whole network). Used by the
 // distributed solve (distributed_solve.h); plain C++ with MPI, no LIGGGHTS types.

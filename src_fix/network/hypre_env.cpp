@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // hypre's run-time environment; see hypre_env.h.
 #include "network/hypre_env.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // hypre's run-time environment for the network solvers (multigrid_cg, distributed_solve):
 // MPI and hypre started once, and hypre's OpenMP loops held to one thread while a solve runs.
 #ifndef OHMDEM_HYPRE_ENV_H

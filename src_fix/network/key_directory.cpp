@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A distributed map NodeKey -> value; see key_directory.h.
 #include "network/key_directory.h"
 

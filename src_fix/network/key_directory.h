@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // A distributed map NodeKey -> 64-bit value over an MPI communicator, for the distributed
 // network solve: no rank holds every key. Key k lives on rank home(k) (a hash of k modulo
 // the number of ranks); the ranks that own keys publish them there, the ranks that need them

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
 // The distributed network solve (src_fix/network/distributed_solve.*, distributed_system.*,
 // key_directory.*), run by CTest under mpirun with 1, 2 and 3 processes. Every rank builds the
 // same global test network and takes a scattered share of it (nodes and edges dealt out by a
