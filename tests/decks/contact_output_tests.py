@@ -146,7 +146,7 @@ def test_reduce(r):
     deck = open(os.path.join(r.src, "inputs", "validation", "in.packing")).read()
     extra = ("compute C all network/contacts R\ncompute Imax all reduce max c_C[4]\n"
              "compute Isum all reduce sum c_C[4]\n")
-    deck = re.sub(r"^thermo_style( +custom[^\n]*)", lambda m: extra + "thermo_style" + m.group(1) +
+    deck = re.sub(r"^thermo_style( +custom[^\n]*c_R[^\n]*)", lambda m: extra + "thermo_style" + m.group(1) +
                   " c_Imax c_Isum", deck, count=1, flags=re.M)
     deck += '\nvariable imax equal c_Imax\nvariable isum equal c_Isum\n' \
             'print "REDUCE ${imax} ${isum}"\n'
