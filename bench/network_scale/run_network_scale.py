@@ -31,7 +31,13 @@ DECK = os.path.join(HERE, "..", "..", "inputs", "validation", "in.packing")
 
 
 def run(exe, nprocs, wd, **var):
-    cmd = ["/usr/bin/time", "-f", "RANK_MAXRSS_KB %M CPU_S %U %S", exe, "-in", DECK, "-var", "out", wd]
+    # Each rank's peak memory and CPU time from /usr/bin/time, written to a file per rank:
+    # Open MPI does not always forward a rank's last stderr lines before mpirun exits.
+    os.makedirs(wd, exist_ok=True)
+    stamp = os.path.join(wd, "time")
+    wrap = ['sh', '-c', 'exec /usr/bin/time -o "$0.${OMPI_COMM_WORLD_RANK:-0}" '
+            '-f "RANK_MAXRSS_KB %M CPU_S %U %S" "$@"', stamp]
+    cmd = wrap + [exe, "-in", DECK, "-var", "out", wd]
     for k, v in var.items():
         cmd += ["-var", k, str(v)]
     cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
@@ -40,7 +46,10 @@ def run(exe, nprocs, wd, **var):
     out = res.stdout + res.stderr
     if res.returncode != 0:
         sys.exit(f"FAIL: {' '.join(cmd)}\n{out[-3000:]}")
-    ranks = re.findall(r"RANK_MAXRSS_KB (\d+) CPU_S (\S+) (\S+)", out)
+    stamps = "".join(open(f"{stamp}.{r}").read() for r in range(nprocs))
+    ranks = re.findall(r"RANK_MAXRSS_KB (\d+) CPU_S (\S+) (\S+)", stamps)
+    if len(ranks) != nprocs:
+        sys.exit(f"FAIL: {nprocs} ranks, {len(ranks)} time stamps in {stamp}.*")
     other = re.search(r"^Other time \(%\) = (\S+)", out, re.M)
     return {"rss": max(int(m) / 1024.0 for m, _, _ in ranks),
             "cpu": max(float(u) + float(s) for _, u, s in ranks),
