@@ -8,29 +8,19 @@ Usage: contact_output_tests.py TEST --exe OHMDEM --src SOURCE_DIR"""
 import argparse
 import os
 import re
-import subprocess
-import sys
 import tempfile
 
 import numpy as np
 
 from deck_checks import check, finish, read_signal
 from kirchhoff_check import check_dump
+import validation_tests
 
 I = 0.1  # the decks' injected current (A): in.bearing and in.packing, variable I
 
 
 def run(exe, deck, out, nprocs=1, **var):
-    os.makedirs(out, exist_ok=True)
-    cmd = [exe, "-in", deck, "-log", os.path.join(out, "log.txt"), "-screen", "none",
-           "-var", "out", out]
-    for k, v in var.items():
-        cmd += ["-var", k, str(v)]
-    if nprocs > 1:
-        cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
-    res = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
-    if res.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)}\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
+    validation_tests.run(exe, deck, out, nprocs, **var)  # stops the test on a failed run
     return out
 
 

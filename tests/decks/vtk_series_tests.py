@@ -9,27 +9,16 @@ import argparse
 import glob
 import os
 import re
-import subprocess
 import sys
 import tempfile
 import numpy as np
 
 from deck_checks import check, finish
+from validation_tests import run
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                 "scripts"))
 from vtk_legacy import read_pvd, read_vtk  # noqa: E402  (scripts/: also the figure's reader)
-
-
-def run(exe, deck, out, **var):
-    os.makedirs(out, exist_ok=True)
-    cmd = [exe, "-in", deck, "-log", os.path.join(out, "log.txt"), "-screen", "none",
-           "-var", "out", out]
-    for k, v in var.items():
-        cmd += ["-var", k, str(v)]
-    res = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
-    if res.returncode != 0:
-        sys.exit(f"FAIL: {' '.join(cmd)}\n{res.stdout[-2000:]}{res.stderr[-2000:]}")
 
 
 def check_series(folder, pattern_re, expected_steps, dt, what):
