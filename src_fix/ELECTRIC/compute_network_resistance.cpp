@@ -438,6 +438,11 @@ void ComputeNetworkResistance::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
   evaluate();
+  // The distributed solve leaves them to here: only a reader pays for them.
+  if (distributed_used_ && !closed_form_used_ && potentials_step_ != update->ntimestep) {
+    distributed_->potentials(groupbit, vector_atom);
+    potentials_step_ = update->ntimestep;
+  }
 }
 
 double ComputeNetworkResistance::memory_usage()

@@ -116,6 +116,7 @@ class ComputeNetworkResistance : public Compute {
   int nmax_ = 0;
   bool closed_form_used_ = false;  // the last evaluation took the closed form
   bool distributed_used_ = false;  // the last general solve was distributed (no local rows)
+  bigint potentials_step_ = -1;    // distributed: step whose per-atom potentials are filled
   // The local array: this process's rows (contacts whose atom it owns), kept for reuse.
   std::vector<ohmdem::ContactFlow> flows_, all_flows_;
   int local_capacity_ = 0;

@@ -131,14 +131,11 @@ void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setu
 
 NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(ContactSet &contacts,
                                                                          const Setup &setup,
-                                                                         double current,
-                                                                         double *phi)
+                                                                         double current)
 {
   route(contacts, setup);
   const ohmdem::NetworkScene scene{&particles_,      &contacts_, setup.gamma_type,
                                    setup.gamma_race, false,      &owned_tags_};
-  ohmdem::build_network(*setup.model, scene, edges_, built_);
-
   // This process's share of the conductances, and the nodes it owns: the contact nodes of
   // its particles (a node shared by two particles: the one with the smaller tag), and on
   // rank 0 the races that are not electrodes but conduct somewhere.
@@ -149,13 +146,14 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
     for (int r = 0; r < nraces; ++r)
       if (k == ohmdem::race_node(r) && k != setup.high && k != setup.low) race_used[r] = 1;
   };
-  share_.reserve(edges_.num_edges());
-  edges_.for_each_added([&](ohmdem::NodeKey a, ohmdem::NodeKey b, double g) {
-    share_.push_back({a, b, g});
-    if (particle_of(a) == 0) note_race(a);
-    if (particle_of(b) == 0) note_race(b);
-  });
-  edges_ = ohmdem::ConductionNetwork();  // its memory is not needed through the solve
+  ohmdem::build_network(
+      *setup.model, scene,
+      [&](ohmdem::NodeKey a, ohmdem::NodeKey b, double g) {
+        share_.push_back({a, b, g});
+        if (particle_of(a) == 0) note_race(a);
+        if (particle_of(b) == 0) note_race(b);
+      },
+      built_);
   if (nraces) MPI_Allreduce(MPI_IN_PLACE, race_used.data(), nraces, MPI_INT, MPI_MAX, world);
   owned_nodes_.clear();
   for (const auto &s : built_.spots)
@@ -171,7 +169,12 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
   long long n = built_.conducting_contacts;
   MPI_Allreduce(&n, &out.contacts, 1, MPI_LONG_LONG, MPI_SUM, world);
 
-  // Per-atom potential: the mean over the particle's contact nodes (0 without a contact).
+  return out;
+}
+
+void NetworkResistanceDistributed::potentials(int groupbit, double *phi)
+{
+  // The mean over the particle's contact nodes (0 without a contact).
   std::vector<ohmdem::NodeKey> keys;
   for (const auto &s : built_.spots)
     if (std::binary_search(owned_tags_.begin(), owned_tags_.end(), s.tag))
@@ -184,7 +187,7 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
       by_tag.push_back({s.tag, v[k++]});
   for (int i = 0; i < atom->nlocal; ++i) {
     phi[i] = 0.0;
-    if (!(atom->mask[i] & setup.groupbit)) continue;
+    if (!(atom->mask[i] & groupbit)) continue;
     const std::int64_t tag = atom->tag[i];
     auto lo = std::lower_bound(
         by_tag.begin(), by_tag.end(), tag,
@@ -194,7 +197,6 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
     for (; lo != by_tag.end() && lo->first == tag; ++lo, ++m) sum += lo->second;
     phi[i] = m ? sum / m : 0.0;
   }
-  return out;
 }
 
 double NetworkResistanceDistributed::memory_usage() const
@@ -242,7 +244,8 @@ void ComputeNetworkResistance::solve_distributed()
       low_.kind == ElectrodeKind::Group ? low_.index : 0,
       node(high_, ohmdem::Membership::High),
       node(low_, ohmdem::Membership::Low)};
-  const auto r = distributed_->solve(*contacts_, setup, current_, vector_atom);
+  const auto r = distributed_->solve(*contacts_, setup, current_);
+  potentials_step_ = -1;  // per-atom potentials: on demand (compute_peratom)
   const ohmdem::DistributedSolution &s = r.solution;
   if (!s.converged && comm->me == 0)
     error->warning(FLERR,

@@ -40,9 +40,12 @@ class NetworkResistanceDistributed : protected Pointers {
 
   explicit NetworkResistanceDistributed(LAMMPS *lmp);
   ~NetworkResistanceDistributed();
-  // Collective. Fills phi[i] (V) for the local particles: the mean potential of their contact
-  // nodes, as the gathered path does.
-  Result solve(ContactSet &contacts, const Setup &setup, double current, double *phi);
+  // Collective.
+  Result solve(ContactSet &contacts, const Setup &setup, double current);
+  // Collective, after solve() on the same step (only when something reads them: the
+  // potentials of other processes' nodes are asked for): phi[i] (V) for the local particles,
+  // the mean potential of their contact nodes, as the gathered path gives it.
+  void potentials(int groupbit, double *phi);
   double memory_usage() const;
 
  private:
@@ -54,7 +57,6 @@ class NetworkResistanceDistributed : protected Pointers {
   std::vector<std::int64_t> owned_tags_;
   std::vector<ohmdem::ParticleRecord> particles_;
   std::vector<ohmdem::ContactRecord> contacts_;
-  ohmdem::ConductionNetwork edges_;  // collects this process's share of the conductances
   ohmdem::NetworkBuild built_;
   std::vector<ohmdem::NodeKey> owned_nodes_;
   std::vector<ohmdem::DistributedEdge> share_;

@@ -89,8 +89,8 @@ double series_conductance(double g1, double g2)
   return 1.0 / (1.0 / g1 + 1.0 / g2);
 }
 
-int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
-                              const ContactSpot *spots, std::size_t n, const EdgeVisitor &on_edge)
+int for_each_particle_conductance(const ConductingParticle &p, const ContactSpot *spots,
+                                  std::size_t n, const EdgeVisitor &visit)
 {
   int clamped = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -103,12 +103,20 @@ int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &
       const Eq1Result r = eq1_conductance(p.gamma, spots[i].area, spots[j].area, p.volume,
                                           angle_between(ui, uj), p.radius);
       clamped += r.clamped;
-      if (!(r.conductance > 0.0)) continue;
-      net.add_conductance(spots[i].node, spots[j].node, r.conductance);
-      if (on_edge) on_edge(spots[i], spots[j], r.conductance);
+      if (r.conductance > 0.0) visit(spots[i], spots[j], r.conductance);
     }
   }
   return clamped;
+}
+
+int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
+                              const ContactSpot *spots, std::size_t n, const EdgeVisitor &on_edge)
+{
+  return for_each_particle_conductance(
+      p, spots, n, [&](const ContactSpot &a, const ContactSpot &b, double g) {
+        net.add_conductance(a.node, b.node, g);
+        if (on_edge) on_edge(a, b, g);
+      });
 }
 
 }  // namespace ohmdem

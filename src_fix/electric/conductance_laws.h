@@ -94,6 +94,9 @@ using EdgeVisitor = std::function<void(const ContactSpot &, const ContactSpot &,
 int add_particle_conductances(ConductionNetwork &net, const ConductingParticle &p,
                               const ContactSpot *spots, std::size_t n,
                               const EdgeVisitor &on_edge = nullptr);
+// The same conductances, each given to `visit` (g > 0) instead of a network.
+int for_each_particle_conductance(const ConductingParticle &p, const ContactSpot *spots,
+                                  std::size_t n, const EdgeVisitor &visit);
 
 }  // namespace ohmdem
 

@@ -19,9 +19,9 @@ NodeKey particle_node(std::int64_t tag)
 
 class Builder {
  public:
-  Builder(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
+  Builder(const ConductionModel &model, const NetworkScene &scene, const ConductanceSink &sink,
           NetworkBuild &out)
-      : model_(model), scene_(scene), net_(net), out_(out)
+      : model_(model), scene_(scene), sink_(sink), out_(out)
   {
   }
   void run();
@@ -39,7 +39,7 @@ class Builder {
 
   const ConductionModel &model_;
   const NetworkScene &scene_;
-  ConductionNetwork &net_;
+  const ConductanceSink &sink_;
   NetworkBuild &out_;
   std::vector<ContactSpot> mine_;  // add_bulk: the spots of one particle
 };
@@ -100,7 +100,7 @@ void Builder::add_contact(const ContactRecord &c)
   // The constriction of the spot, in series between the two bodies.
   const double rc = model_.constriction_resistance(gp, go, c.a, c.b);
   if (!(std::isfinite(rc) && rc > 0.0)) return;
-  net_.add_conductance(mine, other_side, 1.0 / rc);
+  sink_(mine, other_side, 1.0 / rc);
   if (scene_.draw)
     out_.drawn.push_back({mine,
                           other_side,
@@ -115,16 +115,17 @@ void Builder::add_bulk()
 {
   const auto &spots = out_.spots;
   std::vector<ContactSpot> &mine = mine_;
-  EdgeVisitor draw;
-  if (scene_.draw)
-    draw = [&](const ContactSpot &x, const ContactSpot &y, double g) {
+  const bool draw = scene_.draw;
+  const EdgeVisitor visit = [&](const ContactSpot &x, const ContactSpot &y, double g) {
+    sink_(x.node, y.node, g);
+    if (draw)
       out_.drawn.push_back({x.node,
                             y.node,
                             g,
                             {x.point[0], x.point[1], x.point[2]},
                             {y.point[0], y.point[1], y.point[2]},
                             {x.area, y.area, 0.0}});
-    };
+  };
   for (std::size_t s = 0; s < spots.size();) {
     std::size_t e = s;
     while (e < spots.size() && spots[e].tag == spots[s].tag) ++e;
@@ -136,7 +137,7 @@ void Builder::add_bulk()
                                   p->radius,
                                   sphere_volume(p->radius),
                                   (*scene_.gamma_type)[p->type]};
-      add_particle_conductances(net_, cp, mine.data(), mine.size(), draw);
+      for_each_particle_conductance(cp, mine.data(), mine.size(), visit);
     }
     s = e;
   }
@@ -144,7 +145,6 @@ void Builder::add_bulk()
 
 void Builder::run()
 {
-  net_.clear();
   out_.spots.clear();
   out_.drawn.clear();
   out_.conducting_contacts = 0;
@@ -169,7 +169,15 @@ NodeKey member_node(Membership m)
 void build_network(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
                    NetworkBuild &out)
 {
-  Builder(model, scene, net, out).run();
+  net.clear();
+  build_network(
+      model, scene, [&net](NodeKey a, NodeKey b, double g) { net.add_conductance(a, b, g); }, out);
+}
+
+void build_network(const ConductionModel &model, const NetworkScene &scene,
+                   const ConductanceSink &sink, NetworkBuild &out)
+{
+  Builder(model, scene, sink, out).run();
 }
 
 }  // namespace ohmdem

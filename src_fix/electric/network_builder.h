@@ -7,6 +7,7 @@
 #define OHMDEM_NETWORK_BUILDER_H
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "common/ordered_reduce.h"
@@ -100,6 +101,11 @@ struct NetworkBuild {
 // cleared and filled (its memory is reused from call to call).
 void build_network(const ConductionModel &model, const NetworkScene &scene, ConductionNetwork &net,
                    NetworkBuild &out);
+// The same conductances given to `sink` (a, b, g) one by one, in the same order (the
+// distributed path keeps its share as a plain list of edges).
+using ConductanceSink = std::function<void(NodeKey, NodeKey, double)>;
+void build_network(const ConductionModel &model, const NetworkScene &scene,
+                   const ConductanceSink &sink, NetworkBuild &out);
 
 }  // namespace ohmdem
 

@@ -5,10 +5,13 @@
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
+#include <_hypre_parcsr_mv.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <array>
+#include <utility>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -23,12 +26,6 @@ static_assert(std::is_same<HYPRE_Int, int>::value && std::is_same<HYPRE_BigInt, 
               "built for hypre with 32-bit indices (Debian's libhypre-dev)");
 
 namespace {
-
-// The preconditioner's setup as CG sees it: nothing, the hierarchy is set up (or kept) before.
-HYPRE_Int kept_setup(HYPRE_Solver, HYPRE_Matrix, HYPRE_Vector, HYPRE_Vector)
-{
-  return 0;
-}
 
 struct IJMatrix {
   HYPRE_IJMatrix h = nullptr;
@@ -46,28 +43,52 @@ struct IJVector {
     if (h) HYPRE_IJVectorDestroy(h);
   }
 };
-struct PCG {
-  HYPRE_Solver h = nullptr;
-  ~PCG()
-  {
-    if (h) HYPRE_ParCSRPCGDestroy(h);
-  }
-};
 
-void make_matrix(MPI_Comm comm, const DistributedSystem &s, IJMatrix &m)
+// A new matrix (fresh = true) or new values in the entries of an assembled one of the same
+// pattern (hypre sets the existing entries in place: no second matrix is held).
+void set_matrix(MPI_Comm comm, const DistributedSystem &s, IJMatrix &m, bool fresh)
 {
   const int n = static_cast<int>(s.keys.size());
   const int lo = s.first_row, hi = s.first_row + n - 1;
   std::vector<int> rows(n), sizes(n);
   std::iota(rows.begin(), rows.end(), lo);
   for (int i = 0; i < n; ++i) sizes[i] = s.row_start[i + 1] - s.row_start[i];
-  HYPRE_IJMatrixCreate(comm, lo, hi, lo, hi, &m.h);
-  HYPRE_IJMatrixSetObjectType(m.h, HYPRE_PARCSR);
-  if (n) HYPRE_IJMatrixSetRowSizes(m.h, sizes.data());
-  HYPRE_IJMatrixInitialize(m.h);
+  if (fresh) {
+    m.reset();
+    HYPRE_IJMatrixCreate(comm, lo, hi, lo, hi, &m.h);
+    HYPRE_IJMatrixSetObjectType(m.h, HYPRE_PARCSR);
+    if (n) HYPRE_IJMatrixSetRowSizes(m.h, sizes.data());
+    HYPRE_IJMatrixInitialize(m.h);
+  }
   if (n)
     HYPRE_IJMatrixSetValues(m.h, n, sizes.data(), rows.data(), s.columns.data(), s.values.data());
-  HYPRE_IJMatrixAssemble(m.h);
+  if (fresh) HYPRE_IJMatrixAssemble(m.h);
+}
+
+double *local_data(HYPRE_ParVector v)
+{
+  return hypre_VectorData(hypre_ParVectorLocalVector(reinterpret_cast<hypre_ParVector *>(v)));
+}
+
+// Local dot products summed over the ranks in rank order (bitwise repeatable).
+template <std::size_t N>
+std::array<double, N> ordered_dots(MPI_Comm comm, int n,
+                                   const std::array<std::pair<const double *, const double *>, N> &xy)
+{
+  std::array<double, N> mine{};
+  for (std::size_t k = 0; k < N; ++k) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i) sum += xy[k].first[i] * xy[k].second[i];
+    mine[k] = sum;
+  }
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  std::vector<double> all(N * static_cast<std::size_t>(size));
+  MPI_Allgather(mine.data(), N, MPI_DOUBLE, all.data(), N, MPI_DOUBLE, comm);
+  std::array<double, N> out{};
+  for (int r = 0; r < size; ++r)
+    for (std::size_t k = 0; k < N; ++k) out[k] += all[r * N + k];
+  return out;
 }
 
 void make_vector(MPI_Comm comm, int first, const std::vector<double> &v, IJVector &out)
@@ -105,11 +126,12 @@ class DistributedNetworkSolver::Impl {
   {
     if (amg_) HYPRE_BoomerAMGDestroy(amg_);
     amg_ = nullptr;
-    amg_matrix_.reset();
   }
+  bool same_pattern() const;
   bool setup_still_good() const;
-  void new_setup(IJMatrix &A, HYPRE_ParCSRMatrix pA, HYPRE_ParVector pb, HYPRE_ParVector px);
+  void new_setup(HYPRE_ParCSRMatrix pA, HYPRE_ParVector pb, HYPRE_ParVector px);
   std::vector<double> start_guess() const;
+  void cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b, HYPRE_ParVector x, DistributedSolution &out);
   double power(const std::vector<double> &x) const;
 
   MPI_Comm comm_;
@@ -118,32 +140,39 @@ class DistributedNetworkSolver::Impl {
   std::vector<double> x_;           // potentials of sys_.keys (V) after the last solve
   std::vector<NodeKey> warm_keys_;  // keys and per-volt potentials of the last solve
   std::vector<double> warm_x_;
-  // The kept hierarchy and the matrix it was set up on (BoomerAMG keeps using it).
+  // The matrix, kept from one solve to the next while its pattern stays (new values are set
+  // in place), and the multigrid hierarchy set up on it.
+  IJMatrix matrix_;
   HYPRE_Solver amg_ = nullptr;
-  IJMatrix amg_matrix_;
-  int setup_first_ = -1;
-  std::vector<int> setup_start_, setup_columns_;
-  std::vector<double> setup_values_;
+  int matrix_first_ = -1;
+  std::vector<int> matrix_start_, matrix_columns_;  // the pattern of matrix_
+  std::vector<float> setup_values_;  // the values at the last setup (a 10 % test: floats do)
   long long setups_ = 0;
   NodeKey high_ = 0, low_ = 0;
   double v_high_ = 0.0;  // V of the high electrode after the last solve (0 without a path)
 };
 
+// The rows of every rank and their columns are those of the kept matrix.
+bool DistributedNetworkSolver::Impl::same_pattern() const
+{
+  int same = matrix_.h && matrix_first_ == sys_.first_row && matrix_start_ == sys_.row_start &&
+             matrix_columns_ == sys_.columns;
+  MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, comm_);
+  return same != 0;
+}
+
 // Kept while the pattern is the same on every rank and ||A - A_setup||_F <= tol ||A_setup||_F.
 // (A bound on every entry would be stricter than needed: eq. 1 conductances of nearby spots
 // move by tens of percent when the packing moves by 1 % of an overlap, and a few such edges
-// only cost CG an iteration or two.)
+// only cost CG an iteration or two.) Called with the same pattern on every rank.
 bool DistributedNetworkSolver::Impl::setup_still_good() const
 {
-  int same = amg_ && opt_.reuse_setup && setup_first_ == sys_.first_row &&
-             setup_start_ == sys_.row_start && setup_columns_ == sys_.columns;
-  MPI_Allreduce(MPI_IN_PLACE, &same, 1, MPI_INT, MPI_MIN, comm_);
-  if (!same) return false;
+  if (!amg_ || !opt_.reuse_setup) return false;
   double change = 0.0, size = 0.0;
   for (std::size_t k = 0; k < sys_.values.size(); ++k) {
     const double d = sys_.values[k] - setup_values_[k];
     change += d * d;
-    size += setup_values_[k] * setup_values_[k];
+    size += static_cast<double>(setup_values_[k]) * setup_values_[k];
   }
   change = ordered_rank_sum(change, comm_);
   size = ordered_rank_sum(size, comm_);
@@ -153,8 +182,8 @@ bool DistributedNetworkSolver::Impl::setup_still_good() const
 // The same BoomerAMG settings as the serial multigrid CG (multigrid_cg.cpp, where they were
 // measured): HMIS, extended+i interpolation truncated to 4, one level of aggressive coarsening,
 // symmetric hybrid Gauss-Seidel, one V-cycle per CG iteration.
-void DistributedNetworkSolver::Impl::new_setup(IJMatrix &A, HYPRE_ParCSRMatrix pA,
-                                               HYPRE_ParVector pb, HYPRE_ParVector px)
+void DistributedNetworkSolver::Impl::new_setup(HYPRE_ParCSRMatrix pA, HYPRE_ParVector pb,
+                                               HYPRE_ParVector px)
 {
   drop_setup();
   HYPRE_BoomerAMGCreate(&amg_);
@@ -169,13 +198,7 @@ void DistributedNetworkSolver::Impl::new_setup(IJMatrix &A, HYPRE_ParCSRMatrix p
   HYPRE_BoomerAMGSetRelaxType(amg_, 6);
   HYPRE_BoomerAMGSetNumSweeps(amg_, 1);
   HYPRE_BoomerAMGSetup(amg_, pA, pb, px);
-  // The hierarchy refers to this matrix: it moves into the kept state.
-  amg_matrix_.h = A.h;
-  A.h = nullptr;
-  setup_first_ = sys_.first_row;
-  setup_start_ = sys_.row_start;
-  setup_columns_ = sys_.columns;
-  setup_values_ = sys_.values;
+  setup_values_.assign(sys_.values.begin(), sys_.values.end());
   ++setups_;
 }
 
@@ -189,6 +212,87 @@ std::vector<double> DistributedNetworkSolver::Impl::start_guess() const
       x0[i] = warm_x_[it - warm_keys_.begin()];
   }
   return x0;
+}
+
+// CG preconditioned by one V-cycle. The quantity wanted is the power P(x) = x'Ax - 2b'x + c
+// (c = sum of the conductances to the high electrode): P(x) - P* = ||x - x*||_A^2, and each
+// CG step lowers P by alpha * (r, z), so the error of P at a step is the sum of the decreases
+// still to come (Hestenes and Stiefel's estimate). CG stops when that sum, extrapolated as a
+// geometric series at the slowest ratio of the last three decreases, is at most
+// energy_tolerance * P, or when ||r|| <= tolerance ||b||: R is then accurate to about
+// energy_tolerance relative, the potentials to about its square root.
+void DistributedNetworkSolver::Impl::cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b,
+                                        HYPRE_ParVector x, DistributedSolution &out)
+{
+  const int n = static_cast<int>(sys_.keys.size());
+  IJVector r, z, p, q;
+  const std::vector<double> zero(n, 0.0);
+  for (IJVector *v : {&r, &z, &p, &q}) make_vector(comm_, sys_.first_row, zero, *v);
+  HYPRE_ParVector pr, pz, pp, pq;
+  HYPRE_IJVectorGetObject(r.h, reinterpret_cast<void **>(&pr));
+  HYPRE_IJVectorGetObject(z.h, reinterpret_cast<void **>(&pz));
+  HYPRE_IJVectorGetObject(p.h, reinterpret_cast<void **>(&pp));
+  HYPRE_IJVectorGetObject(q.h, reinterpret_cast<void **>(&pq));
+  double *const xd = local_data(x), *const bd = local_data(b), *const rd = local_data(pr),
+               *const zd = local_data(pz), *const pd = local_data(pp), *const qd = local_data(pq);
+  // r = b - A x
+  std::copy(bd, bd + n, rd);
+  HYPRE_ParCSRMatrixMatvec(-1.0, A, x, 1.0, pr);
+  double c = 0.0;
+  for (int i = 0; i < n; ++i) c += sys_.rhs[i];
+  const auto start = ordered_dots<3>(comm_, n, {{{bd, bd}, {bd, xd}, {xd, rd}}});
+  c = ordered_rank_sum(c, comm_);
+  const double norm_b = std::sqrt(start[0]);
+  double energy = c - start[1] - start[2];  // P(x0) = c - b'x0 - x0'r0
+  out.iterations = 0;
+  out.relative_residual = 0.0;
+  out.converged = true;
+  if (!(norm_b > 0.0)) return;
+  auto precondition = [&] {
+    std::fill(zd, zd + n, 0.0);
+    HYPRE_BoomerAMGSolve(amg_, A, pr, pz);
+  };
+  precondition();
+  std::copy(zd, zd + n, pd);
+  double rz = ordered_dots<1>(comm_, n, {{{rd, zd}}})[0];
+  double rr = ordered_dots<1>(comm_, n, {{{rd, rd}}})[0];
+  out.converged = std::sqrt(rr) <= opt_.tolerance * norm_b;
+  // The decreases of the last kDelay steps: their slowest ratio is the rate of the tail (a
+  // plateau, as CG goes through with conductances over many decades, has ratios near 1 and
+  // so never stops it).
+  constexpr int kDelay = 3;
+  std::array<double, kDelay> recent{};
+  while (!out.converged && out.iterations < opt_.max_iterations) {
+    HYPRE_ParCSRMatrixMatvec(1.0, A, pp, 0.0, pq);
+    const double pAp = ordered_dots<1>(comm_, n, {{{pd, qd}}})[0];
+    if (!(pAp > 0.0) || !(rz > 0.0)) break;  // lost to rounding: report the residual
+    const double alpha = rz / pAp;
+    for (int i = 0; i < n; ++i) {
+      xd[i] += alpha * pd[i];
+      rd[i] -= alpha * qd[i];
+    }
+    ++out.iterations;
+    const double decrease = alpha * rz;
+    energy -= decrease;
+    recent[out.iterations % kDelay] = decrease;
+    precondition();
+    const auto d = ordered_dots<2>(comm_, n, {{{rd, rd}, {rd, zd}}});
+    rr = d[0];
+    // The error left: the decreases to come, a geometric tail at the slowest recent rate.
+    double rate = 0.0;
+    for (int j = 1; j < kDelay; ++j) {
+      const double now = recent[(out.iterations - j + 1) % kDelay];
+      const double before = recent[(out.iterations - j) % kDelay];
+      rate = std::max(rate, before > 0.0 ? now / before : 1.0);
+    }
+    const double left = rate < 1.0 ? decrease * rate / (1.0 - rate) : HUGE_VAL;
+    out.converged = (out.iterations >= kDelay && left <= opt_.energy_tolerance * energy) ||
+                    std::sqrt(rr) <= opt_.tolerance * norm_b;
+    const double beta = d[1] / rz;
+    rz = d[1];
+    for (int i = 0; i < n; ++i) pd[i] = zd[i] + beta * pd[i];
+  }
+  out.relative_residual = std::sqrt(rr) / norm_b;
 }
 
 // The power at 1 V, sum of g (V_a - V_b)^2 over the edges: the minimum of the energy, so its
@@ -242,36 +346,26 @@ DistributedSolution DistributedNetworkSolver::Impl::solve(const std::vector<Node
   }
   double conductance = sys_.direct;
   if (sys_.total_rows > sys_.floating_rows) {
-    IJMatrix A;
-    make_matrix(comm_, sys_, A);
+    const bool same = same_pattern();
+    if (!same) {
+      drop_setup();
+      matrix_first_ = sys_.first_row;
+      matrix_start_ = sys_.row_start;
+      matrix_columns_ = sys_.columns;
+    }
+    set_matrix(comm_, sys_, matrix_, !same);
     IJVector b, x;
     make_vector(comm_, sys_.first_row, sys_.rhs, b);
     make_vector(comm_, sys_.first_row, start_guess(), x);
     HYPRE_ParCSRMatrix pA;
     HYPRE_ParVector pb, px;
-    HYPRE_IJMatrixGetObject(A.h, reinterpret_cast<void **>(&pA));
+    HYPRE_IJMatrixGetObject(matrix_.h, reinterpret_cast<void **>(&pA));
     HYPRE_IJVectorGetObject(b.h, reinterpret_cast<void **>(&pb));
     HYPRE_IJVectorGetObject(x.h, reinterpret_cast<void **>(&px));
-    out.setup_reused = setup_still_good();
-    if (!out.setup_reused) new_setup(A, pA, pb, px);
+    out.setup_reused = same && setup_still_good();
+    if (!out.setup_reused) new_setup(pA, pb, px);
     out.setups = setups_;
-    PCG cg;
-    HYPRE_ParCSRPCGCreate(comm_, &cg.h);
-    HYPRE_PCGSetTol(cg.h, opt_.tolerance);
-    HYPRE_PCGSetAbsoluteTol(cg.h, 0.0);
-    HYPRE_PCGSetTwoNorm(cg.h, 1);
-    HYPRE_PCGSetMaxIter(cg.h, opt_.max_iterations);
-    HYPRE_PCGSetPrintLevel(cg.h, 0);
-    HYPRE_PCGSetPrecond(cg.h, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
-                        reinterpret_cast<HYPRE_PtrToSolverFcn>(kept_setup), amg_);
-    HYPRE_ParCSRPCGSetup(cg.h, pA, pb, px);
-    HYPRE_ParCSRPCGSolve(cg.h, pA, pb, px);
-    HYPRE_ClearAllErrors();  // "not converged" is an error code: read the state instead
-    int converged = 0;
-    HYPRE_PCGGetNumIterations(cg.h, &out.iterations);
-    HYPRE_PCGGetConverged(cg.h, &converged);
-    HYPRE_PCGGetFinalRelativeResidualNorm(cg.h, &out.relative_residual);
-    out.converged = converged != 0;
+    cg(pA, pb, px, out);
     x_ = values_of(x, sys_.first_row, n);
     conductance += power(x_);
   }
@@ -360,11 +454,13 @@ std::size_t DistributedNetworkSolver::memory_bytes() const
 {
   const Impl &m = *impl_;
   const std::size_t nnz = m.sys_.columns.size(), n = m.sys_.keys.size();
-  // The system and its copy at setup, the warm start; hypre: the matrix (value + column per
-  // entry, twice while a setup is kept) and a hierarchy of about the same size again
-  // (operator complexity ~1.2, plus interpolation), vectors of n doubles.
-  return nnz * (sizeof(int) + sizeof(double)) * 2 + n * (sizeof(NodeKey) * 2 + sizeof(double) * 4) +
-         nnz * (sizeof(int) + sizeof(double)) * 4 + n * sizeof(double) * 8;
+  // The system (column and value per entry), the kept pattern (a column per entry) and the
+  // values at the last setup (a float per entry), the warm start; hypre: the matrix (value and
+  // column per entry) and a hierarchy of about the same size again (operator complexity
+  // ~1.2, plus interpolation), vectors of n doubles.
+  return nnz * (sizeof(int) + sizeof(double) + sizeof(int) + sizeof(float)) +
+         n * (sizeof(NodeKey) * 2 + sizeof(double) * 4) +
+         nnz * (sizeof(int) + sizeof(double)) * 2 + n * sizeof(double) * 8;
 }
 
 }  // namespace ohmdem

@@ -7,11 +7,15 @@
 // corrected by the residual, an error quadratic in the solution's error), R = 1 / G, and the
 // potentials are scaled to the given current. Plain C++ with MPI, no LIGGGHTS types.
 //
-// AMG reuse: the hierarchy of the last setup is kept while the sparsity pattern (the rows of
-// every rank and their columns) is the same and the matrix moved by at most reuse_tolerance
-// from the one of that setup (Frobenius norm, relative); otherwise it is set up again.
-// CG with a kept hierarchy is exact CG on the new matrix with a fixed (older) preconditioner:
-// only the iteration count can change, not the answer's accuracy.
+// CG stops on its own estimate of the error of R (distributed_solve.cpp, cg()), not on a tiny
+// residual: R to ~energy_tolerance relative with a third of the iterations.
+//
+// Reuse: while the sparsity pattern (the rows of every rank and their columns) is the same,
+// the new values go into the same hypre matrix, and the multigrid hierarchy of the last setup
+// is kept while the matrix moved by at most reuse_tolerance from the one of that setup
+// (Frobenius norm, relative); otherwise it is set up again. CG with a kept hierarchy is exact
+// CG on the new matrix with a fixed (older) preconditioner: only the iteration count can
+// change, not the answer's accuracy.
 //
 // Deterministic: for a fixed number of ranks the same input gives the same bits (sorted
 // assembly, hypre on one thread, sums in rank order). Different rank counts agree to the
@@ -30,7 +34,10 @@
 namespace ohmdem {
 
 struct DistributedOptions {
-  double tolerance = 1e-12;  // CG: ||b - A x||_2 <= tolerance ||b||_2
+  // CG stops at ||b - A x||_2 <= tolerance ||b||_2, or once a step lowers the power (G at 1 V)
+  // by at most energy_tolerance of it: R is then accurate to ~energy_tolerance relative.
+  double tolerance = 1e-12;
+  double energy_tolerance = 1e-12;
   int max_iterations = 1000;
   bool reuse_setup = true;
   double reuse_tolerance = 0.1;  // ||A - A_setup||_F / ||A_setup||_F that still keeps it

@@ -18,11 +18,9 @@ namespace {
 
 constexpr int kHigh = -1, kLow = -2;  // column of an electrode in a routed entry
 constexpr int kUnknown = -3;          // not yet looked up
+constexpr int kSkip = -4;             // an edge that adds no entry (ignored, loop, direct)
 
-struct Entry {
-  int row, col;  // global; col kHigh / kLow for an electrode
-  double g;
-};
+using Entry = DistributedEntry;
 
 class UnionFind {
  public:
@@ -191,6 +189,13 @@ void mark_floating(MPI_Comm comm, int n, int first, const std::vector<unsigned c
   // Floating rows -> identity rows (their neighbours are floating too: symmetry is kept).
   s.floating.assign(n, 0);
   long long nfloat = 0;
+  for (int i = 0; i < n; ++i) nfloat += !mine[label[i]];
+  if (nfloat == 0) {  // the common case: the rows stay as they are
+    MPI_Allreduce(&nfloat, &s.floating_rows, 1, MPI_LONG_LONG, MPI_SUM, comm);
+    s.ghosts = std::move(ghosts);
+    return;
+  }
+  nfloat = 0;
   std::vector<int> start{0};
   std::vector<int> cols;
   std::vector<double> vals;
@@ -301,8 +306,11 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
   own.reserve(s.keys.size() * 2);
   for (std::size_t i = 0; i < s.keys.size(); ++i)
     own.emplace(s.keys[i], my_first + static_cast<int>(i));
-  std::vector<int> ends(2 * edges.size());
-  std::vector<NodeKey> need;
+  DistributedScratch &w = s.scratch;
+  std::vector<int> &ends = w.ends;
+  ends.resize(2 * edges.size());
+  std::vector<NodeKey> &need = w.need;
+  need.clear();
   for (std::size_t e = 0; e < edges.size(); ++e)
     for (int side = 0; side < 2; ++side) {
       const NodeKey k = side ? edges[e].b : edges[e].a;
@@ -333,56 +341,69 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
       r = static_cast<int>(rows[std::lower_bound(need.begin(), need.end(), k) - need.begin()]);
     }
 
-  // Each edge to the owners of both ends.
-  std::vector<std::vector<Entry>> out(size);
+  // Each edge to the owners of both ends. This rank's own rows are counted in a first pass
+  // over the edges and placed in a second, straight into their row's range (no list of
+  // entries in between); the others' go out, and what comes in is placed after them.
+  std::vector<std::vector<Entry>> &out = w.outgoing;
+  out.resize(size);
+  for (auto &o : out) o.clear();
+  std::vector<std::size_t> &at = w.bucket;
+  at.assign(static_cast<std::size_t>(n) + 1, 0);
+  auto here = [&](int r) { return r >= my_first && r < my_first + n; };
   long long accepted = 0, ignored = 0, loops = 0;
   double direct = 0.0;
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const DistributedEdge &e = edges[k];
+    int &ra = ends[2 * k], &rb = ends[2 * k + 1];
     if (!(e.g > 0.0) || !std::isfinite(e.g)) {
       ++ignored;
+      ra = rb = kSkip;
       continue;
     }
     if (e.a == e.b) {
       ++loops;
+      ra = rb = kSkip;
       continue;
     }
     ++accepted;
-    const int ra = ends[2 * k], rb = ends[2 * k + 1];
     if (ra < 0 && rb < 0) {
       direct += e.g;
+      ra = rb = kSkip;
       continue;
     }
-    if (ra >= 0) out[owner(ra)].push_back({ra, rb, e.g});
-    if (rb >= 0) out[owner(rb)].push_back({rb, ra, e.g});
+    if (ra >= 0) here(ra) ? void(++at[ra - my_first + 1]) : out[owner(ra)].push_back({ra, rb, e.g});
+    if (rb >= 0) here(rb) ? void(++at[rb - my_first + 1]) : out[owner(rb)].push_back({rb, ra, e.g});
   }
-  std::vector<int>().swap(ends);
-  std::vector<Entry> in = exchange_blocks(out, comm);
-  out.clear();
-  // Bucketed by row, then each row's few entries sorted by (column, g): the sums below do
-  // not depend on the order of arrival.
+  // Received in rank order; the order of arrival does not matter (rows are sorted below).
+  const std::vector<Entry> received = exchange_blocks(out, comm);
+  for (const Entry &x : received) ++at[x.row - my_first + 1];
+  for (long long i = 0; i < n; ++i) at[i + 1] += at[i];
+  std::vector<Entry> &sorted = w.sorted;
+  sorted.resize(at[n]);
   {
-    std::vector<std::size_t> at(static_cast<std::size_t>(n) + 1, 0);
-    for (const Entry &x : in) ++at[x.row - my_first + 1];
-    for (long long i = 0; i < n; ++i) at[i + 1] += at[i];
-    std::vector<Entry> sorted(in.size());
     std::vector<std::size_t> next(at.begin(), at.end() - 1);
-    for (const Entry &x : in) sorted[next[x.row - my_first]++] = x;
-    for (long long i = 0; i < n; ++i)
-      std::sort(sorted.begin() + at[i], sorted.begin() + at[i + 1],
-                [](const Entry &x, const Entry &y) {
-                  return std::tie(x.col, x.g) < std::tie(y.col, y.g);
-                });
-    in.swap(sorted);
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const int ra = ends[2 * k], rb = ends[2 * k + 1];
+      if (ra == kSkip) continue;
+      if (ra >= 0 && here(ra)) sorted[next[ra - my_first]++] = {ra, rb, edges[k].g};
+      if (rb >= 0 && here(rb)) sorted[next[rb - my_first]++] = {rb, ra, edges[k].g};
+    }
+    for (const Entry &x : received) sorted[next[x.row - my_first]++] = x;
   }
+  // Each row's few entries sorted by (column, g): the sums below do not depend on the order
+  // of arrival.
+  for (long long i = 0; i < n; ++i)
+    std::sort(sorted.begin() + at[i], sorted.begin() + at[i + 1],
+              [](const Entry &x, const Entry &y) {
+                return std::tie(x.col, x.g) < std::tie(y.col, y.g);
+              });
   long long counts[3] = {accepted, ignored, loops}, sums[3];
   MPI_Allreduce(counts, sums, 3, MPI_LONG_LONG, MPI_SUM, comm);
   s.edges = sums[0], s.ignored = sums[1], s.self_loops = sums[2];
   s.direct = ordered_rank_sum(direct, comm);
 
   std::vector<unsigned char> touches;
-  build_rows(in, static_cast<int>(n), s.first_row, s, touches);
-  std::vector<Entry>().swap(in);
+  build_rows(w.sorted, static_cast<int>(n), s.first_row, s, touches);
   mark_floating(comm, static_cast<int>(n), s.first_row, touches, s);
 }
 

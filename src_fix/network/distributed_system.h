@@ -33,6 +33,23 @@ struct DistributedEdge {
   double g;  // S; g <= 0 or non-finite is ignored (counted), a == b too
 };
 
+// A conductance as one row sees it (col: kHigh / kLow in distributed_system.cpp for an
+// electrode).
+struct DistributedEntry {
+  int row, col;  // global
+  double g;
+};
+
+// The assembly's buffers, kept from one assembly to the next: their memory is reused, not
+// allocated again (fresh pages cost a fault each, which dominated repeated assemblies).
+struct DistributedScratch {
+  std::vector<int> ends;                               // rows of the edges' ends
+  std::vector<NodeKey> need;                           // ends owned elsewhere
+  std::vector<DistributedEntry> sorted;                // this rank's rows' entries, by row
+  std::vector<std::vector<DistributedEntry>> outgoing;  // entries of other ranks' rows
+  std::vector<std::size_t> bucket;                     // per row: its first entry
+};
+
 struct DistributedSystem {
   int first_row = 0;           // global index of this rank's first row
   int total_rows = 0;          // over all ranks
@@ -52,6 +69,7 @@ struct DistributedSystem {
   long long edges = 0;          // accepted edges over all ranks
   long long ignored = 0;        // over all ranks: g <= 0 or non-finite
   long long self_loops = 0;     // over all ranks: a == b
+  DistributedScratch scratch;
 };
 
 // Collective over comm. Throws std::invalid_argument if an edge names a node that no rank

@@ -166,6 +166,34 @@ TEST(Distributed, KeepsTheMultigridSetupWhileConductancesChangeLittle)
   EXPECT_NEAR(regrown.resistance / static_cast<double>(dense_kron_resistance(grown)), 1.0, 1e-10);
 }
 
+TEST(Distributed, StopsWhenRIsAccurateNotWhenTheResidualIsTiny)
+{
+  // CG stops on its estimate of the error of the power (hence of R), not on a 1e-12 residual:
+  // fewer iterations, R within 1e-10 of the dense long-double reference. The power at any
+  // iterate is above the true one, so R is approached from below. With the estimate off
+  // (energy_tolerance 0) CG runs to the residual test; with a loose one (1e-6) R is off by
+  // about that much and no more.
+  const RandomNetwork net = packing_network(8, 8, 6, 11);
+  const double ref = static_cast<double>(dense_kron_resistance(net));
+  auto with = [&](double energy_tolerance) {
+    DistributedNetworkSolver solver(MPI_COMM_WORLD);
+    DistributedOptions o;
+    o.energy_tolerance = energy_tolerance;
+    solver.set_options(o);
+    return solve(solver, net);
+  };
+  const DistributedSolution standard = with(DistributedOptions().energy_tolerance);
+  const DistributedSolution residual = with(0.0);
+  const DistributedSolution loose = with(1e-6);
+  EXPECT_LT(standard.iterations, residual.iterations);
+  EXPECT_LT(loose.iterations, standard.iterations);
+  EXPECT_NEAR(standard.resistance / ref, 1.0, 1e-10);
+  EXPECT_NEAR(residual.resistance / ref, 1.0, 1e-12);
+  EXPECT_LT(loose.resistance, ref);
+  EXPECT_GT(loose.resistance / ref, 1.0 - 1e-5);
+  EXPECT_LE(standard.resistance, ref * (1.0 + 1e-13));
+}
+
 TEST(Distributed, FloatingComponentsAreDroppedAndAnOpenNetworkIsInfinite)
 {
   // The bridge plus a ring touching no electrode (floating: singular if kept) and a dead
