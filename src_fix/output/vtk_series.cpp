@@ -73,8 +73,42 @@ std::string companion_path(const std::string &pattern, const std::string &what, 
   return has_step_wildcard(pattern) ? base + "." + std::to_string(step) + ".vtk" : base + ".vtk";
 }
 
+// The entries of an existing collection written before `time` (our own format: one DataSet
+// line per part, parts of a step on consecutive lines).
+void PvdIndex::keep_earlier(double time)
+{
+  std::ifstream in(path_);
+  std::string line;
+  auto attribute = [&](const std::string &name, std::string &value) {
+    const std::string key = name + "=\"";
+    const auto at = line.find(key);
+    if (at == std::string::npos) return false;
+    const auto end = line.find('"', at + key.size());
+    if (end == std::string::npos) return false;
+    value = line.substr(at + key.size(), end - at - key.size());
+    return true;
+  };
+  while (std::getline(in, line)) {
+    std::string t, part, file;
+    if (line.find("<DataSet") == std::string::npos || !attribute("timestep", t) ||
+        !attribute("part", part) || !attribute("file", file))
+      continue;
+    char *end = nullptr;
+    const double when = std::strtod(t.c_str(), &end);
+    if (end == t.c_str() || !(when < time)) continue;
+    if (part != "0" && !entries_.empty() && entries_.back().time == when)
+      entries_.back().files.push_back(file);
+    else
+      entries_.push_back({-1, when, {file}});
+  }
+}
+
 void PvdIndex::add(std::int64_t step, double time, const std::vector<std::string> &files)
 {
+  if (!started_) {
+    started_ = true;
+    keep_earlier(time);
+  }
   const std::string folder = folder_of(path_);
   Entry e{step, time, {}};
   for (const std::string &f : files)

@@ -31,6 +31,10 @@ std::string companion_path(const std::string &pattern, const std::string &what, 
 // so that it is complete whenever a run stops: each step lists its files as parts 0, 1, ...
 // (ParaView shows them together). File names are stored relative to the .pvd's folder.
 // A step added again (a second run starting at the step the first ended on) replaces it.
+// A collection already in the file when the first step is added (a run continued after
+// read_restart, in a new process) keeps its entries of earlier times: the series goes on,
+// nothing indexed before is lost; its entries at or after that time (left by a run that went
+// further) are dropped, as the new run rewrites those steps.
 class PvdIndex {
  public:
   explicit PvdIndex(std::string path) : path_(std::move(path)) {}
@@ -45,8 +49,10 @@ class PvdIndex {
     std::vector<std::string> files;
   };
   void write() const;
+  void keep_earlier(double time);
   std::string path_;
   std::vector<Entry> entries_;
+  bool started_ = false;
 };
 
 }  // namespace ohmdem

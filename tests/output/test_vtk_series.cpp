@@ -48,6 +48,31 @@ TEST(VtkSeries, PvdIndex)
             std::string::npos);
   EXPECT_EQ(text.find("timestep=\"0.001\" part=\"1\" file=\"g.0.vtk\""), std::string::npos);
   EXPECT_NE(text.find("</VTKFile>"), std::string::npos);
+  {
+    // A run continued from step 100 in a new process (read_restart): the steps before it
+    // stay indexed, step 100 is rewritten, nothing later survives.
+    PvdIndex more(path);
+    more.add(100, 1e-3, {::testing::TempDir() + "n.100.vtk", "g.100.vtk"});
+    more.add(200, 2e-3, {::testing::TempDir() + "n.200.vtk"});
+    std::ifstream again(path);
+    std::stringstream tt;
+    tt << again.rdbuf();
+    const std::string t = tt.str();
+    EXPECT_NE(t.find("<DataSet timestep=\"0\" part=\"1\" file=\"g.0.vtk\"/>"), std::string::npos);
+    EXPECT_NE(t.find("<DataSet timestep=\"0.002\" part=\"0\" file=\"n.200.vtk\"/>"),
+              std::string::npos);
+    std::size_t count = 0;
+    for (auto at = t.find("<DataSet"); at != std::string::npos; at = t.find("<DataSet", at + 1))
+      ++count;
+    EXPECT_EQ(count, 5u);  // 0: two parts, 100: two parts, 200: one
+    // A new run from step 0 in the same place starts the collection afresh.
+    PvdIndex fresh(path);
+    fresh.add(0, 0.0, {"n.0.vtk"});
+    std::ifstream third(path);
+    std::stringstream uu;
+    uu << third.rdbuf();
+    EXPECT_EQ(uu.str().find("n.100.vtk"), std::string::npos);
+  }
   std::remove(path.c_str());
   PvdIndex bad("/nonexistent-dir/x.pvd");
   EXPECT_THROW(bad.add(0, 0.0, {"a.vtk"}), std::runtime_error);
