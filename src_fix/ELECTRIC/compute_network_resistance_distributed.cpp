@@ -67,14 +67,17 @@ NetworkResistanceDistributed::~NetworkResistanceDistributed() = default;
 // through a directory of tags), so both owners can build the bulk law of their particle.
 void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setup)
 {
-  std::vector<ContactSet::Contact> local;
+  std::vector<ContactSet::Contact> &local = collected_;
   contacts.collect(local);
   owned_tags_.clear();
   particles_.clear();
+  // Each local or ghost particle recorded once (a partner has several contacts here).
+  recorded_.assign(static_cast<std::size_t>(atom->nlocal) + atom->nghost, 0);
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & setup.groupbit)) continue;
     owned_tags_.push_back(static_cast<std::int64_t>(atom->tag[i]));
     particles_.push_back(record_of(*atom, i, setup.high_bit, setup.low_bit));
+    recorded_[i] = 1;
   }
   std::sort(owned_tags_.begin(), owned_tags_.end());
 
@@ -104,7 +107,10 @@ void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setu
     if (c.race >= 0) continue;
     const std::int64_t o = owner[q++];
     const int j = atom->map(c.tag2);  // the partner, owned or a ghost, is known here
-    if (j >= 0) particles_.push_back(record_of(*atom, j, setup.high_bit, setup.low_bit));
+    if (j >= 0 && !recorded_[j]) {
+      recorded_[j] = 1;
+      particles_.push_back(record_of(*atom, j, setup.high_bit, setup.low_bit));
+    }
     if (o != comm->me && o != ohmdem::KeyDirectory::kMissing) {
       const int i = atom->map(c.tag1);
       out[o].push_back({rec.pack(), record_of(*atom, i, setup.high_bit, setup.low_bit).pack()});

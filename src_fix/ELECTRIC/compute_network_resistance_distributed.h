@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "ELECTRIC/contact_set.h"
 #include "electric/conduction_model.h"
 #include "electric/network_builder.h"
 #include "network/conduction_network.h"
@@ -22,7 +23,6 @@
 
 namespace LAMMPS_NS {
 
-class ContactSet;
 
 class NetworkResistanceDistributed : protected Pointers {
  public:
@@ -57,6 +57,8 @@ class NetworkResistanceDistributed : protected Pointers {
   std::vector<std::int64_t> owned_tags_;
   std::vector<ohmdem::ParticleRecord> particles_;
   std::vector<ohmdem::ContactRecord> contacts_;
+  std::vector<char> recorded_;  // per local and ghost atom: already in particles_
+  std::vector<ContactSet::Contact> collected_;  // this process's contacts (memory kept)
   ohmdem::NetworkBuild built_;
   std::vector<ohmdem::NodeKey> owned_nodes_;
   std::vector<ohmdem::DistributedEdge> share_;

@@ -457,10 +457,15 @@ std::size_t DistributedNetworkSolver::memory_bytes() const
   // The system (column and value per entry), the kept pattern (a column per entry) and the
   // values at the last setup (a float per entry), the warm start; hypre: the matrix (value and
   // column per entry) and a hierarchy of about the same size again (operator complexity
-  // ~1.2, plus interpolation), vectors of n doubles.
+  // ~1.2, plus interpolation), vectors of n doubles; the assembly's kept buffers.
+  const DistributedScratch &w = m.sys_.scratch;
+  const std::size_t scratch = w.ends.capacity() * sizeof(int) +
+                              w.sorted.capacity() * sizeof(DistributedEntry) +
+                              w.bucket.capacity() * sizeof(std::size_t) +
+                              w.need.capacity() * sizeof(NodeKey);
   return nnz * (sizeof(int) + sizeof(double) + sizeof(int) + sizeof(float)) +
          n * (sizeof(NodeKey) * 2 + sizeof(double) * 4) +
-         nnz * (sizeof(int) + sizeof(double)) * 2 + n * sizeof(double) * 8;
+         nnz * (sizeof(int) + sizeof(double)) * 2 + n * sizeof(double) * 8 + scratch;
 }
 
 }  // namespace ohmdem

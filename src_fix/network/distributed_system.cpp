@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "network/key_directory.h"
 
@@ -371,8 +372,13 @@ void assemble_distributed(MPI_Comm comm, std::vector<NodeKey> owned,
       ra = rb = kSkip;
       continue;
     }
-    if (ra >= 0) here(ra) ? void(++at[ra - my_first + 1]) : out[owner(ra)].push_back({ra, rb, e.g});
-    if (rb >= 0) here(rb) ? void(++at[rb - my_first + 1]) : out[owner(rb)].push_back({rb, ra, e.g});
+    for (const auto &[row, col] : {std::pair<int, int>{ra, rb}, std::pair<int, int>{rb, ra}}) {
+      if (row < 0) continue;  // an electrode: no row
+      if (here(row))
+        ++at[row - my_first + 1];
+      else
+        out[owner(row)].push_back({row, col, e.g});
+    }
   }
   // Received in rank order; the order of arrival does not matter (rows are sorted below).
   const std::vector<Entry> received = exchange_blocks(out, comm);
