@@ -38,9 +38,11 @@ struct IJMatrix {
 };
 struct IJVector {
   HYPRE_IJVector h = nullptr;
-  ~IJVector()
+  ~IJVector() { reset(); }
+  void reset()
   {
     if (h) HYPRE_IJVectorDestroy(h);
+    h = nullptr;
   }
 };
 
@@ -91,25 +93,25 @@ std::array<double, N> ordered_dots(MPI_Comm comm, int n,
   return out;
 }
 
-void make_vector(MPI_Comm comm, int first, const std::vector<double> &v, IJVector &out)
+// Collective: a vector of zeros over this rank's rows [first, first + n).
+void make_vector(MPI_Comm comm, int first, int n, IJVector &out)
 {
-  const int n = static_cast<int>(v.size());
+  out.reset();
+  const std::vector<double> zero(n, 0.0);
   std::vector<int> rows(n);
   std::iota(rows.begin(), rows.end(), first);
   HYPRE_IJVectorCreate(comm, first, first + n - 1, &out.h);
   HYPRE_IJVectorSetObjectType(out.h, HYPRE_PARCSR);
   HYPRE_IJVectorInitialize(out.h);
-  if (n) HYPRE_IJVectorSetValues(out.h, n, rows.data(), v.data());
+  if (n) HYPRE_IJVectorSetValues(out.h, n, rows.data(), zero.data());
   HYPRE_IJVectorAssemble(out.h);
 }
 
-std::vector<double> values_of(const IJVector &v, int first, int n)
+HYPRE_ParVector par(const IJVector &v)
 {
-  std::vector<int> rows(n);
-  std::iota(rows.begin(), rows.end(), first);
-  std::vector<double> out(n);
-  if (n) HYPRE_IJVectorGetValues(v.h, n, rows.data(), out.data());
-  return out;
+  HYPRE_ParVector p;
+  HYPRE_IJVectorGetObject(v.h, reinterpret_cast<void **>(&p));
+  return p;
 }
 
 }  // namespace
@@ -131,12 +133,17 @@ class DistributedNetworkSolver::Impl {
   bool setup_still_good() const;
   void new_setup(HYPRE_ParCSRMatrix pA, HYPRE_ParVector pb, HYPRE_ParVector px);
   std::vector<double> start_guess() const;
+  void ensure_vectors();
   void cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b, HYPRE_ParVector x, DistributedSolution &out);
   double power(const std::vector<double> &x) const;
 
   MPI_Comm comm_;
   DistributedOptions opt_;
   DistributedSystem sys_;
+  // CG's vectors (right-hand side, solution, residual, preconditioned residual, direction,
+  // product), kept while this rank's rows stay the same.
+  IJVector b_, x_vec_, r_, z_, p_, q_;
+  int vectors_first_ = -1, vectors_rows_ = -1;
   std::vector<double> x_;           // potentials of sys_.keys (V) after the last solve
   std::vector<NodeKey> warm_keys_;  // keys and per-volt potentials of the last solve
   std::vector<double> warm_x_;
@@ -202,6 +209,18 @@ void DistributedNetworkSolver::Impl::new_setup(HYPRE_ParCSRMatrix pA, HYPRE_ParV
   ++setups_;
 }
 
+// Collective: new vectors when some rank's rows moved (every rank creates them together).
+void DistributedNetworkSolver::Impl::ensure_vectors()
+{
+  const int n = static_cast<int>(sys_.keys.size());
+  int moved = vectors_first_ != sys_.first_row || vectors_rows_ != n;
+  MPI_Allreduce(MPI_IN_PLACE, &moved, 1, MPI_INT, MPI_MAX, comm_);
+  if (!moved) return;
+  for (IJVector *v : {&b_, &x_vec_, &r_, &z_, &p_, &q_}) make_vector(comm_, sys_.first_row, n, *v);
+  vectors_first_ = sys_.first_row;
+  vectors_rows_ = n;
+}
+
 std::vector<double> DistributedNetworkSolver::Impl::start_guess() const
 {
   std::vector<double> x0(sys_.keys.size(), 0.0);
@@ -225,14 +244,7 @@ void DistributedNetworkSolver::Impl::cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b,
                                         HYPRE_ParVector x, DistributedSolution &out)
 {
   const int n = static_cast<int>(sys_.keys.size());
-  IJVector r, z, p, q;
-  const std::vector<double> zero(n, 0.0);
-  for (IJVector *v : {&r, &z, &p, &q}) make_vector(comm_, sys_.first_row, zero, *v);
-  HYPRE_ParVector pr, pz, pp, pq;
-  HYPRE_IJVectorGetObject(r.h, reinterpret_cast<void **>(&pr));
-  HYPRE_IJVectorGetObject(z.h, reinterpret_cast<void **>(&pz));
-  HYPRE_IJVectorGetObject(p.h, reinterpret_cast<void **>(&pp));
-  HYPRE_IJVectorGetObject(q.h, reinterpret_cast<void **>(&pq));
+  const HYPRE_ParVector pr = par(r_), pz = par(z_), pp = par(p_), pq = par(q_);
   double *const xd = local_data(x), *const bd = local_data(b), *const rd = local_data(pr),
                *const zd = local_data(pz), *const pd = local_data(pp), *const qd = local_data(pq);
   // r = b - A x
@@ -354,19 +366,18 @@ DistributedSolution DistributedNetworkSolver::Impl::solve(const std::vector<Node
       matrix_columns_ = sys_.columns;
     }
     set_matrix(comm_, sys_, matrix_, !same);
-    IJVector b, x;
-    make_vector(comm_, sys_.first_row, sys_.rhs, b);
-    make_vector(comm_, sys_.first_row, start_guess(), x);
+    ensure_vectors();
+    const HYPRE_ParVector pb = par(b_), px = par(x_vec_);
+    std::copy(sys_.rhs.begin(), sys_.rhs.end(), local_data(pb));
+    const std::vector<double> x0 = start_guess();
+    std::copy(x0.begin(), x0.end(), local_data(px));
     HYPRE_ParCSRMatrix pA;
-    HYPRE_ParVector pb, px;
     HYPRE_IJMatrixGetObject(matrix_.h, reinterpret_cast<void **>(&pA));
-    HYPRE_IJVectorGetObject(b.h, reinterpret_cast<void **>(&pb));
-    HYPRE_IJVectorGetObject(x.h, reinterpret_cast<void **>(&px));
     out.setup_reused = same && setup_still_good();
     if (!out.setup_reused) new_setup(pA, pb, px);
     out.setups = setups_;
     cg(pA, pb, px, out);
-    x_ = values_of(x, sys_.first_row, n);
+    x_.assign(local_data(px), local_data(px) + n);
     conductance += power(x_);
   }
   warm_keys_ = sys_.keys;
