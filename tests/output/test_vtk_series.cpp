@@ -32,6 +32,16 @@ TEST(VtkSeries, Names)
   EXPECT_EQ(companion_path("out/network.vtk", "particles", 300), "out/network_particles.vtk");
 }
 
+namespace {
+std::string file_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+}  // namespace
+
 TEST(VtkSeries, PvdIndex)
 {
   const std::string path = ::testing::TempDir() + "ohmdem_test_series.pvd";
@@ -39,10 +49,7 @@ TEST(VtkSeries, PvdIndex)
   pvd.add(0, 0.0, {::testing::TempDir() + "n.0.vtk", "g.0.vtk"});
   pvd.add(100, 1e-3, {::testing::TempDir() + "n.100.vtk", "g.0.vtk"});
   pvd.add(100, 1e-3, {::testing::TempDir() + "n.100.vtk", "g.100.vtk"});  // replaced
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = file_text(path);
   EXPECT_NE(text.find("<DataSet timestep=\"0\" part=\"0\" file=\"n.0.vtk\"/>"), std::string::npos);
   EXPECT_NE(text.find("<DataSet timestep=\"0.001\" part=\"1\" file=\"g.100.vtk\"/>"),
             std::string::npos);
@@ -54,10 +61,7 @@ TEST(VtkSeries, PvdIndex)
     PvdIndex more(path);
     more.add(100, 1e-3, {::testing::TempDir() + "n.100.vtk", "g.100.vtk"});
     more.add(200, 2e-3, {::testing::TempDir() + "n.200.vtk"});
-    std::ifstream again(path);
-    std::stringstream tt;
-    tt << again.rdbuf();
-    const std::string t = tt.str();
+    const std::string t = file_text(path);
     EXPECT_NE(t.find("<DataSet timestep=\"0\" part=\"1\" file=\"g.0.vtk\"/>"), std::string::npos);
     EXPECT_NE(t.find("<DataSet timestep=\"0.002\" part=\"0\" file=\"n.200.vtk\"/>"),
               std::string::npos);
@@ -68,10 +72,7 @@ TEST(VtkSeries, PvdIndex)
     // A new run from step 0 in the same place starts the collection afresh.
     PvdIndex fresh(path);
     fresh.add(0, 0.0, {"n.0.vtk"});
-    std::ifstream third(path);
-    std::stringstream uu;
-    uu << third.rdbuf();
-    EXPECT_EQ(uu.str().find("n.100.vtk"), std::string::npos);
+    EXPECT_EQ(file_text(path).find("n.100.vtk"), std::string::npos);
   }
   std::remove(path.c_str());
   PvdIndex bad("/nonexistent-dir/x.pvd");
