@@ -5,18 +5,16 @@
 #include <HYPRE.h>
 #include <HYPRE_krylov.h>
 #include <HYPRE_parcsr_ls.h>
-#include <_hypre_parcsr_mv.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <array>
-#include <utility>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
 
+#include "network/energy_cg.h"
 #include "network/hypre_env.h"
 #include "network/key_directory.h"
 
@@ -67,32 +65,6 @@ void set_matrix(MPI_Comm comm, const DistributedSystem &s, IJMatrix &m, bool fre
   if (fresh) HYPRE_IJMatrixAssemble(m.h);
 }
 
-double *local_data(HYPRE_ParVector v)
-{
-  return hypre_VectorData(hypre_ParVectorLocalVector(reinterpret_cast<hypre_ParVector *>(v)));
-}
-
-// Local dot products summed over the ranks in rank order (bitwise repeatable).
-template <std::size_t N>
-std::array<double, N> ordered_dots(MPI_Comm comm, int n,
-                                   const std::array<std::pair<const double *, const double *>, N> &xy)
-{
-  std::array<double, N> mine{};
-  for (std::size_t k = 0; k < N; ++k) {
-    double sum = 0.0;
-    for (int i = 0; i < n; ++i) sum += xy[k].first[i] * xy[k].second[i];
-    mine[k] = sum;
-  }
-  int size = 1;
-  MPI_Comm_size(comm, &size);
-  std::vector<double> all(N * static_cast<std::size_t>(size));
-  MPI_Allgather(mine.data(), N, MPI_DOUBLE, all.data(), N, MPI_DOUBLE, comm);
-  std::array<double, N> out{};
-  for (int r = 0; r < size; ++r)
-    for (std::size_t k = 0; k < N; ++k) out[k] += all[r * N + k];
-  return out;
-}
-
 // Collective: a vector of zeros over this rank's rows [first, first + n).
 void make_vector(MPI_Comm comm, int first, int n, IJVector &out)
 {
@@ -134,7 +106,6 @@ class DistributedNetworkSolver::Impl {
   void new_setup(HYPRE_ParCSRMatrix pA, HYPRE_ParVector pb, HYPRE_ParVector px);
   std::vector<double> start_guess() const;
   void ensure_vectors();
-  void cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b, HYPRE_ParVector x, DistributedSolution &out);
   double power(const std::vector<double> &x) const;
 
   MPI_Comm comm_;
@@ -233,80 +204,6 @@ std::vector<double> DistributedNetworkSolver::Impl::start_guess() const
   return x0;
 }
 
-// CG preconditioned by one V-cycle. The quantity wanted is the power P(x) = x'Ax - 2b'x + c
-// (c = sum of the conductances to the high electrode): P(x) - P* = ||x - x*||_A^2, and each
-// CG step lowers P by alpha * (r, z), so the error of P at a step is the sum of the decreases
-// still to come (Hestenes and Stiefel's estimate). CG stops when that sum, extrapolated as a
-// geometric series at the slowest ratio of the last three decreases, is at most
-// energy_tolerance * P, or when ||r|| <= tolerance ||b||: R is then accurate to about
-// energy_tolerance relative, the potentials to about its square root.
-void DistributedNetworkSolver::Impl::cg(HYPRE_ParCSRMatrix A, HYPRE_ParVector b,
-                                        HYPRE_ParVector x, DistributedSolution &out)
-{
-  const int n = static_cast<int>(sys_.keys.size());
-  const HYPRE_ParVector pr = par(r_), pz = par(z_), pp = par(p_), pq = par(q_);
-  double *const xd = local_data(x), *const bd = local_data(b), *const rd = local_data(pr),
-               *const zd = local_data(pz), *const pd = local_data(pp), *const qd = local_data(pq);
-  // r = b - A x
-  std::copy(bd, bd + n, rd);
-  HYPRE_ParCSRMatrixMatvec(-1.0, A, x, 1.0, pr);
-  double c = 0.0;
-  for (int i = 0; i < n; ++i) c += sys_.rhs[i];
-  const auto start = ordered_dots<3>(comm_, n, {{{bd, bd}, {bd, xd}, {xd, rd}}});
-  c = ordered_rank_sum(c, comm_);
-  const double norm_b = std::sqrt(start[0]);
-  double energy = c - start[1] - start[2];  // P(x0) = c - b'x0 - x0'r0
-  out.iterations = 0;
-  out.relative_residual = 0.0;
-  out.converged = true;
-  if (!(norm_b > 0.0)) return;
-  auto precondition = [&] {
-    std::fill(zd, zd + n, 0.0);
-    HYPRE_BoomerAMGSolve(amg_, A, pr, pz);
-  };
-  precondition();
-  std::copy(zd, zd + n, pd);
-  double rz = ordered_dots<1>(comm_, n, {{{rd, zd}}})[0];
-  double rr = ordered_dots<1>(comm_, n, {{{rd, rd}}})[0];
-  out.converged = std::sqrt(rr) <= opt_.tolerance * norm_b;
-  // The decreases of the last kDelay steps: their slowest ratio is the rate of the tail (a
-  // plateau, as CG goes through with conductances over many decades, has ratios near 1 and
-  // so never stops it).
-  constexpr int kDelay = 3;
-  std::array<double, kDelay> recent{};
-  while (!out.converged && out.iterations < opt_.max_iterations) {
-    HYPRE_ParCSRMatrixMatvec(1.0, A, pp, 0.0, pq);
-    const double pAp = ordered_dots<1>(comm_, n, {{{pd, qd}}})[0];
-    if (!(pAp > 0.0) || !(rz > 0.0)) break;  // lost to rounding: report the residual
-    const double alpha = rz / pAp;
-    for (int i = 0; i < n; ++i) {
-      xd[i] += alpha * pd[i];
-      rd[i] -= alpha * qd[i];
-    }
-    ++out.iterations;
-    const double decrease = alpha * rz;
-    energy -= decrease;
-    recent[out.iterations % kDelay] = decrease;
-    precondition();
-    const auto d = ordered_dots<2>(comm_, n, {{{rd, rd}, {rd, zd}}});
-    rr = d[0];
-    // The error left: the decreases to come, a geometric tail at the slowest recent rate.
-    double rate = 0.0;
-    for (int j = 1; j < kDelay; ++j) {
-      const double now = recent[(out.iterations - j + 1) % kDelay];
-      const double before = recent[(out.iterations - j) % kDelay];
-      rate = std::max(rate, before > 0.0 ? now / before : 1.0);
-    }
-    const double left = rate < 1.0 ? decrease * rate / (1.0 - rate) : HUGE_VAL;
-    out.converged = (out.iterations >= kDelay && left <= opt_.energy_tolerance * energy) ||
-                    std::sqrt(rr) <= opt_.tolerance * norm_b;
-    const double beta = d[1] / rz;
-    rz = d[1];
-    for (int i = 0; i < n; ++i) pd[i] = zd[i] + beta * pd[i];
-  }
-  out.relative_residual = std::sqrt(rr) / norm_b;
-}
-
 // The power at 1 V, sum of g (V_a - V_b)^2 over the edges: the minimum of the energy, so its
 // error is quadratic in the potentials' error, and each term is a difference of potentials,
 // never a sum of large terms that cancel (a matvec residual would lose ~ the conductance
@@ -376,7 +273,13 @@ DistributedSolution DistributedNetworkSolver::Impl::solve(const std::vector<Node
     out.setup_reused = same && setup_still_good();
     if (!out.setup_reused) new_setup(pA, pb, px);
     out.setups = setups_;
-    cg(pA, pb, px, out);
+    const EnergyCgResult cg = energy_cg(
+        comm_, pA, amg_, {pb, px, par(r_), par(z_), par(p_), par(q_)}, n,
+        std::accumulate(sys_.rhs.begin(), sys_.rhs.end(), 0.0),
+        {opt_.tolerance, opt_.energy_tolerance, opt_.max_iterations});
+    out.iterations = cg.iterations;
+    out.converged = cg.converged;
+    out.relative_residual = cg.relative_residual;
     x_.assign(local_data(px), local_data(px) + n);
     conductance += power(x_);
   }

@@ -7,7 +7,7 @@
 // corrected by the residual, an error quadratic in the solution's error), R = 1 / G, and the
 // potentials are scaled to the given current. Plain C++ with MPI, no LIGGGHTS types.
 //
-// CG stops on its own estimate of the error of R (distributed_solve.cpp, cg()), not on a tiny
+// CG stops on its own estimate of the error of R (energy_cg.h), not on a tiny
 // residual: R to ~energy_tolerance relative with a third of the iterations.
 //
 // Reuse: while the sparsity pattern (the rows of every rank and their columns) is the same,
