@@ -8,7 +8,7 @@ signal.txt columns vel_along, vel_across, acc_along, acc_across; fix bearing/rac
                     dump (normal and tangential force, contact point): to round-off.
   natural_frequency the ring's free oscillation on its ball contacts under a static radial load
                     against the linear model of Hertz springs (stiffness dQ/d(delta) = 1.5 Q/delta
-                    from Johnson's exact elliptic solution, tests/contact/make_reference.py).
+                    from Johnson's exact elliptic solution, tests/lib/contact/make_reference.py).
 
 Usage: vibration_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
