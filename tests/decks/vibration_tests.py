@@ -25,7 +25,8 @@ import numpy as np
 from bearing_tests import BALL_MASS, DB, DEXT, DINN, NB, RB, Runner, read_signal
 from deck_checks import check, finish
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib",
+                                "contact"))
 with contextlib.redirect_stdout(io.StringIO()):  # the module prints its table when loaded
     from make_reference import johnson  # noqa: E402  (independent Hertz solution, scipy)
 

@@ -24,8 +24,9 @@ using ohmdem::Vec2;
 using ohmdem::test::kPi;
 
 // SKF 6208 (doc/hertz_contact.md "SKF 6208"): ball radius, race radii at the groove bottom,
-// groove radii (m). Steel on steel, E = 200 GPa, nu = 0.3: 1/E* = 2 (1 - nu^2)/E and
-// LIGGGHTS' 1/G* = 2 (2 - nu)(1 + nu)/E (doc/hertz_contact.md "Inputs").
+// groove radii (m). Steel on steel, E = 200 GPa, nu = 0.3: 1/E* = 2 (1 - nu^2)/E
+// (doc/hertz_contact.md "Inputs") and, in LIGGGHTS' convention, 1/G* = 2 * 2 (2 - nu)(1 + nu)/E
+// (contact/hertz_contact.h).
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 constexpr double kEstar = 200e9 / (2 * (1 - 0.3 * 0.3));
 constexpr double kGstar = 200e9 / (4 * (2 - 0.3) * (1 + 0.3));
