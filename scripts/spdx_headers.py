@@ -17,7 +17,7 @@ TAG = "SPDX-License-Identifier: " + LICENSE
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # Not ours, or not a source file: the session machinery (.ci) and generated reference tables.
 EXCLUDED_PREFIXES = (".ci/",)
-EXCLUDED_FILES = {"tests/contact/hertz_reference.inc"}
+EXCLUDED_FILES = {"tests/lib/contact/hertz_reference.inc"}
 SKIPPED_DIRS = {".git", "__pycache__", "demo-output", "bench_stock_out"}
 
 

@@ -20,5 +20,6 @@ ctest --test-dir build --output-on-failure -L build
 # must give a clear error, never a memory error (the engine itself links the uninstrumented
 # libliggghts and is not built here).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DOHMDEM_ASAN=ON
-cmake --build build-asan -j2 --target ohmdem-post post_tests test_network test_electric test_signal_table test_vtk_series
+cmake --build build-asan -j2 --target ohmdem-post post_tests test_network test_conductance_laws test_electric \
+  test_signal_table test_vtk_series
 ASAN_OPTIONS=detect_leaks=1 ctest --test-dir build-asan --output-on-failure -j2 -L 'post|network|signal'

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ELECTRIC/compute_network_resistance.h"
-#include "electric/contact_flows.h"
+#include "conduction/contact_flows.h"
 #include "error.h"
 #include "modify.h"
 #include "support/args.h"

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance. The contacts come from ELECTRIC/contact_set.*,
-   conductances from electric/, the solve from network/;
+   conductances from conduction/, the solve from network/;
    this file parses, gathers the network from all processes and reports; the netlist and
    VTK exports are in compute_network_resistance_exports.cpp.
 ------------------------------------------------------------------------- */
@@ -24,8 +24,8 @@
 #include "comm.h"
 #include "common/constants.h"
 #include "common/ordered_reduce.h"
-#include "electric/conductance_laws.h"
-#include "electric/network_builder.h"
+#include "conduction/conductance_laws.h"
+#include "conduction/network_builder.h"
 #include "error.h"
 #include "fix_property_global.h"
 #include "group.h"
@@ -254,7 +254,7 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
 // its two spots, plus the two Holm constrictions if asked), and R is their parallel sum: no
 // network, no gathering of contacts (doc/compute_network_resistance.md, "Solve": a particle
 // with two contacts is one resistor). Both this and the general network evaluate the same
-// model (electric/conduction_model.h). Returns false, on every process alike, when the scene
+// model (conduction/conduction_model.h). Returns false, on every process alike, when the scene
 // is anything else.
 bool ComputeNetworkResistance::evaluate_between_races()
 {

@@ -21,10 +21,10 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 
 #include "common/ordered_reduce.h"
 #include "compute.h"
-#include "electric/conduction_model.h"
-#include "electric/contact_flows.h"
-#include "electric/network_builder.h"
-#include "output/vtk_series.h"
+#include "conduction/conduction_model.h"
+#include "conduction/contact_flows.h"
+#include "conduction/network_builder.h"
+#include "writers/vtk_series.h"
 
 namespace ohmdem {
 class ConductionNetwork;

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "ELECTRIC/contact_set.h"
-#include "electric/conduction_model.h"
-#include "electric/network_builder.h"
+#include "conduction/conduction_model.h"
+#include "conduction/network_builder.h"
 #include "network/conduction_network.h"
 #include "network/distributed_solve.h"
 #include "pointers.h"

@@ -23,9 +23,9 @@
 #include "modify.h"
 #include "network/conduction_network.h"
 #include "network/network_export.h"
-#include "output/scene_vtk.h"
-#include "output/vtk_series.h"
 #include "update.h"
+#include "writers/scene_vtk.h"
+#include "writers/vtk_series.h"
 
 using namespace LAMMPS_NS;
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // compute network/resistance: the local array, one row per conducting contact whose atom
-// this process owns (electric/contact_flows.h gives the rows; columns in its ContactFlow).
+// this process owns (conduction/contact_flows.h gives the rows; columns in its ContactFlow).
 // Computed only on the steps a dump or compute asks for it.
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "ELECTRIC/compute_network_resistance.h"
 #include "ELECTRIC/contact_set.h"
 #include "atom.h"
-#include "electric/contact_flows.h"
+#include "conduction/contact_flows.h"
 #include "error.h"
 #include "memory.h"
 #include "network/conduction_network.h"

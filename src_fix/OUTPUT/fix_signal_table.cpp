@@ -18,11 +18,11 @@
 #include "error.h"
 #include "input.h"
 #include "modify.h"
-#include "output/signal_table.h"
 #include "support/args.h"
 #include "support/global_restart.h"
 #include "update.h"
 #include "variable.h"
+#include "writers/signal_table.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;

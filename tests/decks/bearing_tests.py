@@ -72,7 +72,7 @@ def sliding_end(sig, omega_inner, tol=0.01):
 
 
 def test_hertz_static(r):
-    # Exact Hertz constants of the 6208 contacts, from scipy (tests/contact/make_reference.py,
+    # Exact Hertz constants of the 6208 contacts, from scipy (tests/lib/contact/make_reference.py,
     # Johnson's elliptic solution with complete elliptic integrals), independent of our C++.
     k_ref = {"inner": 31035759069.643959, "outer": 29417740738.337234}
     geom = {"inner": (DINN / 2, 0.00655), "outer": (DEXT / 2, 0.00665)}

@@ -8,7 +8,7 @@ signal.txt columns vel_along, vel_across, acc_along, acc_across; fix bearing/rac
                     dump (normal and tangential force, contact point): to round-off.
   natural_frequency the ring's free oscillation on its ball contacts under a static radial load
                     against the linear model of Hertz springs (stiffness dQ/d(delta) = 1.5 Q/delta
-                    from Johnson's exact elliptic solution, tests/contact/make_reference.py).
+                    from Johnson's exact elliptic solution, tests/lib/contact/make_reference.py).
 
 Usage: vibration_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -25,7 +25,8 @@ import numpy as np
 from bearing_tests import BALL_MASS, DB, DEXT, DINN, NB, RB, Runner, read_signal
 from deck_checks import check, finish
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "contact"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib",
+                                "contact"))
 with contextlib.redirect_stdout(io.StringIO()):  # the module prints its table when loaded
     from make_reference import johnson  # noqa: E402  (independent Hertz solution, scipy)
 
