@@ -14,12 +14,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "BEARING/race_variables.h"
 #include "atom.h"
 #include "comm.h"
 #include "contact/race_contact.h"
@@ -64,8 +62,7 @@ constexpr int kRestartSize = 17;
 FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
     : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_"),
       settings_(ohmdem::parse_race_settings(error, narg, arg, atom->ntypes)),
-      variables_(
-          std::make_unique<RaceVariables>(lmp, this, settings_.omega_var, settings_.force_var)),
+      variables_(lmp, this, settings_.omega_var, settings_.force_var),
       load_force_(settings_.load_force),
       load_fx_(settings_.load_fx),
       load_fy_(settings_.load_fy)
@@ -150,7 +147,7 @@ void FixBearingRace::check_fit_between_races()
 
 void FixBearingRace::setup(int vflag)
 {
-  variables_->find();
+  variables_.find();
   evaluate_variables();
   build_model();
   if (restored_) {
@@ -166,7 +163,7 @@ void FixBearingRace::setup(int vflag)
 double FixBearingRace::target_omega(double t) const
 {
   const ohmdem::RaceSettings &s = settings_;
-  if (variables_->sets_omega()) return omega_now_;
+  if (variables_.sets_omega()) return omega_now_;
   if (s.ramp > 0.0 && t < s.ramp) return s.omega_start + (s.omega - s.omega_start) * t / s.ramp;
   return s.omega;
 }
@@ -174,9 +171,9 @@ double FixBearingRace::target_omega(double t) const
 // The values of this step of the variables omega/force may name.
 void FixBearingRace::evaluate_variables()
 {
-  if (!variables_->any()) return;
-  variables_->evaluate(omega_now_, load_force_);
-  if (variables_->sets_force() && settings_.load == Load::Radial) {
+  if (!variables_.any()) return;
+  variables_.evaluate(omega_now_, load_force_);
+  if (variables_.sets_force() && settings_.load == Load::Radial) {
     load_fx_ = load_force_ * settings_.dir_ux;
     load_fy_ = load_force_ * settings_.dir_uy;
   }
@@ -335,7 +332,7 @@ void FixBearingRace::check_runaway()
   s.ring_mass = load == Load::None || load == Load::Fixed ? 0.0 : settings_.ring_mass;
   s.ring_damping = settings_.ring_damp;
   s.balls = ncontacts_;
-  const std::string why = ohmdem::runaway(model_->hertz, s, runaway_);
+  const std::string why = ohmdem::runaway(model_->hertz, runaway_, s);
   if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
 }
 

@@ -22,6 +22,7 @@ FixStyle(bearing/race,FixBearingRace)
 #include "BEARING/fix_bearing_body.h"
 #include "BEARING/race_checks.h"
 #include "BEARING/race_settings.h"
+#include "BEARING/race_variables.h"
 #include "common/ordered_reduce.h"
 #include "support/race_contact_view.h"
 
@@ -30,8 +31,6 @@ struct RaceContactModel;
 }  // namespace ohmdem
 
 namespace LAMMPS_NS {
-
-class RaceVariables;
 
 class FixBearingRace : public FixBearingBody {
  public:
@@ -77,7 +76,7 @@ class FixBearingRace : public FixBearingBody {
   void check_runaway();  // error->all when the contacts ran away (race_checks.h)
 
   const ohmdem::RaceSettings settings_;  // the arguments (race_settings.h)
-  std::unique_ptr<RaceVariables> variables_;
+  RaceVariables variables_;              // the equal-style variables omega/force may name
   // --- this step's load and speed (a variable may change them)
   double omega_now_ = 0;              // the speed variable's value of this step
   double load_force_ = 0;             // force / settle / radial: F (N)

@@ -79,7 +79,7 @@ std::string restart_geometry_changed(double all, double radius, double ball_radi
   return "";
 }
 
-std::string runaway(const HertzContact &hertz, RaceStepState state, RunawayWatch &watch)
+std::string runaway(const HertzContact &hertz, RunawayWatch &watch, RaceStepState &state)
 {
   state.reference_fn = watch.mean_fn;
   std::string why = race_runaway(hertz, state);

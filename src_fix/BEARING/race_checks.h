@@ -40,9 +40,9 @@ struct RunawayWatch {
   double mean_fn = 0;  // N
   long long sound_steps = 0;
 };
-// The runaway check of a step (the sums are global: every process gives the same verdict);
-// a sound step with contacts updates `watch`.
-std::string runaway(const HertzContact &hertz, RaceStepState state, RunawayWatch &watch);
+// The runaway check of a step (the sums are global: every process gives the same verdict),
+// with state.reference_fn set from `watch`; a sound step with contacts updates `watch`.
+std::string runaway(const HertzContact &hertz, RunawayWatch &watch, RaceStepState &state);
 
 }  // namespace ohmdem
 
