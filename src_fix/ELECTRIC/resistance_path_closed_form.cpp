@@ -53,13 +53,12 @@ bool ClosedFormPath::evaluate(double *phi, PathResult &result)
   const FixBearingRace &race_lo = *races[context_.low.index];
   const double *const gamma_type = context_.gamma_type.data();
   const int bit = context_.groupbit;
-  // phi: potential / V_high, scaled once R is known
 
   balls_.resize(nlocal);
   ohmdem::TaggedValues<3> *out = balls_.data();
   int nballs = 0, other = 0;
   for (int i = 0; i < nlocal; ++i) {
-    phi[i] = 0.0;
+    phi[i] = 0.0;  // potential / V_high, scaled once R is known
     if (!(mask[i] & bit)) continue;
     for (const FixBearingRace *race : other_races_)
       if (race->contact_of(i).conducts()) ++other;
