@@ -2,17 +2,18 @@
 /* ----------------------------------------------------------------------
    ohmdem - fix bearing/race: an analytic bearing ring with a toroidal groove.
    Contact physics lives in contact/race_contact.{h,cpp}, the arguments in
-   fix_bearing_race_args.cpp; this file integrates the ring's own degrees of
-   freedom, reduces reactions and handles restart.
+   race_settings.*, the variables they may name in race_variables.*, the checks
+   that stop a run in race_checks.*; this file integrates the ring's own degrees
+   of freedom, reduces reactions and handles restart.
 ------------------------------------------------------------------------- */
 
 #include "BEARING/fix_bearing_race.h"
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,13 +26,11 @@
 #include "fix_property_atom.h"
 #include "force.h"
 #include "group.h"
-#include "input.h"
 #include "modify.h"
 #include "support/global_restart.h"
 #include "support/material_table.h"
 #include "support/require_si.h"
 #include "update.h"
-#include "variable.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -61,9 +60,16 @@ constexpr int kRestartSize = 17;
 }  // namespace
 
 FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
-    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_")
+    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_"),
+      settings_(ohmdem::parse_race_settings(error, narg, arg, atom->ntypes)),
+      variables_(lmp, this, settings_.omega_var, settings_.force_var),
+      load_force_(settings_.load_force),
+      load_fx_(settings_.load_fx),
+      load_fy_(settings_.load_fy)
 {
-  parse(narg, arg);
+  cx_ = axis_x_ = settings_.centre_x;
+  cy_ = axis_y_ = settings_.centre_y;
+  if (settings_.load == Load::Fixed) u_ = settings_.interference;
   // sums over the balls: total normal force, torque, contacts, masked contacts
   set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0});
 }
@@ -103,66 +109,86 @@ void FixBearingRace::build_model()
   MPI_Allreduce(&m, &ball_mass_, 1, MPI_DOUBLE, MPI_MAX, world);
 
   const ohmdem::MaterialTable mat(lmp, style, true, true);
+  const ohmdem::RaceSettings &s = settings_;
+  const int t = s.race_type;
   try {
     model_ = std::make_unique<RaceContactModel>(
-        inner_ ? ohmdem::RaceSide::Inner : ohmdem::RaceSide::Outer, ball_radius_, radius_, groove_,
-        mat.E_eff(ball_type_, race_type_), mat.G_eff(ball_type_, race_type_),
-        mat.restitution(ball_type_, race_type_), mat.friction(ball_type_, race_type_));
+        s.inner ? ohmdem::RaceSide::Inner : ohmdem::RaceSide::Outer, ball_radius_, s.radius,
+        s.groove, mat.E_eff(ball_type_, t), mat.G_eff(ball_type_, t),
+        mat.restitution(ball_type_, t), mat.friction(ball_type_, t));
   } catch (const std::exception &ex) {
     const std::string msg = std::string("invalid race: ") + ex.what() + " (ball radius " +
-                            std::to_string(ball_radius_) + " m, groove " + std::to_string(groove_) +
-                            " m, race radius " + std::to_string(radius_) + " m)";
+                            std::to_string(ball_radius_) + " m, groove " +
+                            std::to_string(s.groove) + " m, race radius " +
+                            std::to_string(s.radius) + " m)";
     error->fix_error(FLERR, this, msg.c_str());
   }
 
-  check_load_in_elastic_range();
-  check_common_axis(radius_);
+  const std::string overload = ohmdem::load_beyond_elastic_range(
+      s.load, load_force_, group->count(igroup), model_->hertz, ball_radius_);
+  if (!overload.empty()) error->fix_error(FLERR, this, overload.c_str());
+  check_common_axis(s.radius);
+  check_fit_between_races();
+}
 
-  // Balls must fit between an inner and an outer race of the same bearing.
+// Balls must fit between an inner and an outer race of the same bearing.
+void FixBearingRace::check_fit_between_races()
+{
   for (int k = 0; k < modify->nfix; ++k) {
     auto *other = dynamic_cast<FixBearingRace *>(modify->fix[k]);
-    if (!other || other == this || other->inner_ == inner_) continue;
-    const double r_in = inner_ ? radius_ : other->radius_;
-    const double r_out = inner_ ? other->radius_ : radius_;
-    const double clearance = r_out - r_in - 2.0 * ball_radius_;
-    if (clearance < -1e-9 * r_out) {
-      const std::string msg = "balls of diameter " + std::to_string(2 * ball_radius_) +
-                              " m do not fit between the inner race (radius " +
-                              std::to_string(r_in) + " m) and the outer race (radius " +
-                              std::to_string(r_out) + " m): diametral clearance " +
-                              std::to_string(clearance) + " m < 0";
-      error->fix_error(FLERR, this, msg.c_str());
-    }
+    if (!other || other == this || other->settings_.inner == settings_.inner) continue;
+    const FixBearingRace &in = settings_.inner ? *this : *other,
+                         &out = settings_.inner ? *other : *this;
+    const std::string why =
+        ohmdem::balls_do_not_fit(in.settings_.radius, out.settings_.radius, ball_radius_);
+    if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
   }
 }
 
 void FixBearingRace::setup(int vflag)
 {
-  find_variables();
+  variables_.find();
   evaluate_variables();
   build_model();
-  if (restored_) check_restart_geometry();
+  if (restored_) {
+    const double gap =
+        ohmdem::worst_ball_gap(*atom, groupbit, settings_.inner, cx_, cy_, current_radius(), world);
+    const std::string why = ohmdem::restart_geometry_changed(gap, settings_.radius, ball_radius_);
+    if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
+  }
   if (reapply_restored_forces(FX, FY, TZ)) return;
   post_force(vflag);
 }
 
 double FixBearingRace::target_omega(double t) const
 {
-  if (omega_ivar_ >= 0) return omega_now_;
-  if (ramp_ > 0.0 && t < ramp_) return omega_start_ + (omega_ - omega_start_) * t / ramp_;
-  return omega_;
+  const ohmdem::RaceSettings &s = settings_;
+  if (variables_.sets_omega()) return omega_now_;
+  if (s.ramp > 0.0 && t < s.ramp) return s.omega_start + (s.omega - s.omega_start) * t / s.ramp;
+  return s.omega;
+}
+
+// The values of this step of the variables omega/force may name.
+void FixBearingRace::evaluate_variables()
+{
+  if (!variables_.any()) return;
+  variables_.evaluate(omega_now_, load_force_);
+  if (variables_.sets_force() && settings_.load == Load::Radial) {
+    load_fx_ = load_force_ * settings_.dir_ux;
+    load_fy_ = load_force_ * settings_.dir_uy;
+  }
 }
 
 double FixBearingRace::current_radius() const
 {
-  return inner_ ? radius_ + u_ : radius_ - u_;
+  return settings_.inner ? settings_.radius + u_ : settings_.radius - u_;
 }
 
 ohmdem::BearingSurface FixBearingRace::surface() const
 {
   ohmdem::BearingSurface s;
   s.body = static_cast<const ohmdem::BearingBody *>(this);
-  s.kind = inner_ ? ohmdem::BodyKind::InnerRace : ohmdem::BodyKind::OuterRace;
+  s.kind = settings_.inner ? ohmdem::BodyKind::InnerRace : ohmdem::BodyKind::OuterRace;
   s.centre[0] = cx_;
   s.centre[1] = cy_;
   s.radius = current_radius();
@@ -175,12 +201,14 @@ ohmdem::BearingSurface FixBearingRace::surface() const
 void FixBearingRace::ring_half_kick(double dt)
 {
   const double h = 0.5 * dt;
-  if ((load_ == Load::Force || load_ == Load::Settle) && !frozen_) {
-    u_dot_ += h * (load_force_ - sum_fn_ - ring_damp_ * u_dot_) / ring_mass_;
-  } else if (load_ == Load::Radial) {
+  const Load load = settings_.load;
+  const double mass = settings_.ring_mass, damp = settings_.ring_damp;
+  if ((load == Load::Force || load == Load::Settle) && !frozen_) {
+    u_dot_ += h * (load_force_ - sum_fn_ - damp * u_dot_) / mass;
+  } else if (load == Load::Radial) {
     // The balls push the ring with the opposite of the forces the ring puts on them.
-    vcx_ += h * (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
-    vcy_ += h * (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
+    vcx_ += h * (load_fx_ - fx_ - damp * vcx_) / mass;
+    vcy_ += h * (load_fy_ - fy_ - damp * vcy_) / mass;
   }
 }
 
@@ -189,9 +217,10 @@ void FixBearingRace::ring_half_kick(double dt)
 void FixBearingRace::ring_acceleration(double &ax, double &ay) const
 {
   ax = ay = 0.0;
-  if (load_ != Load::Radial) return;
-  ax = (load_fx_ - fx_ - ring_damp_ * vcx_) / ring_mass_;
-  ay = (load_fy_ - fy_ - ring_damp_ * vcy_) / ring_mass_;
+  if (settings_.load != Load::Radial) return;
+  const double mass = settings_.ring_mass, damp = settings_.ring_damp;
+  ax = (load_fx_ - fx_ - damp * vcx_) / mass;
+  ay = (load_fy_ - fy_ - damp * vcy_) / mass;
 }
 
 void FixBearingRace::initial_integrate(int)
@@ -204,7 +233,7 @@ void FixBearingRace::initial_integrate(int)
   cx_ += dt * vcx_;
   cy_ += dt * vcy_;
   time_ += dt;
-  if (load_ == Load::Settle && !frozen_ && time_ >= settle_time_) {
+  if (settings_.load == Load::Settle && !frozen_ && time_ >= settings_.settle_time) {
     frozen_ = true;  // displacement control from now on, at the radius reached under F
     u_dot_ = 0.0;
   }
@@ -282,6 +311,31 @@ void FixBearingRace::post_force(int)
   check_runaway();
 }
 
+// Stops the run when the contacts ran away: the sums are global, so every process reaches the
+// same verdict.
+void FixBearingRace::check_runaway()
+{
+  ohmdem::RaceStepState s;
+  s.time = time_;
+  s.dt = update->dt;
+  s.max_fn = max_fn_;
+  s.sum_fn = sum_fn_;
+  s.fx = fx_;
+  s.fy = fy_;
+  s.torque = torque_;
+  s.u = u_;
+  s.cx = cx_;
+  s.cy = cy_;
+  s.ball_radius = ball_radius_;
+  s.ball_mass = ball_mass_;
+  const Load load = settings_.load;
+  s.ring_mass = load == Load::None || load == Load::Fixed ? 0.0 : settings_.ring_mass;
+  s.ring_damping = settings_.ring_damp;
+  s.balls = ncontacts_;
+  const std::string why = ohmdem::runaway(model_->hertz, runaway_, s);
+  if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
+}
+
 // Sum of the recesses of the defects under ball i's contact with this race; in_zone is set
 // when the contact point lies in a defect zone (the contact then carries no current).
 double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surface,
@@ -326,15 +380,16 @@ double FixBearingRace::compute_vector(int n)
   // across it (the direction turned +90 degrees about z).
   double ax, ay;
   ring_acceleration(ax, ay);
+  const double ux = settings_.dir_ux, uy = settings_.dir_uy;
   switch (n) {
     case 11:
-      return vcx_ * dir_ux_ + vcy_ * dir_uy_;
+      return vcx_ * ux + vcy_ * uy;
     case 12:
-      return -vcx_ * dir_uy_ + vcy_ * dir_ux_;
+      return -vcx_ * uy + vcy_ * ux;
     case 13:
-      return ax * dir_ux_ + ay * dir_uy_;
+      return ax * ux + ay * uy;
     case 14:
-      return -ax * dir_uy_ + ay * dir_ux_;
+      return -ax * uy + ay * ux;
     default:
       return 0.0;
   }
@@ -351,7 +406,7 @@ void FixBearingRace::write_restart(FILE *fp)
                                      vcx_,
                                      vcy_,
                                      frozen_ ? 1.0 : 0.0,
-                                     static_cast<double>(inner_),
+                                     static_cast<double>(settings_.inner),
                                      sum_fn_,
                                      torque_,
                                      fx_,
@@ -365,7 +420,7 @@ void FixBearingRace::write_restart(FILE *fp)
 void FixBearingRace::restart(char *buf)
 {
   const double *list = reinterpret_cast<const double *>(buf);
-  if (static_cast<bool>(list[9]) != inner_)
+  if (static_cast<bool>(list[9]) != settings_.inner)
     error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
   time_ = list[0];
   angle_ = list[1];

@@ -16,15 +16,18 @@ FixStyle(bearing/race,FixBearingRace)
 #define LMP_FIX_BEARING_RACE_H
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "BEARING/fix_bearing_body.h"
+#include "BEARING/race_checks.h"
+#include "BEARING/race_settings.h"
+#include "BEARING/race_variables.h"
 #include "common/ordered_reduce.h"
 #include "support/race_contact_view.h"
 
 namespace ohmdem {
 struct RaceContactModel;
-class StyleArgs;
 }  // namespace ohmdem
 
 namespace LAMMPS_NS {
@@ -49,8 +52,8 @@ class FixBearingRace : public FixBearingBody {
   // this step's forces.
   ohmdem::RaceContactView contact_of(int i) const { return ohmdem::RaceContactView(array_atom[i]); }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
-  bool is_inner() const { return inner_; }
-  double groove() const { return groove_; }  // groove radius (m)
+  bool is_inner() const { return settings_.inner; }
+  double groove() const { return settings_.groove; }  // groove radius (m)
   double current_radius() const;
   void centre(double &x, double &y) const
   {
@@ -59,38 +62,25 @@ class FixBearingRace : public FixBearingBody {
   }
   double angle() const { return angle_; }
   ohmdem::BearingSurface surface() const override;
-  int race_type() const { return race_type_; }
+  int race_type() const { return settings_.race_type; }
 
  private:
-  enum class Load { None, Force, Fixed, Settle, Radial };
+  using Load = ohmdem::RaceLoad;
 
-  void parse(int narg, char **arg);
-  void check_load(ohmdem::StyleArgs &a, bool have_force, bool have_settle, bool have_interference,
-                  double dir_x, double dir_y);
   void build_model();
+  void check_fit_between_races();
   double target_omega(double t) const;
+  void evaluate_variables();
   void ring_half_kick(double dt);
   void ring_acceleration(double &ax, double &ay) const;
+  void check_runaway();  // error->all when the contacts ran away (race_checks.h)
 
-  // --- arguments
-  bool inner_ = true;
-  double radius_ = 0, groove_ = 0;
-  int race_type_ = 0;
-  double omega_ = 0, ramp_ = 0;
-  double omega_start_ = 0;  // the ramp goes from omega_start_ to omega_ (run-up or coast-down)
-  // omega v_NAME / force v_NAME: equal-style variables evaluated at the start of each step
-  std::string omega_var_, force_var_;
-  int omega_ivar_ = -1, force_ivar_ = -1;
-  double omega_now_ = 0;  // the speed variable's value of this step
-  void find_variables();
-  void evaluate_variables();
-  Load load_ = Load::None;
-  double load_force_ = 0;             // force / settle: isotropic F (N)
+  const ohmdem::RaceSettings settings_;  // the arguments (race_settings.h)
+  RaceVariables variables_;              // the equal-style variables omega/force may name
+  // --- this step's load and speed (a variable may change them)
+  double omega_now_ = 0;              // the speed variable's value of this step
+  double load_force_ = 0;             // force / settle / radial: F (N)
   double load_fx_ = 0, load_fy_ = 0;  // radial load vector (N)
-  double dir_ux_ = 0, dir_uy_ = -1;   // unit load direction (outputs along/across it)
-  double interference_ = 0;           // fixed: imposed radial interference (m)
-  double settle_time_ = 0;            // settle: force control until this time (s)
-  double ring_mass_ = 0, ring_damp_ = 0;
 
   // --- ring state (identical on all ranks; written to restart)
   double time_ = 0;                             // time since the fix started acting (s)
@@ -111,12 +101,8 @@ class FixBearingRace : public FixBearingBody {
 
   std::unique_ptr<ohmdem::RaceContactModel> model_;
   double ball_radius_ = 0;
-  double ball_mass_ = 0;       // largest ball mass of the group (kg)
-  double mean_fn_ = 0;         // running mean load per touching ball (N), for messages
-  long long sound_steps_ = 0;  // steps that passed the runaway check
-  void check_runaway();        // error->all when the contacts ran away (contact/runaway.h)
-  void check_load_in_elastic_range();
-  void check_restart_geometry();
+  double ball_mass_ = 0;          // largest ball mass of the group (kg)
+  ohmdem::RunawayWatch runaway_;  // the steps that passed the runaway check
   int ball_type_ = 0;
 };
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ELECTRIC/contact_set.h"
+#include "common/constants.h"
 #include "memory.h"
 #include "support/args.h"
 #include "support/require_si.h"
@@ -64,7 +65,7 @@ void ComputeContactArea::init()
 void ComputeContactArea::compute_local()
 {
   invoked_local = update->ntimestep;
-  std::vector<ContactSet::Contact> found;
+  std::vector<ohmdem::ContactRecord> found;
   contacts_->collect(found);
   const int n = static_cast<int>(found.size());
   if (n > nmax_) {
@@ -76,13 +77,13 @@ void ComputeContactArea::compute_local()
   for (int r = 0; r < n; ++r) {
     const auto &c = found[r];
     double *row = array_local[r];
-    row[0] = static_cast<double>(c.tag1);
-    row[1] = static_cast<double>(c.tag2);
+    row[0] = static_cast<double>(c.tag);
+    row[1] = static_cast<double>(c.other);
     row[2] = c.race + 1;  // 1-based race number, 0 for a particle–particle contact
     row[3] = c.fn;
-    row[4] = c.ellipse.a;
-    row[5] = c.ellipse.b;
-    row[6] = c.ellipse.area;
+    row[4] = c.a;
+    row[5] = c.b;
+    row[6] = ohmdem::kPi * c.a * c.b;  // as ContactEllipse::area (contact/hertz_contact.cpp)
   }
 }
 

@@ -1,38 +1,34 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance. The contacts come from ELECTRIC/contact_set.*,
-   conductances from conduction/, the solve from network/;
-   this file parses, gathers the network from all processes and reports; the netlist and
-   VTK exports are in compute_network_resistance_exports.cpp.
+   conductances from electric/, the solves from network/. This file parses, checks,
+   chooses the evaluation path at the start of a run (resistance_path.h) and reports; the
+   exports are in network_exports.*, the local array in contact_flow_array.*.
 ------------------------------------------------------------------------- */
 
 #include "ELECTRIC/compute_network_resistance.h"
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "BEARING/fix_bearing_race.h"
-#include "ELECTRIC/compute_network_resistance_distributed.h"
+#include "ELECTRIC/contact_flow_array.h"
 #include "ELECTRIC/contact_set.h"
+#include "ELECTRIC/network_exports.h"
+#include "ELECTRIC/resistance_path_closed_form.h"
+#include "ELECTRIC/resistance_path_distributed.h"
+#include "ELECTRIC/resistance_path_gathered.h"
 #include "atom.h"
 #include "comm.h"
-#include "common/constants.h"
-#include "common/ordered_reduce.h"
-#include "conduction/conductance_laws.h"
-#include "conduction/network_builder.h"
 #include "error.h"
 #include "fix_property_global.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
 #include "network/conduction_network.h"
-#include "network/network_export.h"
 #include "support/args.h"
 #include "support/require_si.h"
 #include "update.h"
@@ -41,10 +37,15 @@ using namespace LAMMPS_NS;
 
 namespace {
 constexpr int kVectorSize = 8;
+// solver auto goes distributed from this many particles in the group (with more than one
+// process and no export): measured crossover, bench/network_scale/README.md.
+constexpr bigint kAutoDistributedParticles = 20000;
 }  // namespace
 
 ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int narg, char **arg)
-    : Compute(lmp, iarg, narg, arg), network_(std::make_unique<ohmdem::ConductionNetwork>())
+    : Compute(lmp, iarg, narg, arg),
+      gathered_(std::make_unique<GatheredNetworkPath>(lmp, context_)),
+      local_(std::make_unique<ContactFlowArray>(lmp))
 {
   parse(narg, arg);
   scalar_flag = 1;
@@ -54,21 +55,22 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   extvector = 0;
   peratom_flag = 1;
   size_peratom_cols = 0;
-  local_flag = 1;  // per-contact rows (compute_network_resistance_local.cpp)
+  local_flag = 1;  // per-contact rows (contact_flow_array.h)
   size_local_cols = ohmdem::ContactFlow::kColumns;
   size_local_rows = 0;
   vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
-  array_local = nullptr;  // LIGGGHTS' Compute leaves it unset: the destructor frees it
+  array_local = nullptr;  // owned by local_
   contacts_ = std::make_unique<ContactSet>(
       lmp, id, area_exact_ ? ohmdem::AreaModel::Exact : ohmdem::AreaModel::Greenwood,
       pair_mode_ != 0);
+  context_.contacts = contacts_.get();
+  exports_ = std::make_unique<NetworkExports>(lmp, netlist_, vtk_, every_);
 }
 
 ComputeNetworkResistance::~ComputeNetworkResistance()
 {
   memory->destroy(vector_atom);
-  memory->destroy(array_local);
 }
 
 void ComputeNetworkResistance::parse(int narg, char **arg)
@@ -88,13 +90,13 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
   while (!a.done()) {
     const std::string kw = a.word("keyword", "a keyword");
     if (kw == "current") {
-      current_ = a.positive(kw, "the injected current I > 0 (A)");
+      context_.current = a.positive(kw, "the injected current I > 0 (A)");
       have_current = true;
     } else if (kw == "high") {
-      electrode(kw, high_);
+      electrode(kw, context_.high);
       have_high = true;
     } else if (kw == "low") {
-      electrode(kw, low_);
+      electrode(kw, context_.low);
       have_low = true;
     } else if (kw == "area") {
       const std::string m = a.word(kw, "greenwood or exact");
@@ -107,7 +109,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else if (kw == "model") {
       const std::string names = ohmdem::model_names();
       const std::string m = a.word(kw, names.c_str());
-      if (!ohmdem::find_model(m, model_)) a.fail(kw, names.c_str(), m.c_str());
+      if (!ohmdem::find_model(m, context_.model)) a.fail(kw, names.c_str(), m.c_str());
     } else if (kw == "solver") {
       const std::string m = a.word(kw, "auto, direct, cg, amg or distributed");
       multigrid_ = m == "amg";
@@ -131,8 +133,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else if (kw == "closedform" || kw == "closed_form") {
       closed_form_ = a.yes_no(kw);
     } else {
-      a.unknown(kw.c_str(),
-                "current high low area model solver pair netlist vtk every closedform");
+      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk every closedform");
     }
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
@@ -140,10 +141,36 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     a.fail("high", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
   if (!have_low) a.fail("low", "race FIX-ID or group GROUP-ID: the keyword is required", "nothing");
   if (distributed_solver_ && (!netlist_.empty() || !vtk_.empty()))
-    a.fail("solver", "not distributed with netlist or vtk (the exports need the whole network "
-                     "on one process)", "distributed");
-  if (high_.kind == low_.kind && high_.name == low_.name)
-    a.fail("low", "an electrode other than the high one", low_.name.c_str());
+    a.fail("solver",
+           "not distributed with netlist or vtk (the exports need the whole network "
+           "on one process)",
+           "distributed");
+  const Electrode &high = context_.high, &low = context_.low;
+  if (high.kind == low.kind && high.name == low.name)
+    a.fail("low", "an electrode other than the high one", low.name.c_str());
+}
+
+void ComputeNetworkResistance::resolve(const char *kw, Electrode &e)
+{
+  if (e.kind == ElectrodeKind::Race) {
+    const auto &races = contacts_->races();
+    e.index = -1;
+    for (std::size_t k = 0; k < races.size(); ++k)
+      if (e.name == races[k]->id) e.index = static_cast<int>(k);
+    if (e.index < 0) {
+      const std::string msg = std::string("compute network/resistance: keyword '") + kw +
+                              "': no fix bearing/race with ID '" + e.name + "'";
+      error->all(FLERR, msg.c_str());
+    }
+  } else {
+    const int g = group->find(e.name.c_str());
+    if (g < 0) {
+      const std::string msg = std::string("compute network/resistance: keyword '") + kw +
+                              "': no group '" + e.name + "'";
+      error->all(FLERR, msg.c_str());
+    }
+    e.index = group->bitmask[g];
+  }
 }
 
 void ComputeNetworkResistance::init()
@@ -152,36 +179,24 @@ void ComputeNetworkResistance::init()
   // auto: particle–particle contacts when a granular pair style computes them.
   if (pair_mode_ < 0) pair_mode_ = 1;
   contacts_->init(groupbit);
-  auto resolve = [&](const char *kw, Electrode &e) {
-    if (e.kind == ElectrodeKind::Race) {
-      const auto &races = contacts_->races();
-      e.index = -1;
-      for (std::size_t k = 0; k < races.size(); ++k)
-        if (e.name == races[k]->id) e.index = static_cast<int>(k);
-      if (e.index < 0) {
-        const std::string msg = std::string("compute network/resistance: keyword '") + kw +
-                                "': no fix bearing/race with ID '" + e.name + "'";
-        error->all(FLERR, msg.c_str());
-      }
-    } else {
-      const int g = group->find(e.name.c_str());
-      if (g < 0) {
-        const std::string msg = std::string("compute network/resistance: keyword '") + kw +
-                                "': no group '" + e.name + "'";
-        error->all(FLERR, msg.c_str());
-      }
-      e.index = group->bitmask[g];
-    }
-  };
-  resolve("high", high_);
-  resolve("low", low_);
-  conductivity_ = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
+  context_.groupbit = groupbit;
+  resolve("high", context_.high);
+  resolve("low", context_.low);
+  read_conductivities();
+  choose_paths();
+  evaluated_step_ = -1;
+  exports_->check_files();
+}
+
+void ComputeNetworkResistance::read_conductivities()
+{
+  auto *conductivity = static_cast<FixPropertyGlobal *>(modify->find_fix_property(
       "electricalConductivity", "property/global", "peratomtype", atom->ntypes, 0, style));
-  gamma_type_.assign(atom->ntypes + 1, 0.0);  // per atom type, 1-based
-  geometry_ready_ = false;
+  std::vector<double> &gamma_type = context_.gamma_type;
+  gamma_type.assign(atom->ntypes + 1, 0.0);  // per atom type, 1-based
   for (int t = 1; t <= atom->ntypes; ++t) {
-    const double g = conductivity_->compute_vector(t - 1);
-    gamma_type_[t] = g;
+    const double g = conductivity->compute_vector(t - 1);
+    gamma_type[t] = g;
     if (!(g >= 0.0) || !std::isfinite(g)) {
       const std::string msg = "compute network/resistance: electricalConductivity of type " +
                               std::to_string(t) + " must be >= 0 (S/m; 0 = insulator), got " +
@@ -189,38 +204,66 @@ void ComputeNetworkResistance::init()
       error->all(FLERR, msg.c_str());
     }
   }
-  ohmdem::SolverOptions opt = network_->options();
+}
+
+// The closed form when both electrodes are races and no pair contact can conduct (it still
+// hands a step to the general network when a third race conducts, or for an export); the
+// general network gathered, or distributed (solver distributed, or auto with several
+// processes, no export and a large group: counted here, at the start of each run).
+void ComputeNetworkResistance::choose_paths()
+{
+  closed_form_path_.reset();
+  if (closed_form_ && context_.races_are_electrodes() && !contacts_->uses_pair())
+    closed_form_path_ = std::make_unique<ClosedFormPath>(lmp, context_);
+  ohmdem::SolverOptions opt = gathered_->options();
   opt.kind = static_cast<ohmdem::SolverKind>(solver_);
   opt.preconditioner =
       multigrid_ ? ohmdem::Preconditioner::Multigrid : ohmdem::Preconditioner::Diagonal;
-  network_->set_options(opt);
-  evaluated_step_ = -1;
-  check_export_files();
+  gathered_->set_options(opt, exports_->draws());
+  bool distributed = distributed_solver_;
+  if (!distributed && static_cast<ohmdem::SolverKind>(solver_) == ohmdem::SolverKind::Auto &&
+      comm->nprocs > 1 && !exports_->any())
+    distributed = group->count(igroup) >= kAutoDistributedParticles;
+  if (distributed && !distributed_)
+    distributed_ = std::make_unique<DistributedNetworkPath>(lmp, context_);
+  network_path_ = distributed ? static_cast<ResistancePath *>(distributed_.get()) : gathered_.get();
+  last_path_ = nullptr;
 }
 
 void ComputeNetworkResistance::evaluate()
 {
   if (evaluated_step_ == update->ntimestep) return;
   evaluated_step_ = update->ntimestep;
+  potentials_step_ = -1;
   if (atom->nmax > nmax_) {
     nmax_ = atom->nmax;
     memory->destroy(vector_atom);
     memory->create(vector_atom, nmax_, "network/resistance:vector_atom");
   }
-  closed_form_used_ = evaluate_between_races();
-  if (!closed_form_used_) build_and_solve();
+  // An export step needs the network itself (every: the other steps keep the closed form).
+  PathResult r;
+  if (closed_form_path_ && !exports_->due(update->ntimestep) &&
+      closed_form_path_->evaluate(vector_atom, r)) {
+    last_path_ = closed_form_path_.get();
+  } else {
+    network_path_->evaluate(vector_atom, r);
+    last_path_ = network_path_;
+  }
+  report(r);
+  if (last_path_ == gathered_.get() && comm->me == 0)
+    exports_->write(*gathered_, *contacts_, context_.current);
 }
 
-void ComputeNetworkResistance::report(double resistance, int contacts, int dropped, int iterations,
-                                      double residual)
+void ComputeNetworkResistance::report(const PathResult &r)
 {
+  const double resistance = r.resistance;
   result_[0] = resistance;
-  result_[1] = current_;
-  result_[2] = resistance * current_;
-  result_[3] = contacts;
-  result_[4] = dropped;
-  result_[5] = iterations;
-  result_[6] = residual;
+  result_[1] = context_.current;
+  result_[2] = resistance * context_.current;
+  result_[3] = r.contacts;
+  result_[4] = r.dropped;
+  result_[5] = r.iterations;
+  result_[6] = r.residual;
   if (std::isfinite(resistance)) {
     had_path_ = true;
   } else if (had_path_) {
@@ -249,176 +292,6 @@ void ComputeNetworkResistance::report(double resistance, int contacts, int dropp
   result_[7] = static_cast<double>(lost_evaluations_);
 }
 
-// A bearing: every conducting ball touches the high race, the low race, or both, and nothing
-// else conducts. A ball with both contacts is one resistor between the electrodes (eq. 1 with
-// its two spots, plus the two Holm constrictions if asked), and R is their parallel sum: no
-// network, no gathering of contacts (doc/compute_network_resistance.md, "Solve": a particle
-// with two contacts is one resistor). Both this and the general network evaluate the same
-// model (conduction/conduction_model.h). Returns false, on every process alike, when the scene
-// is anything else.
-bool ComputeNetworkResistance::evaluate_between_races()
-{
-  // An export step needs the network itself (every: the other steps keep the closed form).
-  const bool export_step = (!netlist_.empty() || !vtk_.empty()) &&
-                           (every_ == 0 || update->ntimestep % every_ == 0);
-  if (!closed_form_ || export_step || high_.kind != ElectrodeKind::Race ||
-      low_.kind != ElectrodeKind::Race || contacts_->uses_pair())
-    return false;
-  const auto &races = contacts_->races();
-  if (!geometry_ready_) {
-    between_races_ = ohmdem::BallBetweenRaces(
-        model_, contacts_->race_geometry(high_.index), contacts_->race_geometry(low_.index),
-        gamma_type_[races[high_.index]->race_type()], gamma_type_[races[low_.index]->race_type()],
-        gamma_type_);
-    other_races_.clear();
-    for (int k = 0; k < static_cast<int>(races.size()); ++k)
-      if (k != high_.index && k != low_.index) other_races_.push_back(races[k]);
-    geometry_ready_ = true;
-  }
-  const ohmdem::BallBetweenRaces::Kernel model = between_races_.kernel();
-  const double inf = std::numeric_limits<double>::infinity();
-
-  // Local copies of LIGGGHTS' arrays: the loop stays in registers (this runs every step).
-  const int nlocal = atom->nlocal;
-  const int *const mask = atom->mask;
-  const int *const type = atom->type;
-  const tagint *const tag = atom->tag;
-  const double *const *const x = atom->x;
-  const double *const radius = atom->radius;
-  const FixBearingRace &race_hi = *races[high_.index];
-  const FixBearingRace &race_lo = *races[low_.index];
-  const double *const gamma_type = gamma_type_.data();
-  const int bit = groupbit;
-  double *const phi = vector_atom;  // potential / V_high, scaled once R is known
-
-  balls_.resize(nlocal);
-  ohmdem::TaggedValues<3> *out = balls_.data();
-  int nballs = 0, other = 0;
-  for (int i = 0; i < nlocal; ++i) {
-    phi[i] = 0.0;
-    if (!(mask[i] & bit)) continue;
-    for (const FixBearingRace *race : other_races_)
-      if (race->contact_of(i).conducts()) ++other;
-    const ohmdem::RaceContactView ch = race_hi.contact_of(i), cl = race_lo.contact_of(i);
-    const bool on_hi = ch.conducts(), on_lo = cl.conducts();
-    const double gamma = gamma_type[type[i]];
-    if (!(gamma > 0.0) || !(on_hi || on_lo)) continue;
-    if (!(on_hi && on_lo)) {
-      // A dead end: no current; its contact node sits at that electrode's potential.
-      phi[i] = on_hi ? 1.0 : 0.0;
-      out[nballs++] = {static_cast<std::int64_t>(tag[i]), {0.0, 0.0, 1.0}};
-      continue;
-    }
-    const double u[3] = {ch.point_x() - x[i][0], ch.point_y() - x[i][1], 0.0};
-    const double w[3] = {cl.point_x() - x[i][0], cl.point_y() - x[i][1], 0.0};
-    const double conductance = model.conductance(type[i], gamma, radius[i], ch.fn(), cl.fn(), u, w);
-    phi[i] = 0.5;
-    out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
-  }
-  balls_.resize(nballs);
-  int any_other = other;
-  if (comm->nprocs > 1) MPI_Allreduce(&other, &any_other, 1, MPI_INT, MPI_SUM, world);
-  if (any_other) return false;  // a third conducting race: the general network handles it
-
-  // Conductances added in tag order: the same R with any number of processes.
-  const auto sum = ohmdem::ordered_sum<3>(balls_gather_.gather(balls_, world));
-  const double conductance = sum[0];
-  const int paths = static_cast<int>(sum[1]), dead = static_cast<int>(sum[2]);
-  const double resistance = conductance > 0.0 ? 1.0 / conductance : inf;
-  report(resistance, 2 * paths + dead, 0, 0, 0.0);
-  // Per-atom potential: mean of the contact-node potentials (the electrodes' own).
-  const double v_high = std::isfinite(resistance) ? resistance * current_ : 0.0;
-  for (int i = 0; i < nlocal; ++i) phi[i] *= v_high;
-  return true;
-}
-
-// The particles and contacts of all processes, in tag order: the same network, and the same
-// numbers, for any process count.
-void ComputeNetworkResistance::gather_scene(std::vector<ohmdem::ParticleRecord> &particles,
-                                            std::vector<ohmdem::ContactRecord> &contacts)
-{
-  std::vector<ContactSet::Contact> local;
-  contacts_->collect(local);
-  const int high_bit = high_.kind == ElectrodeKind::Group ? high_.index : 0;
-  const int low_bit = low_.kind == ElectrodeKind::Group ? low_.index : 0;
-  std::vector<ohmdem::ParticleRecord::Packed> my_particles;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const int m = atom->mask[i];
-    const auto member = (m & high_bit)  ? ohmdem::Membership::High
-                        : (m & low_bit) ? ohmdem::Membership::Low
-                                        : ohmdem::Membership::None;
-    my_particles.push_back(ohmdem::ParticleRecord{static_cast<std::int64_t>(atom->tag[i]),
-                                                  {atom->x[i][0], atom->x[i][1], atom->x[i][2]},
-                                                  atom->radius[i],
-                                                  atom->type[i],
-                                                  member}
-                               .pack());
-  }
-  std::vector<ohmdem::ContactRecord::Packed> my_contacts;
-  for (const auto &c : local)
-    my_contacts.push_back(ohmdem::ContactRecord{static_cast<std::int64_t>(c.tag1),
-                                                static_cast<std::int64_t>(c.tag2),
-                                                c.race,
-                                                c.fn,
-                                                {c.point[0], c.point[1], c.point[2]},
-                                                c.ellipse.a,
-                                                c.ellipse.b}
-                              .pack());
-  const auto all_particles = ohmdem::gather_by_tag<6>(my_particles, world);
-  particles.resize(all_particles.size());
-  for (std::size_t k = 0; k < all_particles.size(); ++k)
-    particles[k] = ohmdem::ParticleRecord::unpack(all_particles[k]);
-  const auto all_contacts = ohmdem::gather_by_tag<8>(my_contacts, world);
-  contacts.resize(all_contacts.size());
-  for (std::size_t k = 0; k < all_contacts.size(); ++k)
-    contacts[k] = ohmdem::ContactRecord::unpack(all_contacts[k]);
-}
-
-void ComputeNetworkResistance::build_and_solve()
-{
-  distributed_used_ = use_distributed();
-  if (distributed_used_) return solve_distributed();
-  // The scene in members: their memory is reused from step to step.
-  gather_scene(particles_, contact_records_);
-  gamma_race_.clear();
-  for (const FixBearingRace *r : contacts_->races())
-    gamma_race_.push_back(gamma_type_[r->race_type()]);
-
-  // The model's conductances: constrictions across contacts, the bulk law inside particles.
-  ohmdem::ConductionNetwork &net = *network_;
-  const ohmdem::NetworkScene scene{&particles_, &contact_records_, &gamma_type_, &gamma_race_,
-                                   !vtk_.empty()};
-  ohmdem::NetworkBuild &built = built_;
-  ohmdem::build_network(model_, scene, net, built);
-
-  // Solve: current into `high`, `low` at 0 V.
-  auto electrode_node = [&](const Electrode &e, ohmdem::Membership member) {
-    return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
-  };
-  net.set_electrodes(electrode_node(high_, ohmdem::Membership::High),
-                     electrode_node(low_, ohmdem::Membership::Low));
-  const ohmdem::NetworkSolution sol = net.solve(current_);
-  report(sol.resistance, built.conducting_contacts, sol.floating_nodes_dropped, sol.iterations,
-         sol.relative_residual);
-
-  // Per-atom potential: mean over the particle's contact nodes (0 without a contact).
-  const auto &spots = built.spots;
-  for (int i = 0; i < atom->nlocal; ++i) {
-    vector_atom[i] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
-    const std::int64_t tag = atom->tag[i];
-    auto lo = std::lower_bound(
-        spots.begin(), spots.end(), tag,
-        [](const ohmdem::NetworkBuild::Spot &x, std::int64_t t) { return x.tag < t; });
-    double sum = 0.0;
-    int n = 0;
-    for (; lo != spots.end() && lo->tag == tag; ++lo, ++n) sum += net.potential(lo->spot.node);
-    vector_atom[i] = n ? sum / n : 0.0;
-  }
-  if (comm->me == 0) write_exports(built.drawn);
-}
-
 double ComputeNetworkResistance::compute_scalar()
 {
   invoked_scalar = update->ntimestep;
@@ -438,16 +311,27 @@ void ComputeNetworkResistance::compute_peratom()
 {
   invoked_peratom = update->ntimestep;
   evaluate();
-  // The distributed solve leaves them to here: only a reader pays for them.
-  if (distributed_used_ && !closed_form_used_ && potentials_step_ != update->ntimestep) {
-    distributed_->potentials(groupbit, vector_atom);
+  // A path may leave them to here (the distributed one): only a reader pays for them.
+  if (potentials_step_ != update->ntimestep) {
+    last_path_->potentials(vector_atom);
     potentials_step_ = update->ntimestep;
   }
 }
 
+void ComputeNetworkResistance::compute_local()
+{
+  invoked_local = update->ntimestep;
+  evaluate();
+  size_local_rows = local_->fill(*last_path_, context_);
+  array_local = local_->rows();
+}
+
 double ComputeNetworkResistance::memory_usage()
 {
-  return static_cast<double>(nmax_) * sizeof(double) +
-         static_cast<double>(local_capacity_) * ohmdem::ContactFlow::kColumns * sizeof(double) +
-         (distributed_ ? distributed_->memory_usage() : 0.0);
+  double bytes = static_cast<double>(nmax_) * sizeof(double) + local_->memory_usage();
+  for (const ResistancePath *p : {static_cast<const ResistancePath *>(closed_form_path_.get()),
+                                  static_cast<const ResistancePath *>(gathered_.get()),
+                                  static_cast<const ResistancePath *>(distributed_.get())})
+    if (p) bytes += p->memory_usage();
+  return bytes;
 }

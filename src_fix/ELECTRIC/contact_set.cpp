@@ -2,6 +2,7 @@
 #include "ELECTRIC/contact_set.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "BEARING/fix_bearing_race.h"
 #include "atom.h"
@@ -62,7 +63,7 @@ void ContactSet::init(int groupbit)
   }
 }
 
-void ContactSet::collect(std::vector<Contact> &out)
+void ContactSet::collect(std::vector<ohmdem::ContactRecord> &out)
 {
   out.clear();
   collect_races(out);
@@ -81,7 +82,7 @@ const ohmdem::HertzContact &ContactSet::race_geometry(int k)
   return race_hertz_[k];
 }
 
-void ContactSet::collect_races(std::vector<Contact> &out)
+void ContactSet::collect_races(std::vector<ohmdem::ContactRecord> &out)
 {
   const int nlocal = atom->nlocal;
   for (std::size_t k = 0; k < races_.size(); ++k) {
@@ -89,20 +90,22 @@ void ContactSet::collect_races(std::vector<Contact> &out)
       if (!(atom->mask[i] & groupbit_)) continue;
       const ohmdem::RaceContactView c = races_[k]->contact_of(i);
       if (!c.conducts()) continue;  // no force, or in a defect zone: no current
-      Contact ct;
-      ct.tag1 = atom->tag[i];
+      ohmdem::ContactRecord ct;
+      ct.tag = static_cast<std::int64_t>(atom->tag[i]);
       ct.race = static_cast<int>(k);
       ct.fn = c.fn();
       ct.point[0] = c.point_x();
       ct.point[1] = c.point_y();
       ct.point[2] = atom->x[i][2];
-      ct.ellipse = race_geometry(static_cast<int>(k)).ellipse(ct.fn);
+      const ohmdem::ContactEllipse e = race_geometry(static_cast<int>(k)).ellipse(ct.fn);
+      ct.a = e.a;
+      ct.b = e.b;
       out.push_back(ct);
     }
   }
 }
 
-void ContactSet::collect_pairs(std::vector<Contact> &out)
+void ContactSet::collect_pairs(std::vector<ohmdem::ContactRecord> &out)
 {
   pgl_->compute_local();
   double **data = pgl_->get_data();
@@ -129,14 +132,16 @@ void ContactSet::collect_pairs(std::vector<Contact> &out)
     if (!(fn > 0.0)) continue;
     const double ri = atom->radius[i], rj = atom->radius[j];
     const double delta = ri + rj - d;
-    Contact ct;
-    ct.tag1 = t1;
-    ct.tag2 = t2;
+    ohmdem::ContactRecord ct;
+    ct.tag = static_cast<std::int64_t>(t1);
+    ct.other = static_cast<std::int64_t>(t2);
     ct.fn = fn;
     for (int k = 0; k < 3; ++k) ct.point[k] = atom->x[i][k] + (ri - 0.5 * delta) * n12[k];
     const ohmdem::HertzContact h(ohmdem::sphere_sphere(ri, rj),
                                  mat.E_eff(atom->type[i], atom->type[j]), model_);
-    ct.ellipse = h.ellipse(fn);
+    const ohmdem::ContactEllipse e = h.ellipse(fn);
+    ct.a = e.a;
+    ct.b = e.b;
     out.push_back(ct);
   }
 }

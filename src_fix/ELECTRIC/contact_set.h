@@ -5,6 +5,8 @@
 // internal `compute pair/gran/local`). Contact areas come from the normal force (rigid Hertz
 // areas, paper eqs. 2–5) in the `greenwood` or `exact` mode of hertz_contact.h.
 //
+// Each contact is an ohmdem::ContactRecord (electric/network_builder.h), the record every
+// evaluation path of compute network/resistance reads and sends over MPI.
 // Adapter code (LIGGGHTS types); the geometry and the network are plain C++ kernels.
 #ifndef OHMDEM_STYLE_CONTACT_SET_H
 #define OHMDEM_STYLE_CONTACT_SET_H
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "contact/hertz_contact.h"
+#include "conduction/network_builder.h"
 #include "lmptype.h"
 #include "pointers.h"
 
@@ -24,30 +27,23 @@ class ComputePairGranLocal;
 
 class ContactSet : protected Pointers {
  public:
-  struct Contact {
-    tagint tag1 = 0;  // a particle of the group, owned by this process
-    tagint tag2 = 0;  // the other particle; 0 for a race
-    int race = -1;    // index in races() for a ball–race contact, -1 otherwise
-    double fn = 0;    // normal force (N), > 0
-    double point[3] = {0, 0, 0};
-    ohmdem::ContactEllipse ellipse;
-  };
-
   ContactSet(LAMMPS *lmp, const std::string &owner_id, ohmdem::AreaModel model, bool use_pair);
   ~ContactSet();
   // Finds the race fixes and materials; creates the pair/gran/local compute when asked for.
   void init(int groupbit);
   // The contacts of this process with fn > 0, each contact on exactly one process; both
-  // particles of a pair contact are in the group.
-  void collect(std::vector<Contact> &out);
+  // particles of a pair contact are in the group. A record's `tag` is a particle of the
+  // group owned by this process, `other` the other particle (0 for a race), `race` the
+  // index in races() of a ball–race contact (-1 otherwise), `a`, `b` the contact ellipse.
+  void collect(std::vector<ohmdem::ContactRecord> &out);
   const std::vector<FixBearingRace *> &races() const { return races_; }
   // Contact geometry of race k in the chosen area mode (valid once the races are set up).
   const ohmdem::HertzContact &race_geometry(int k);
   bool uses_pair() const { return pgl_ != nullptr; }
 
  private:
-  void collect_races(std::vector<Contact> &out);
-  void collect_pairs(std::vector<Contact> &out);
+  void collect_races(std::vector<ohmdem::ContactRecord> &out);
+  void collect_pairs(std::vector<ohmdem::ContactRecord> &out);
 
   std::string owner_id_;
   ohmdem::AreaModel model_;

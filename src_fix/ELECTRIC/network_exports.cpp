@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// compute network/resistance: the SPICE netlist and VTK exports of the network (keywords
-// netlist, vtk and every), checked on every process at the start of a run, written by
-// process 0. A `*` in a file name stands for the step; a VTK series gets a ParaView index
-// (.pvd) and, per written step, the particles and (when it moved) the bearing geometry.
+// compute network/resistance: the SPICE netlist and VTK exports; see network_exports.h.
+#include "ELECTRIC/network_exports.h"
+
 #include <mpi.h>
 
 #include <algorithm>
@@ -16,8 +15,8 @@
 
 #include "BEARING/fix_bearing_cage.h"
 #include "BEARING/fix_bearing_race.h"
-#include "ELECTRIC/compute_network_resistance.h"
 #include "ELECTRIC/contact_set.h"
+#include "ELECTRIC/resistance_path_gathered.h"
 #include "comm.h"
 #include "error.h"
 #include "modify.h"
@@ -29,11 +28,18 @@
 
 using namespace LAMMPS_NS;
 
+NetworkExports::NetworkExports(LAMMPS *lmp, std::string netlist, std::string vtk, bigint every)
+    : Pointers(lmp), netlist_(std::move(netlist)), vtk_(std::move(vtk)), every_(every)
+{
+}
+
+NetworkExports::~NetworkExports() = default;
+
 // The netlist and VTK files are written by process 0 during the run; a path that cannot be
 // written stops the run here, on every process alike, with the message in the log (an error
 // raised on one process only aborts MPI before the log is written). A series is checked with
 // the file of the current step, removed again if it was not there.
-void ComputeNetworkResistance::check_export_files()
+void NetworkExports::check_files()
 {
   for (const auto &[kw, pattern] :
        {std::pair<const char *, const std::string &>{"netlist", netlist_}, {"vtk", vtk_}}) {
@@ -58,18 +64,20 @@ void ComputeNetworkResistance::check_export_files()
 
 // The particles of the network at this step (all of them, gathered), with the potential of
 // each: the mean of its contact-node potentials, as the per-atom output.
-std::string ComputeNetworkResistance::write_particles(const std::string &path)
+std::string NetworkExports::write_particles(const GatheredNetworkPath &network,
+                                            const std::string &path)
 {
+  const std::vector<ohmdem::ParticleRecord> &particles = network.particles();
   std::vector<ohmdem::ParticlePoint> points;
-  points.reserve(particles_.size());
-  const auto &spots = built_.spots;
+  points.reserve(particles.size());
+  const auto &spots = network.built().spots;
   auto s = spots.begin();
-  for (const ohmdem::ParticleRecord &p : particles_) {
+  for (const ohmdem::ParticleRecord &p : particles) {
     while (s != spots.end() && s->tag < p.tag) ++s;
     double sum = 0.0;
     int n = 0;
     for (auto t = s; t != spots.end() && t->tag == p.tag; ++t, ++n)
-      sum += network_->potential(t->spot.node);
+      sum += network.network().potential(t->spot.node);
     points.push_back({p.tag, {p.centre[0], p.centre[1], p.centre[2]}, p.radius, n ? sum / n : 0.0});
   }
   std::ofstream os(path);
@@ -84,11 +92,13 @@ std::string ComputeNetworkResistance::write_particles(const std::string &path)
 // The races and the cage of a bearing as surfaces: written at the first export and again
 // only when a ring or the cage moved by more than 1e-4 of its radius (the outer ring's
 // interference, a ring centre free in the plane, the floating cage).
-std::string ComputeNetworkResistance::write_bearing_geometry()
+std::string NetworkExports::write_bearing_geometry(const GatheredNetworkPath &network,
+                                                   const ContactSet &contacts)
 {
-  const auto &races = contacts_->races();
+  const auto &races = contacts.races();
   if (races.empty()) return "";
-  const double z = particles_.empty() ? 0.0 : particles_.front().centre[2];
+  const std::vector<ohmdem::ParticleRecord> &particles = network.particles();
+  const double z = particles.empty() ? 0.0 : particles.front().centre[2];
   std::vector<ohmdem::RingShape> rings;
   std::vector<double> state;
   for (const FixBearingRace *r : races) {
@@ -110,7 +120,7 @@ std::string ComputeNetworkResistance::write_bearing_geometry()
     cage.z = z;
     cage.radius = cage_fix->pitch_radius();
     double rmax = 0.0;
-    for (const auto &p : particles_) rmax = std::max(rmax, p.radius);
+    for (const auto &p : particles) rmax = std::max(rmax, p.radius);
     cage.height = rmax;
     state.insert(state.end(), {cage.centre[0], cage.centre[1], cage.radius});
   }
@@ -135,11 +145,12 @@ std::string ComputeNetworkResistance::write_bearing_geometry()
 
 // The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only), on the
 // steps of `every`.
-void ComputeNetworkResistance::write_exports(const std::vector<ohmdem::VtkEdge> &drawn)
+void NetworkExports::write(const GatheredNetworkPath &network, const ContactSet &contacts,
+                           double current)
 {
   const bigint step = update->ntimestep;
   if (every_ > 0 && step % every_ != 0) return;
-  const ohmdem::ConductionNetwork &net = *network_;
+  const ohmdem::ConductionNetwork &net = network.network();
   if (!netlist_.empty()) {
     const std::string path = ohmdem::expand_step(netlist_, step);
     std::ofstream os(path);
@@ -148,7 +159,7 @@ void ComputeNetworkResistance::write_exports(const std::vector<ohmdem::VtkEdge> 
           "compute network/resistance: keyword 'netlist': cannot open '" + path + "' for writing";
       error->one(FLERR, msg.c_str());
     }
-    ohmdem::write_spice_netlist(os, net, current_);
+    ohmdem::write_spice_netlist(os, net, current);
   }
   if (!vtk_.empty()) {
     const std::string path = ohmdem::expand_step(vtk_, step);
@@ -162,10 +173,10 @@ void ComputeNetworkResistance::write_exports(const std::vector<ohmdem::VtkEdge> 
     // Holm constrictions (a point cell at the contact); cell data as in network_export.h.
     ohmdem::VtkOptions opt;
     opt.edge_scalar_names = {"area_a", "area_b", "holm"};
-    ohmdem::write_vtk_network(os, net, drawn, opt);
+    ohmdem::write_vtk_network(os, net, network.built().drawn, opt);
     std::vector<std::string> files{
-        path, write_particles(ohmdem::companion_path(vtk_, "particles", step))};
-    const std::string geometry = write_bearing_geometry();
+        path, write_particles(network, ohmdem::companion_path(vtk_, "particles", step))};
+    const std::string geometry = write_bearing_geometry(network, contacts);
     if (!geometry.empty()) files.push_back(geometry);
     if (pvd_) {
       try {

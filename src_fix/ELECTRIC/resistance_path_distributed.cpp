@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 /* ----------------------------------------------------------------------
    ohmdem - compute network/resistance, the distributed path; see
-   compute_network_resistance_distributed.h.
+   resistance_path_distributed.h.
 ------------------------------------------------------------------------- */
 
-#include "ELECTRIC/compute_network_resistance_distributed.h"
+#include "ELECTRIC/resistance_path_distributed.h"
 
 #include <mpi.h>
 
@@ -12,32 +12,16 @@
 #include <string>
 #include <tuple>
 
-#include "BEARING/fix_bearing_race.h"
-#include "ELECTRIC/compute_network_resistance.h"
 #include "ELECTRIC/contact_set.h"
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "group.h"
 #include "network/key_directory.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 
 namespace {
-
-ohmdem::ParticleRecord record_of(const Atom &atom, int i, int high_bit, int low_bit)
-{
-  const int m = atom.mask[i];
-  const auto member = (m & high_bit)  ? ohmdem::Membership::High
-                      : (m & low_bit) ? ohmdem::Membership::Low
-                                      : ohmdem::Membership::None;
-  return {static_cast<std::int64_t>(atom.tag[i]),
-          {atom.x[i][0], atom.x[i][1], atom.x[i][2]},
-          atom.radius[i],
-          atom.type[i],
-          member};
-}
 
 // A contact between processes, sent to the owner of its second particle with the first one.
 struct Routed {
@@ -55,28 +39,30 @@ std::int64_t particle_of(ohmdem::NodeKey k)
 
 }  // namespace
 
-NetworkResistanceDistributed::NetworkResistanceDistributed(LAMMPS *lmp)
-    : Pointers(lmp), solver_(std::make_unique<ohmdem::DistributedNetworkSolver>(world))
+DistributedNetworkPath::DistributedNetworkPath(LAMMPS *lmp, const ResistanceContext &context)
+    : Pointers(lmp),
+      context_(context),
+      solver_(std::make_unique<ohmdem::DistributedNetworkSolver>(world))
 {
 }
 
-NetworkResistanceDistributed::~NetworkResistanceDistributed() = default;
+DistributedNetworkPath::~DistributedNetworkPath() = default;
 
 // Every contact of this process's particles, and the particles at their other ends: a
 // contact held here whose partner is owned elsewhere also goes to the partner's owner (found
 // through a directory of tags), so both owners can build the bulk law of their particle.
-void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setup)
+void DistributedNetworkPath::route()
 {
-  std::vector<ContactSet::Contact> &local = collected_;
-  contacts.collect(local);
+  std::vector<ohmdem::ContactRecord> &local = collected_;
+  context_.contacts->collect(local);
   owned_tags_.clear();
   particles_.clear();
   // Each local or ghost particle recorded once (a partner has several contacts here).
   recorded_.assign(static_cast<std::size_t>(atom->nlocal) + atom->nghost, 0);
   for (int i = 0; i < atom->nlocal; ++i) {
-    if (!(atom->mask[i] & setup.groupbit)) continue;
+    if (!(atom->mask[i] & context_.groupbit)) continue;
     owned_tags_.push_back(static_cast<std::int64_t>(atom->tag[i]));
-    particles_.push_back(record_of(*atom, i, setup.high_bit, setup.low_bit));
+    particles_.push_back(context_.particle(*atom, i));
     recorded_[i] = 1;
   }
   std::sort(owned_tags_.begin(), owned_tags_.end());
@@ -89,31 +75,24 @@ void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setu
   }
   std::vector<ohmdem::KeyDirectory::Key> partners;
   for (const auto &c : local)
-    if (c.race < 0) partners.push_back(static_cast<std::uint64_t>(c.tag2));
+    if (c.race < 0) partners.push_back(static_cast<std::uint64_t>(c.other));
   const std::vector<std::int64_t> owner = owners.lookup(partners);
 
   contacts_.clear();
   std::vector<std::vector<Routed>> out(comm->nprocs);
   std::size_t q = 0;
-  for (const auto &c : local) {
-    const ohmdem::ContactRecord rec{static_cast<std::int64_t>(c.tag1),
-                                    static_cast<std::int64_t>(c.tag2),
-                                    c.race,
-                                    c.fn,
-                                    {c.point[0], c.point[1], c.point[2]},
-                                    c.ellipse.a,
-                                    c.ellipse.b};
+  for (const ohmdem::ContactRecord &rec : local) {
     contacts_.push_back(rec);
-    if (c.race >= 0) continue;
+    if (rec.race >= 0) continue;
     const std::int64_t o = owner[q++];
-    const int j = atom->map(c.tag2);  // the partner, owned or a ghost, is known here
+    const int j = atom->map(static_cast<tagint>(rec.other));  // the partner, owned or a ghost
     if (j >= 0 && !recorded_[j]) {
       recorded_[j] = 1;
-      particles_.push_back(record_of(*atom, j, setup.high_bit, setup.low_bit));
+      particles_.push_back(context_.particle(*atom, j));
     }
     if (o != comm->me && o != ohmdem::KeyDirectory::kMissing) {
-      const int i = atom->map(c.tag1);
-      out[o].push_back({rec.pack(), record_of(*atom, i, setup.high_bit, setup.low_bit).pack()});
+      const int i = atom->map(static_cast<tagint>(rec.tag));
+      out[o].push_back({rec.pack(), context_.particle(*atom, i).pack()});
     }
   }
   for (const Routed &r : ohmdem::exchange_blocks(out, world)) {
@@ -135,25 +114,26 @@ void NetworkResistanceDistributed::route(ContactSet &contacts, const Setup &setu
             });
 }
 
-NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(ContactSet &contacts,
-                                                                         const Setup &setup,
-                                                                         double current)
+bool DistributedNetworkPath::evaluate(double * /*phi*/, PathResult &result)
 {
-  route(contacts, setup);
-  const ohmdem::NetworkScene scene{&particles_,      &contacts_, setup.gamma_type,
-                                   setup.gamma_race, false,      &owned_tags_};
+  route();
+  context_.gamma_race(gamma_race_);
+  const ohmdem::NodeKey high = context_.high.node(ohmdem::Membership::High);
+  const ohmdem::NodeKey low = context_.low.node(ohmdem::Membership::Low);
+  const ohmdem::NetworkScene scene{&particles_,  &contacts_, &context_.gamma_type,
+                                   &gamma_race_, false,      &owned_tags_};
   // This process's share of the conductances, and the nodes it owns: the contact nodes of
   // its particles (a node shared by two particles: the one with the smaller tag), and on
   // rank 0 the races that are not electrodes but conduct somewhere.
   share_.clear();
-  const int nraces = static_cast<int>(setup.gamma_race->size());
+  const int nraces = static_cast<int>(gamma_race_.size());
   std::vector<int> race_used(nraces, 0);
   auto note_race = [&](ohmdem::NodeKey k) {
     for (int r = 0; r < nraces; ++r)
-      if (k == ohmdem::race_node(r) && k != setup.high && k != setup.low) race_used[r] = 1;
+      if (k == ohmdem::race_node(r) && k != high && k != low) race_used[r] = 1;
   };
   ohmdem::build_network(
-      *setup.model, scene,
+      context_.model, scene,
       [&](ohmdem::NodeKey a, ohmdem::NodeKey b, double g) {
         share_.push_back({a, b, g});
         if (particle_of(a) == 0) note_race(a);
@@ -170,15 +150,22 @@ NetworkResistanceDistributed::Result NetworkResistanceDistributed::solve(Contact
     for (int r = 0; r < nraces; ++r)
       if (race_used[r]) owned_nodes_.push_back(ohmdem::race_node(r));
 
-  Result out;
-  out.solution = solver_->solve(owned_nodes_, share_, setup.high, setup.low, current);
-  long long n = built_.conducting_contacts;
-  MPI_Allreduce(&n, &out.contacts, 1, MPI_LONG_LONG, MPI_SUM, world);
-
-  return out;
+  const ohmdem::DistributedSolution s =
+      solver_->solve(owned_nodes_, share_, high, low, context_.current);
+  long long n = built_.conducting_contacts, contacts = 0;
+  MPI_Allreduce(&n, &contacts, 1, MPI_LONG_LONG, MPI_SUM, world);
+  if (!s.converged && comm->me == 0)
+    error->warning(FLERR,
+                   ("compute network/resistance: the distributed CG stopped at step " +
+                    std::to_string(update->ntimestep) + " after " + std::to_string(s.iterations) +
+                    " iterations, relative residual " + std::to_string(s.relative_residual))
+                       .c_str());
+  result = PathResult{s.resistance, static_cast<int>(contacts), static_cast<int>(s.floating_nodes),
+                      s.iterations, s.relative_residual};
+  return true;
 }
 
-void NetworkResistanceDistributed::potentials(int groupbit, double *phi)
+void DistributedNetworkPath::potentials(double *phi)
 {
   // The mean over the particle's contact nodes (0 without a contact).
   std::vector<ohmdem::NodeKey> keys;
@@ -193,7 +180,7 @@ void NetworkResistanceDistributed::potentials(int groupbit, double *phi)
       by_tag.push_back({s.tag, v[k++]});
   for (int i = 0; i < atom->nlocal; ++i) {
     phi[i] = 0.0;
-    if (!(atom->mask[i] & groupbit)) continue;
+    if (!(atom->mask[i] & context_.groupbit)) continue;
     const std::int64_t tag = atom->tag[i];
     auto lo = std::lower_bound(
         by_tag.begin(), by_tag.end(), tag,
@@ -205,7 +192,15 @@ void NetworkResistanceDistributed::potentials(int groupbit, double *phi)
   }
 }
 
-double NetworkResistanceDistributed::memory_usage() const
+void DistributedNetworkPath::contact_flows(std::vector<ohmdem::ContactFlow> & /*rows*/)
+{
+  error->all(FLERR,
+             "compute network/resistance: the per-contact local array needs the gathered "
+             "network solve, not solver distributed (solver auto goes distributed from 20000 "
+             "particles on more than one process): give solver direct, cg or amg");
+}
+
+double DistributedNetworkPath::memory_usage() const
 {
   return static_cast<double>(solver_->memory_bytes()) +
          static_cast<double>(particles_.capacity() * sizeof(ohmdem::ParticleRecord) +
@@ -213,52 +208,4 @@ double NetworkResistanceDistributed::memory_usage() const
                              built_.spots.capacity() * sizeof(ohmdem::NetworkBuild::Spot) +
                              share_.capacity() * sizeof(ohmdem::DistributedEdge) +
                              owned_nodes_.capacity() * sizeof(ohmdem::NodeKey));
-}
-
-// ---- the compute's side of the distributed path ----
-
-namespace {
-// solver auto goes distributed from this many particles in the group (with more than one
-// process and no export): measured crossover, bench/network_scale/README.md.
-constexpr bigint kAutoDistributedParticles = 20000;
-}  // namespace
-
-bool ComputeNetworkResistance::use_distributed()
-{
-  if (distributed_solver_) return true;
-  if (static_cast<ohmdem::SolverKind>(solver_) != ohmdem::SolverKind::Auto || comm->nprocs < 2 ||
-      !netlist_.empty() || !vtk_.empty())
-    return false;
-  return group->count(igroup) >= kAutoDistributedParticles;
-}
-
-void ComputeNetworkResistance::solve_distributed()
-{
-  if (!distributed_) distributed_ = std::make_unique<NetworkResistanceDistributed>(lmp);
-  gamma_race_.clear();
-  for (const FixBearingRace *r : contacts_->races())
-    gamma_race_.push_back(gamma_type_[r->race_type()]);
-  auto node = [&](const Electrode &e, ohmdem::Membership member) {
-    return e.kind == ElectrodeKind::Race ? ohmdem::race_node(e.index) : ohmdem::member_node(member);
-  };
-  const NetworkResistanceDistributed::Setup setup{
-      &model_,
-      &gamma_type_,
-      &gamma_race_,
-      groupbit,
-      high_.kind == ElectrodeKind::Group ? high_.index : 0,
-      low_.kind == ElectrodeKind::Group ? low_.index : 0,
-      node(high_, ohmdem::Membership::High),
-      node(low_, ohmdem::Membership::Low)};
-  const auto r = distributed_->solve(*contacts_, setup, current_);
-  potentials_step_ = -1;  // per-atom potentials: on demand (compute_peratom)
-  const ohmdem::DistributedSolution &s = r.solution;
-  if (!s.converged && comm->me == 0)
-    error->warning(FLERR,
-                   ("compute network/resistance: the distributed CG stopped at step " +
-                    std::to_string(update->ntimestep) + " after " + std::to_string(s.iterations) +
-                    " iterations, relative residual " + std::to_string(s.relative_residual))
-                       .c_str());
-  report(s.resistance, static_cast<int>(r.contacts), static_cast<int>(s.floating_nodes),
-         s.iterations, s.relative_residual);
 }

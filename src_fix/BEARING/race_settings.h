@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// fix bearing/race: its arguments as a value (the keywords of doc/fix_bearing_race.md),
+// filled and checked once by parse_race_settings(); the fix keeps it unchanged for the run.
+#ifndef OHMDEM_STYLE_RACE_SETTINGS_H
+#define OHMDEM_STYLE_RACE_SETTINGS_H
+
+#include <string>
+
+namespace LAMMPS_NS {
+class Error;
+}
+
+namespace ohmdem {
+
+// `load fixed` with `settle` is Settle.
+enum class RaceLoad { None, Force, Fixed, Settle, Radial };
+
+struct RaceSettings {
+  bool inner = true;
+  double radius = 0, groove = 0;  // race radius at the groove bottom, groove radius (m)
+  int race_type = 0;
+  double centre_x = 0, centre_y = 0;  // the bearing axis (m)
+  double omega = 0, ramp = 0;         // rad/s, s
+  double omega_start = 0;  // the ramp goes from omega_start to omega (run-up or coast-down)
+  // omega v_NAME / force v_NAME: equal-style variables (names without "v_"), each step
+  std::string omega_var, force_var;
+  RaceLoad load = RaceLoad::None;
+  double load_force = 0;            // force / settle / radial: F (N)
+  double load_fx = 0, load_fy = 0;  // radial: the load vector (N)
+  double dir_ux = 0, dir_uy = -1;   // unit load direction (outputs along/across it)
+  double interference = 0;          // fixed: imposed radial interference (m)
+  double settle_time = 0;           // settle: force control until this time (s)
+  double ring_mass = 0, ring_damp = 0;
+
+  // The ring's radius or centre moves under a force: it has a mass.
+  bool dynamic() const
+  {
+    return load == RaceLoad::Force || load == RaceLoad::Settle || load == RaceLoad::Radial;
+  }
+};
+
+// The arguments after "fix ID group bearing/race"; stops the run (error->all) with the
+// keyword and the expected form on anything wrong. `ntypes`: the atom types of the run.
+RaceSettings parse_race_settings(LAMMPS_NS::Error *error, int narg, char **arg, int ntypes);
+
+}  // namespace ohmdem
+
+#endif

@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// compute network/resistance: the SPICE netlist and VTK exports of the gathered network
+// (keywords netlist, vtk and every), checked on every process at the start of a run, written
+// by process 0. A `*` in a file name stands for the step; a VTK series gets a ParaView index
+// (.pvd) and, per written step, the particles and (when it moved) the bearing geometry.
+// Adapter code (LIGGGHTS types).
+#ifndef OHMDEM_STYLE_NETWORK_EXPORTS_H
+#define OHMDEM_STYLE_NETWORK_EXPORTS_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lmptype.h"
+#include "writers/vtk_series.h"
+#include "pointers.h"
+
+namespace LAMMPS_NS {
+
+class ContactSet;
+class GatheredNetworkPath;
+
+class NetworkExports : protected Pointers {
+ public:
+  // File patterns ("" for none) and the step period (0: every evaluation).
+  NetworkExports(LAMMPS *lmp, std::string netlist, std::string vtk, bigint every);
+  ~NetworkExports();
+  bool any() const { return !netlist_.empty() || !vtk_.empty(); }
+  bool draws() const { return !vtk_.empty(); }
+  // An export is written at this step: the compute evaluates the gathered network then.
+  bool due(bigint step) const { return any() && (every_ == 0 || step % every_ == 0); }
+  // At the start of a run, on every process: stops the run if a file cannot be written.
+  void check_files();
+  // Process 0, after the gathered network's evaluation on step `step` (nothing unless due).
+  void write(const GatheredNetworkPath &network, const ContactSet &contacts, double current);
+
+ private:
+  std::string write_particles(const GatheredNetworkPath &network, const std::string &path);
+  // "" without a race; rewritten only when it moved.
+  std::string write_bearing_geometry(const GatheredNetworkPath &network,
+                                     const ContactSet &contacts);
+
+  std::string netlist_, vtk_;  // a `*` stands for the step (vtk_series.h)
+  bigint every_ = 0;
+  std::unique_ptr<ohmdem::PvdIndex> pvd_;  // the .pvd of a VTK series
+  std::vector<double> geometry_drawn_;     // what the last bearing geometry file shows
+  std::string geometry_file_;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
