@@ -19,6 +19,7 @@
 #include <mpi.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "catalog/bearing_catalog.h"
 #include "comm.h"
@@ -96,7 +97,7 @@ void BearingCatalog::command(int narg, char **arg)
   } else {
     if (comm->me == 0) message = read_entry(dir, name, variables);
     broadcast(message, variables);
-    if (!message.empty()) error->all(FLERR, message.c_str());
+    if (!message.empty()) fail(message);
   }
 
   for (const auto &[var, value] : variables) {
@@ -121,9 +122,15 @@ std::string BearingCatalog::value_of(const std::string &word, const char *what)
   if (!value) {
     const std::string msg =
         std::string(kStyle) + ": no variable '" + variable + "' (" + word + " gives " + what + ")";
-    error->all(FLERR, msg.c_str());
+    fail(msg);
   }
   return value;
+}
+
+void BearingCatalog::fail(const std::string &message)
+{
+  error->all(FLERR, message.c_str());
+  std::abort();  // error->all does not return; this keeps the compiler informed
 }
 
 void BearingCatalog::broadcast(std::string &message, Variables &variables)

@@ -31,6 +31,7 @@ class BearingCatalog : protected Pointers {
  private:
   // WORD, or the value of the variable V when WORD is v_V.
   std::string value_of(const std::string &word, const char *what);
+  [[noreturn]] void fail(const std::string &message);
   using Variables = std::vector<std::pair<std::string, std::string> >;
   // Rank 0's answer for every rank: the variables to define, or an error message.
   void broadcast(std::string &message, Variables &variables);
