@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Registers the ohmdem styles in LIGGGHTS' style tables.
+// Registers the ohmdem styles in LIGGGHTS' style tables (fixes, computes, commands).
 //
 // LIGGGHTS 3.8 has no plugin loader and keeps its style maps (Modify::fix_map,
-// Modify::compute_map) private. Two mechanisms, both confined to this file:
-//  1. Access to the private maps through an explicit template instantiation of a
+// Modify::compute_map, Input::command_map) private or protected. Two mechanisms, both confined to
+// this file:
+//  1. Access to the maps through an explicit template instantiation of a
 //     member pointer: access checking does not apply to the names in an explicit
 //     instantiation ([temp.explicit]), so this is standard C++.
 //  2. A start-up hook: `clear` destroys Modify and builds a new one, then calls
@@ -20,6 +21,7 @@
 
 #include "compute.h"
 #include "fix.h"
+#include "input.h"
 #include "lammps.h"
 #include "modify.h"
 #include "ohmdem_style_list.h"
@@ -32,6 +34,8 @@ using FixCreator = Fix *(*)(LAMMPS *, int, char **);
 using ComputeCreator = Compute *(*)(LAMMPS *, int, int, char **);
 using FixMap = std::map<std::string, FixCreator>;
 using ComputeMap = std::map<std::string, ComputeCreator>;
+using CommandCreator = void (*)(LAMMPS *, int, char **);
+using CommandMap = std::map<std::string, CommandCreator>;
 
 template <typename Tag, typename Tag::type Member>
 struct PrivateAccess {
@@ -45,7 +49,12 @@ struct ComputeMapTag {
   using type = ComputeMap *Modify::*;
   friend type get(ComputeMapTag);
 };
+struct CommandMapTag {
+  using type = CommandMap *Input::*;
+  friend type get(CommandMapTag);
+};
 template struct PrivateAccess<FixMapTag, &Modify::fix_map>;
+template struct PrivateAccess<CommandMapTag, &Input::command_map>;
 template struct PrivateAccess<ComputeMapTag, &Modify::compute_map>;
 
 // LIGGGHTS' own creator idiom: the engine owns and deletes the object.
@@ -53,6 +62,12 @@ template <typename T>
 Fix *make_fix(LAMMPS *lmp, int narg, char **arg)
 {
   return new T(lmp, narg, arg);
+}
+template <typename T>
+void run_command(LAMMPS *lmp, int narg, char **arg)
+{
+  T command(lmp);
+  command.command(narg, arg);
 }
 template <typename T>
 Compute *make_compute(LAMMPS *lmp, int iarg, int narg, char **arg)
@@ -64,15 +79,21 @@ void register_styles(LAMMPS *lmp)
 {
   FixMap &fixes = *(lmp->modify->*get(FixMapTag{}));
   ComputeMap &computes = *(lmp->modify->*get(ComputeMapTag{}));
+  // Input (and its command map) outlives `clear`; registering again is harmless.
+  CommandMap &commands = *(lmp->input->*get(CommandMapTag{}));
   (void)fixes;
   (void)computes;
+  (void)commands;
 #define FIX_CLASS
 #define COMPUTE_CLASS
+#define COMMAND_CLASS
 #define FixStyle(key, Class) fixes[#key] = &make_fix<Class>;
 #define ComputeStyle(key, Class) computes[#key] = &make_compute<Class>;
+#define CommandStyle(key, Class) commands[#key] = &run_command<Class>;
 #include "ohmdem_style_list.h"
 #undef FixStyle
 #undef ComputeStyle
+#undef CommandStyle
 }
 
 void print_styles(FILE *out)
@@ -80,11 +101,14 @@ void print_styles(FILE *out)
   std::fprintf(out, "* ohmdem styles (this executable's additions):\n");
 #define FixStyle(key, Class) std::fprintf(out, "  fix %s\n", #key);
 #define ComputeStyle(key, Class) std::fprintf(out, "  compute %s\n", #key);
+#define CommandStyle(key, Class) std::fprintf(out, "  command %s\n", #key);
 #include "ohmdem_style_list.h"
 #undef FixStyle
 #undef ComputeStyle
+#undef CommandStyle
 #undef FIX_CLASS
 #undef COMPUTE_CLASS
+#undef COMMAND_CLASS
   std::fprintf(out, "\n");
 }
 

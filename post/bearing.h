@@ -5,8 +5,9 @@
 #define OHMDEM_POST_BEARING_H
 
 #include <string>
-#include <utility>
 #include <vector>
+
+#include "catalog/bearing_catalog.h"
 
 namespace ohmdem::post {
 
@@ -18,15 +19,10 @@ struct BearingGeometry {
   double contact_angle_deg = 0;  // contact angle beta (degrees)
 };
 
-// One file of the bearing catalog (inputs/bearings, doc/bearing_catalog.md): LIGGGHTS lines
-// "variable NAME index VALUE  # source", read by the decks (include) and by us. Required:
-// Nb, Db, Dext, Dinn, Rcext, Rcinn; the pitch diameter is (Dext + Dinn)/2, as in the deck.
-struct CatalogEntry {
-  std::string name, path;
-  int nb = 0;
-  double db = 0, dext = 0, dinn = 0, rc_ext = 0, rc_inn = 0;  // m
-  std::vector<std::pair<std::string, std::string>> variables;  // every line, in file order
-
+// One file of the bearing catalog (inputs/bearings, doc/bearing_catalog.md), read by
+// src_fix/lib/catalog, the reader the engine's command bearing_catalog uses too. The pitch
+// diameter is (Dext + Dinn)/2, as in the deck.
+struct CatalogEntry : catalog::CatalogEntry {
   BearingGeometry geometry() const;
 };
 

@@ -115,8 +115,9 @@ def deck_variables(deck, catalog):
     """The index-style variables of the deck and of the bearing catalog entries (and the deck's
     catalog_NAME copies): what a case resets to its default unless the sweep fixes it."""
     found = set()
-    if catalog == "auto":  # as in.bearing: $OHMDEM_CATALOG, else ./inputs/bearings
-        catalog = os.environ.get("OHMDEM_CATALOG", "inputs/bearings")
+    if catalog == "auto":  # as in.bearing: $OHMDEM_CATALOG, else the catalog of this tree
+        catalog = os.environ.get("OHMDEM_CATALOG") or os.path.join(
+            os.path.dirname(os.path.abspath(__file__)), "..", "bearings")
     files = [deck]
     if catalog and os.path.isdir(catalog):
         files += [os.path.join(catalog, f) for f in sorted(os.listdir(catalog))

@@ -6,6 +6,8 @@ Each test runs build/ohmdem on inputs/bearing_6208/in.bearing with -var bearing 
 the result against numbers we did not make: CWRU's published defect multiples and the lines that
 ohmdem-post finds in CWRU's measured records, Stribeck's load distribution, the closed-form
 parallel sum of the ball resistances. Geometry comes from the run's own run.json.
+The places and injection tests run the deck as a user would: from its own folder, the
+repository root and elsewhere with no OHMDEM_CATALOG, and with names a shell would run.
 Usage: catalog_tests.py TEST --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR
 """
 import argparse
@@ -233,6 +235,70 @@ def test_custom(r):
           f"cage 8 g, 0.1 mm play (differences: {bad})")
 
 
+def deck_env():
+    """The environment of a user who set nothing: no OHMDEM_CATALOG."""
+    env = dict(os.environ)
+    env.pop("OHMDEM_CATALOG", None)
+    return env
+
+
+def test_places(r):
+    # The deck finds its catalog by itself (relative to the executable: the build's source
+    # tree) from its own folder, as LIGGGHTS users run example decks, from the repository root
+    # and from anywhere else, with no -var catalog and no OHMDEM_CATALOG: the same run each time.
+    deck_dir = os.path.join(r.src, "inputs", "bearing_6208")
+    elsewhere = os.path.join(r.workdir, "elsewhere")
+    os.makedirs(elsewhere)
+    places = [("own folder", deck_dir, "in.bearing"),
+              ("repository root", r.src, os.path.join("inputs", "bearing_6208", "in.bearing")),
+              ("another folder", elsewhere, os.path.join(deck_dir, "in.bearing"))]
+    outputs = []
+    for what, cwd, deck in places:
+        out = os.path.join(r.workdir, "places_" + str(len(outputs)))
+        res = subprocess.run([r.exe, "-in", deck, "-log", "none", "-var", "out", out, "-var", "tend",
+                              "0.0005", "-var", "nout", "10"],
+                             cwd=cwd, env=deck_env(), capture_output=True, text=True)
+        ok = res.returncode == 0 and os.path.exists(os.path.join(out, "run.json"))
+        check(ok, f"{what}: ohmdem -in {deck} ran (exit {res.returncode})"
+              + ("" if ok else "\n" + res.stdout[-2000:] + res.stderr[-2000:]))
+        if ok:
+            outputs.append(out)
+    if len(outputs) != len(places):
+        return
+    meta = json.load(open(os.path.join(outputs[0], "run.json")))
+    check(meta["bearing"] == "6208" and meta["nb"] == 13, f"the default bearing ran: "
+          f"{meta['bearing']} with {meta['nb']} balls")
+    same = all(open(os.path.join(o, f), "rb").read() == open(os.path.join(outputs[0], f),
+                                                             "rb").read()
+               for o in outputs[1:] for f in ("signal.txt", "run.json"))
+    check(same, "signal.txt and run.json identical from the three places")
+
+
+def test_injection(r):
+    # A bearing name never reaches a shell: names a shell would run are refused by name (the
+    # message lists the known names) and create nothing, wherever the shell would have.
+    cwd = os.path.join(r.workdir, "cwd")
+    os.makedirs(cwd)
+    markers = ["INJECTED", "X", "Y"]
+    names = ["6208;touch INJECTED", "$(touch X)", "`touch Y`", "6208 && touch INJECTED",
+             "6208|touch X", "../bearings/6208"]
+    for name in names:
+        out = os.path.join(r.workdir, "inj")
+        res = subprocess.run([r.exe, "-in", r.deck, "-log", "none", "-var", "out", out,
+                              "-var", "tend", "1e-5", "-var", "bearing", name],
+                             cwd=cwd, env=deck_env(), capture_output=True)
+        text = (res.stdout + res.stderr).decode(errors="replace")
+        refused = (res.returncode != 0 and f"ERROR: bearing '{name}' is not a catalog name" in text
+                   and "Known bearings in " in text and "6208" in text)
+        check(refused, f"-var bearing {name!r} refused by name (exit {res.returncode})"
+              + ("" if refused else "\n" + text[-1500:]))
+    places = [cwd, r.workdir, os.path.join(r.workdir, "inj"), r.src,
+              os.path.join(r.src, "inputs", "bearing_6208"), os.path.join(r.src, "inputs", "bearings")]
+    made = [os.path.join(p, m) for p in places for m in markers
+            if os.path.exists(os.path.join(p, m))]
+    check(not made, f"no file created by the names ({made or 'none'})")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
@@ -249,6 +315,8 @@ def main():
             "radial": lambda: test_radial(r),
             "resistance": lambda: test_resistance(r),
             "custom": lambda: test_custom(r),
+            "places": lambda: test_places(r),
+            "injection": lambda: test_injection(r),
         }[a.test]()
     finish()
 

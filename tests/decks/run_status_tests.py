@@ -190,7 +190,6 @@ def main():
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
     a = p.parse_args()
-    os.environ.setdefault("OHMDEM_CATALOG", os.path.join(a.src, "inputs", "bearings"))
     with tempfile.TemporaryDirectory(prefix=f"run_status_{a.test}_") as work:
         globals()[f"test_{a.test}"](a, work)
     finish()

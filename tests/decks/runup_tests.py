@@ -27,7 +27,6 @@ def main():
     p.add_argument("--src", required=True)
     a = p.parse_args()
     deck = os.path.join(a.src, "inputs", "bearing_6208", "in.bearing")
-    os.environ.setdefault("OHMDEM_CATALOG", os.path.join(a.src, "inputs", "bearings"))
 
     profile = os.path.join(a.src, "inputs", "bearing_6208", "in.speed_profile")
 

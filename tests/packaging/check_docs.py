@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Every style page of doc/ has the sections of a LAMMPS/LIGGGHTS doc page, in order, the
-plain-text (doc/src/*.txt) syntax block, and says how it behaves under fix_modify (or
-compute_modify), across runs (start/stop) and during minimize; the keywords of the Markdown
-syntax list and of the plain-text block are the same (a keyword added to one only is named).
+"""Every style page of doc/ (fix_*.md, compute_*.md, command_*.md) has the sections of a
+LAMMPS/LIGGGHTS doc page, in order, the plain-text (doc/src/*.txt) syntax block, and says how a
+fix or compute behaves under fix_modify (or compute_modify), across runs (start/stop) and during
+minimize, and what a command leaves in restart files; the keywords of the Markdown syntax list
+and of the plain-text block are the same (a keyword added to one only is named).
 
     check_docs.py SOURCE_DIR
 """
@@ -33,7 +34,7 @@ def keyword_drift(markdown, block):
 def problems(path):
     text = open(path, encoding="utf-8").read()
     name = os.path.basename(path)
-    kind = "fix" if name.startswith("fix_") else "compute"
+    kind = name.split("_")[0]  # fix, compute or command
     found = re.findall(r"^## (.+?)\s*$", text, flags=re.M)
     out = []
     missing = [s for s in SECTIONS if s not in found]
@@ -49,17 +50,27 @@ def problems(path):
         b = block.group(1)
         style = re.search(r"^# (fix|compute) (\S+) command", text, flags=re.M)
         first = b.splitlines()[0] if b.strip() else ""
-        if not (style and first.startswith("%s ID group-ID %s" % (kind, style.group(2)))
-                and first.endswith(":pre")):
-            out.append("the plain-text block must start with '%s ID group-ID STYLE ... :pre'"
-                       % kind)
-        if "ID, group-ID are documented in" not in b or ":ulb,l" not in b or ":ule" not in b:
-            out.append("the plain-text block needs the argument list (:ulb,l ... :ule)")
+        if kind == "command":  # "STYLE args ... :pre", no ID or group
+            style = re.search(r"^# (\S+) command", text, flags=re.M)
+            if not (style and first.startswith(style.group(1) + " ") and first.endswith(":pre")):
+                out.append("the plain-text block must start with 'STYLE ... :pre'")
+            if ":ulb,l" not in b or ":ule" not in b:
+                out.append("the plain-text block needs the argument list (:ulb,l ... :ule)")
+        else:
+            if not (style and first.startswith("%s ID group-ID %s" % (kind, style.group(2)))
+                    and first.endswith(":pre")):
+                out.append("the plain-text block must start with '%s ID group-ID STYLE ... :pre'"
+                           % kind)
+            if "ID, group-ID are documented in" not in b or ":ulb,l" not in b or ":ule" not in b:
+                out.append("the plain-text block needs the argument list (:ulb,l ... :ule)")
         out += keyword_drift(syntax[:block.start()], b)
     restart = text.split("## Restart info")[-1].split("\n## Restrictions")[0]
     modify = "fix_modify" if kind == "fix" else "compute_modify"
-    for needle, what in [(modify, modify), ("`start` and `stop`", "run start/stop"),
-                         ("minimize", "minimize")]:
+    needles = [(modify, modify), ("`start` and `stop`", "run start/stop"),
+               ("minimize", "minimize")]
+    if kind == "command":
+        needles = [("restart file", "a restart file keeps")]
+    for needle, what in needles:
         if needle not in restart:
             out.append("Restart info does not say what %s does" % what)
     refs = text.split("## References")[-1] if "## References" in text else ""
@@ -73,7 +84,8 @@ def main():
         sys.stderr.write("usage: check_docs.py SOURCE_DIR\n")
         return 2
     pages = sorted(glob.glob(os.path.join(sys.argv[1], "doc", "fix_*.md")) +
-                   glob.glob(os.path.join(sys.argv[1], "doc", "compute_*.md")))
+                   glob.glob(os.path.join(sys.argv[1], "doc", "compute_*.md")) +
+                   glob.glob(os.path.join(sys.argv[1], "doc", "command_*.md")))
     if not pages:
         print("ERROR: no style page under %s/doc" % sys.argv[1])
         return 1

@@ -1,8 +1,9 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-or-later
 # cmake --install gives a working tree: install BUILD into a temporary prefix, then run the
-# bearing deck from there the two ways README "Install" documents (a short run) and the post
-# tool on its signal, away from the source tree.
+# bearing deck from there (a short run: from its own folder, the data folder and anywhere with
+# no environment variable, and with OHMDEM_CATALOG) and the post tool on its signal, away from
+# the source tree.
 #   install_test.sh BUILD_DIR WORK_DIR
 set -eu
 build=$1 work=$2
@@ -11,14 +12,14 @@ mkdir -p "$work"
 prefix=$work/prefix
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 share=$prefix/share/ohmdem/inputs
-for f in bin/ohmdem bin/ohmdem-post share/ohmdem/inputs/bearings/select.sh \
+for f in bin/ohmdem bin/ohmdem-post \
          share/ohmdem/inputs/bearing_6208/sweep_case.sh share/ohmdem/inputs/bearings/6208 \
          share/ohmdem/inputs/bearing_6208/in.bearing share/doc/ohmdem/LICENSE \
          share/doc/ohmdem/CITATION.cff share/doc/ohmdem/README.md \
          share/doc/ohmdem/fix_bearing_race.md share/doc/ohmdem/ohmdem-post.md; do
   [ -e "$prefix/$f" ] || { echo "ERROR: $f not installed"; exit 1; }
 done
-for f in bearings/select.sh bearing_6208/sweep_case.sh bearing_6208/sweep_progress.sh; do
+for f in bearing_6208/sweep_case.sh bearing_6208/sweep_progress.sh; do
   [ -x "$share/$f" ] || { echo "ERROR: $f installed without its execute bit"; exit 1; }
 done
 
@@ -30,15 +31,29 @@ finished() {  # finished DIR: the run wrote rows to signal.txt and ended with st
 }
 short="-var tend 2e-4 -var dt 1e-5 -screen none"
 
-# 1. from the installed data folder (the deck's default catalog: inputs/bearings under it)
+# 1. with no OHMDEM_CATALOG (the deck's command bearing_catalog finds the catalog installed
+#    beside the executable): from the deck's own folder, from the installed data folder and
+#    from anywhere; the three runs are the same run
+(cd "$share/bearing_6208" && env -u OHMDEM_CATALOG "$prefix/bin/ohmdem" -in in.bearing \
+  -var out "$work/run_own" -log "$work/run_own.log" $short)
+finished "$work/run_own"
 (cd "$prefix/share/ohmdem" &&
-  "$prefix/bin/ohmdem" -in inputs/bearing_6208/in.bearing -var out "$work/run_share" \
-    -log "$work/run_share.log" $short)
+  env -u OHMDEM_CATALOG "$prefix/bin/ohmdem" -in inputs/bearing_6208/in.bearing \
+    -var out "$work/run_share" -log "$work/run_share.log" $short)
 finished "$work/run_share"
+cd "$work"
+env -u OHMDEM_CATALOG "$prefix/bin/ohmdem" -in "$share/bearing_6208/in.bearing" -var out run_any \
+  -log run_any.log $short
+finished run_any
+for f in signal.txt run.json; do
+  cmp -s "$work/run_own/$f" "$work/run_share/$f" && cmp -s "$work/run_own/$f" run_any/$f ||
+    { echo "ERROR: $f differs between the three places"; exit 1; }
+done
+grep -q "bearing_catalog: bearing 6208 from $(realpath "$share/bearings")/6208" run_any.log ||
+  { echo "ERROR: the installed ohmdem did not read the installed catalog"; exit 1; }
 
 # 2. from anywhere, the catalog named by OHMDEM_CATALOG; a sweep case (resume 1) calls the
 #    installed sweep_case.sh through -var here
-cd "$work"
 OHMDEM_CATALOG=$share/bearings "$prefix/bin/ohmdem" -in "$share/bearing_6208/in.bearing" \
   -var out run_env -var here "$share/bearing_6208" -var resume 1 -log run_env.log $short
 finished run_env
