@@ -40,8 +40,8 @@ MPI_ENV = {"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1",
 
 
 def executable(name, env_var):
-    """$env_var if set; else the build tree's build/NAME, the install's PREFIX/bin/NAME, NAME on
-    PATH, in that order; build/NAME when none exists (the error then names it)."""
+    """$env_var if set; else PREFIX/bin/NAME in an install, build/NAME in the source tree, else
+    NAME on PATH; build/NAME when none exists (the failing command then names it)."""
     if os.environ.get(env_var):
         return os.environ[env_var]
     candidates = [os.path.join(BASE, "build", name)]
@@ -157,22 +157,24 @@ def deck_command(deck, args, partitions=1):
 
 
 def sweep_command(root, cases, values, log, partitions=1):
-    """The partition sweep in.sweep over a case table: ROOT/<case folder> per row."""
+    """The partition sweep in.sweep over a case table: ROOT/<case folder> per row. Run it in
+    ROOT (run(..., cwd=root)): the partitions share their case counter through a file in the
+    working folder (LIGGGHTS' uloop variable), which two sweeps in one folder would share."""
     args = ["-var", "here", DECK_DIR, "-var", "bearing_deck", BEARING_DECK, "-var", "root", root,
             "-var", "cases", cases]
     return deck_command(SWEEP_DECK, args + variables(values) + ["-log", log, "-screen", "none"],
                         partitions)
 
 
-def run(cmd, log=None, who="study", mpi=None):
-    """Runs cmd (its output to LOG when given); stops the study with the command on failure.
-    mpi: the root flags for mpirun (default: when cmd starts with mpirun)."""
+def run(cmd, log=None, who="study", mpi=None, cwd=None):
+    """Runs cmd (its output to LOG when given) in CWD; stops the study with the command on
+    failure. mpi: the root flags for mpirun (default: when cmd starts with mpirun)."""
     env = dict(os.environ, **MPI_ENV) if (mpi if mpi is not None else cmd[0] == "mpirun") else None
     if log:
         with open(log, "w") as f:
-            r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env)
+            r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env, cwd=cwd)
     else:
-        r = subprocess.run(cmd, env=env)
+        r = subprocess.run(cmd, env=env, cwd=cwd)
     if r.returncode != 0:
         sys.exit(f"{who}: failed ({r.returncode}): {' '.join(cmd)}"
                  + (f"; see {log}" if log else ""))

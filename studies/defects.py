@@ -59,7 +59,7 @@ def simulate(out, tend, partitions):
     common.run(common.sweep_command(fig15, cases, {"tend": tend, "defect": "inner",
                                                    "dstart": str(FROM)},
                                     os.path.join(fig15, "log.sweep"), partitions),
-               who="defects")
+               who="defects", cwd=fig15)
     for load in ("force", "fixed"):
         for s in SIZES:
             case_dir = os.path.join(fig15, f"load_{load}_size_{s}")

@@ -92,7 +92,7 @@ def simulate(out, sizes):
             sims[(defect, s)] = os.path.join(root, f"defect_{defect}_size_{s:g}_position_{position:g}")
     common.case_table(table, ["defect", "size", "position"], rows)
     cmd = common.sweep_command(root, table, DECK_VARS, os.path.join(root, "log.sweep"), 2)
-    common.run(cmd, os.path.join(root, "stdout.txt"), who="detectability")
+    common.run(cmd, os.path.join(root, "stdout.txt"), who="detectability", cwd=root)
     return sims
 
 

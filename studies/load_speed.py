@@ -108,7 +108,7 @@ def sweep_point(out, tag, tend, variables):
     common.case_table(table, ["load", "defect"], pairs)
     cmd = common.sweep_command(root, table, {"tend": repr(tend), **variables},
                                os.path.join(root, "log.sweep"))
-    common.run(cmd, os.path.join(root, "stdout.txt"), who="load_speed")
+    common.run(cmd, os.path.join(root, "stdout.txt"), who="load_speed", cwd=root)
     return {(l, d): os.path.join(root, f"load_{l}_defect_{d}") for l, d in pairs}
 
 
