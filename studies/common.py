@@ -99,6 +99,10 @@ class Bearing:
         """Inner-race defect frequency over the shaft frequency: Nb/2 (1 + d/D)."""
         return self.nb / 2 * (1 + self.db / self.pitch)
 
+    def bpfo_order(self):
+        """Outer-race defect frequency over the shaft frequency: Nb/2 (1 - d/D)."""
+        return self.nb / 2 * (1 - self.db / self.pitch)
+
     def cage_speed(self, omega):
         """Orbital speed of the balls for a fixed outer ring (rad/s): omega/2 (1 - d/D)."""
         return omega / 2 * (1 - self.db / self.pitch)

@@ -30,6 +30,8 @@ import subprocess
 
 import common
 
+BEARING = common.Bearing("6208")  # the deck's default bearing, from its catalog file
+SHAFT_HZ = 500 / (2 * math.pi)     # the study's inner ring speed, 500 rad/s
 CURRENT = common.deck_defaults()["I"]  # A, the deck's injected current: the instrument reads V = I R
 SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer
 T_FROM = 0.05          # s: after the sliding phase and the ring's settling under radial load
@@ -325,7 +327,8 @@ def answer(rows, g):
             "*\"Due to the limited sampling frequency of measuring devices, it will not be possible "
             "to identify defects with a small size.\"* Identification does not need the pulse "
             "resolved, only the defect lines below the instrument's Nyquist frequency: at 500 rad/s "
-            "BPFO is 410 Hz and BPFI 625 Hz"
+            f"BPFO is {BEARING.bpfo_order() * SHAFT_HZ:.0f} Hz and BPFI "
+            f"{BEARING.bpfi_order() * SHAFT_HZ:.0f} Hz"
             + (f"; at {', '.join(f'{r:g}' for r in not_analysable)} Hz no race defect can be "
                "analysed at all" if not_analysable else "")
             + (f"; at {', '.join(f'{r:g}' for r in unidentified_slow)} Hz the defects are "
@@ -342,7 +345,7 @@ def answer(rows, g):
             + " (electrical channel). The claim holds for sizing, not for detection or "
             "identification. The simulation itself samples at 1 MHz (dt = 1e-6 s): a "
             f"{smallest_size:g} deg inner defect is crossed in "
-            f"{smallest_size * math.pi / 180 / (500 - 198.02) * 1e6:.1f} us, so its size is "
+            f"{smallest_size * math.pi / 180 / (500 - BEARING.cage_speed(500)) * 1e6:.1f} us, so its size is "
             "not resolved even in the simulated signal.", ""]
     comparisons = []
     for defect in ("inner", "outer"):
