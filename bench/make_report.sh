@@ -3,8 +3,9 @@
 # Regenerates the study report, REPORT_DIR/report.md, with its figures: the healthy and
 # defective signals, the Fig. 13 / Fig. 15 counterparts, the validation numbers (from the test
 # suite), the detectability and the load/speed studies, and the speed tables (ours vs stock
-# LIGGGHTS, electrical cost, speed against error, partition sweep). Takes about 10 minutes on
-# 2 cores (DETECTABILITY=--full: the whole detectability grid, longer).
+# LIGGGHTS, electrical cost, speed against error, partition sweep). The studies are the
+# commands of studies/ (studies/README.md), the speed tables the benchmarks of bench/. Takes
+# about 10 minutes on 2 cores (DETECTABILITY=--full: the whole detectability grid, longer).
 #   bench/make_report.sh [REPORT_DIR]          (default: report; needs a build in build/)
 #   PARTS="load_speed detectability" bench/make_report.sh doc/report   (only those, again)
 set -euo pipefail
@@ -14,7 +15,7 @@ mkdir -p "$OUT"
 WORK=$(mktemp -d)      # the runs' signals (hundreds of MB): only figures and tables are kept
 trap 'rm -rf "$WORK"' EXIT
 cd "$ROOT"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+eval "$(/usr/bin/python3 studies/common.py --shell)"  # OHMDEM, POST, the MPI flags, ...
 
 # PARTS: which parts to run again (the others keep their logs and figures in REPORT_DIR):
 # any of defects load_speed detectability runup validation speed signal; default all.
@@ -23,13 +24,13 @@ want() { [[ "$PARTS" == *" $1 "* ]]; }
 
 if want defects; then
   echo "== defect study (Fig. 13, Fig. 15)"
-  inputs/bearing_6208/study_defects.sh "$WORK/study" 0.12 > "$OUT/study.log"
+  /usr/bin/python3 studies/defects.py "$WORK/study" 0.12 > "$OUT/study.log"
   mkdir -p "$OUT/study"
   cp "$WORK"/study/*.png "$WORK"/study/*.csv "$WORK"/study/study.md "$OUT/study/"
 fi
 if want load_speed; then
   echo "== load and speed study"
-  inputs/bearing_6208/study_load_speed.sh "$WORK/load_speed" > "$OUT/load_speed.log"
+  /usr/bin/python3 studies/load_speed.py "$WORK/load_speed" > "$OUT/load_speed.log"
   mkdir -p "$OUT/load_speed"
   cp "$WORK"/load_speed/*.png "$WORK"/load_speed/load_speed.csv "$WORK"/load_speed/load_speed.md \
      "$OUT/load_speed/"
@@ -38,7 +39,7 @@ if want detectability; then
   echo "== detectability study (${DETECTABILITY:---quick} grid; DETECTABILITY=--full for the whole grid)"
   det_args=()
   [ "${DETECTABILITY:---quick}" = "--quick" ] && det_args=(--quick)
-  inputs/bearing_6208/study_detectability.sh "${det_args[@]}" "$WORK/detectability" \
+  /usr/bin/python3 studies/detectability.py "${det_args[@]}" "$WORK/detectability" \
     > "$OUT/detectability.log"
   mkdir -p "$OUT/detectability"
   cp "$WORK"/detectability/*.png "$WORK"/detectability/detectability.csv \
@@ -46,7 +47,7 @@ if want detectability; then
 fi
 if want runup; then
   echo "== run-up study (order tracking)"
-  inputs/bearing_6208/study_runup.sh "$WORK/runup" > "$OUT/runup.log"
+  /usr/bin/python3 studies/runup.py "$WORK/runup" > "$OUT/runup.log"
   mkdir -p "$OUT/runup"
   cp "$WORK"/runup/*.png "$WORK"/runup/orders.csv "$WORK"/runup/runup.md "$OUT/runup/"
 fi

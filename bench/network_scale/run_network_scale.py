@@ -11,7 +11,7 @@ the same run without the compute, over the K + 1 evaluations: on a machine share
 jobs wall times stretch, CPU times do not), each rank's peak resident memory, and that of the
 same run without the compute (the engine's own memory). Usage:
 
-  bench/network_scale/run_network_scale.py --exe build/ohmdem [--cells 14 24 32] [--steps 3]
+  bench/network_scale/run_network_scale.py [--exe build/ohmdem] [--cells 14 24 32] [--steps 3]
       [--gathered-max 24] [--today]
 
 --gathered-max: the largest size also run with the gathered solve (every rank holds the
@@ -26,8 +26,10 @@ import subprocess
 import sys
 import tempfile
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-DECK = os.path.join(HERE, "..", "..", "inputs", "validation", "in.packing")
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "studies"))
+from common import INPUTS, MPI_ENV, OHMDEM  # noqa: E402  (studies/common.py)
+
+DECK = os.path.join(INPUTS, "validation", "in.packing")
 
 
 def run(exe, nprocs, wd, **var):
@@ -41,7 +43,7 @@ def run(exe, nprocs, wd, **var):
     for k, v in var.items():
         cmd += ["-var", k, str(v)]
     cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    env = dict(os.environ, **MPI_ENV)
     res = subprocess.run(cmd, capture_output=True, text=True, env=env)
     out = res.stdout + res.stderr
     if res.returncode != 0:
@@ -58,7 +60,7 @@ def run(exe, nprocs, wd, **var):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("--exe", required=True)
+    p.add_argument("--exe", default=OHMDEM, help="ohmdem [the build's or the install's]")
     p.add_argument("--cells", type=int, nargs="+", default=[14, 24, 32])
     p.add_argument("--steps", type=int, default=3)
     p.add_argument("--gathered-max", type=int, default=24)

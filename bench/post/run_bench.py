@@ -24,6 +24,9 @@ import numpy as np
 import scipy
 import scipy.signal
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "studies"))
+from common import BASE  # noqa: E402  (the source tree: studies/common.py)
+
 
 def spectrum(x, w, wsum):
     y = (x - x.mean()) * w
@@ -46,8 +49,7 @@ def best_of(f, repeats):
 
 
 def main():
-    here = os.path.dirname(os.path.abspath(__file__))
-    default_exe = os.path.join(here, "..", "..", "build", "bench", "bench_post")
+    default_exe = os.path.join(BASE, "build", "bench", "bench_post")
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("exe", nargs="?", default=default_exe)
     ap.add_argument("--samples", type=int, default=10_000_000)

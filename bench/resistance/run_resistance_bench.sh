@@ -9,8 +9,7 @@
 #   bench/resistance/run_resistance_bench.sh [STEPS] [ROUNDS]   (default 30000 = 30 ms, 5)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
-OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
+eval "$(/usr/bin/python3 "$ROOT/studies/common.py" --shell)"  # OHMDEM, POST, OHMDEM_DECKS, ...
 STEPS=${1:-30000}
 ROUNDS=${2:-5}
 TEND=$(/usr/bin/python3 -c "print($STEPS*1e-6)")
@@ -30,7 +29,7 @@ declare -A ARGS=(
 run() {
   local name=$1 tend=$2; shift 2
   # shellcheck disable=SC2086
-  "$@" "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$WORK/$name" \
+  "$@" "$OHMDEM" -in "$OHMDEM_DECKS/in.bearing" -var out "$WORK/$name" \
     -var tend "$tend" -var nout 1000 -log "$WORK/$name.log" -screen none ${ARGS[$name]}
 }
 

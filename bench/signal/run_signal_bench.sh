@@ -10,7 +10,7 @@
 #   bench/signal/run_signal_bench.sh [TEND] [REPS]       (defaults: 0.2 s simulated, 3)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
+eval "$(/usr/bin/python3 "$ROOT/studies/common.py" --shell)"  # OHMDEM, POST, OHMDEM_DECKS, ...
 TEND=${1:-0.2}
 REPS=${2:-3}
 WORK=$(mktemp -d)
@@ -18,7 +18,7 @@ trap 'rm -rf "$WORK"' EXIT
 
 loop_time() {  # loop_time NAME -var ...: prints the run's loop time (s)
   local name=$1; shift
-  "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$WORK/$name" -var tend "$TEND" \
+  "$OHMDEM" -in "$OHMDEM_DECKS/in.bearing" -var out "$WORK/$name" -var tend "$TEND" \
     -log "$WORK/$name.log" -screen none "$@"
   sed -n 's/^Loop time of \([0-9.e+-]*\).*/\1/p' "$WORK/$name.log" | tail -1
 }
@@ -36,7 +36,7 @@ if command -v valgrind > /dev/null; then
     set -- $mode
     fmt=txt; [[ ${3:-} == npy ]] && fmt=npy
     valgrind --tool=callgrind --callgrind-out-file="$WORK/cg" --toggle-collect='LAMMPS_NS::Verlet::run(int)' \
-      "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$WORK/cg_$2$fmt" -var tend 0.01 \
+      "$OHMDEM" -in "$OHMDEM_DECKS/in.bearing" -var out "$WORK/cg_$2$fmt" -var tend 0.01 \
       -var nout "$2" -var signal_format $fmt -log none -screen none > /dev/null 2>&1
     IR+="$(awk '/^summary:|^totals:/ {print $2; exit}' "$WORK/cg") "
   done

@@ -9,9 +9,7 @@
 #   bench/speed_error/run_speed_error.sh [OUT] [TEND]        (defaults: speed-error, 0.1 s)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
-OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
-POST=${POST:-$ROOT/build/ohmdem-post}
+eval "$(/usr/bin/python3 "$ROOT/studies/common.py" --shell)"  # OHMDEM, POST, OHMDEM_DECKS, ...
 OUT=$(realpath -m "${1:-speed-error}")
 TEND=${2:-0.1}
 mkdir -p "$OUT"
@@ -22,7 +20,7 @@ case_run() {
   local nout
   nout=$(/usr/bin/python3 -c "print(max(1, round(1e-5 / $dt)))")  # output at 100 kHz
   mkdir -p "$OUT/$name"
-  "$OHMDEM" -in "$ROOT/inputs/bearing_6208/in.bearing" -var out "$OUT/$name" -var tend "$TEND" \
+  "$OHMDEM" -in "$OHMDEM_DECKS/in.bearing" -var out "$OUT/$name" -var tend "$TEND" \
     -var dt "$dt" -var nout "$nout" -var Revery 1 -var defect inner -var size 1.0 \
     -log "$OUT/$name/log.liggghts" -screen none "$@"
   "$POST" diagnose --format json "$OUT/$name/signal.txt" > "$OUT/$name/diag.json"

@@ -11,13 +11,18 @@ step; the columns used are the first whose names start with 'time' and 'omega_ca
 t_slide: end of the sliding phase = first time from which the running mean of omega_cage
 over --window samples stays within --tol (relative) of the final value (mean of the last
 20 % of the samples). omega_cage: mean over the samples after t_slide. error: against
---theory (default 2 pi FTF of the SKF 6208 at 500 rad/s: 250 (1 - 12.6/60.6) rad/s).
+--theory (default 2 pi FTF of the SKF 6208 at 500 rad/s: 250 (1 - d/D) rad/s, d and D from
+its catalog file, studies/common.py).
 Exit 1 (with t_slide 'none') when the run never settles.
 """
 import argparse
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "studies"))
+import common  # noqa: E402  (the catalog's 6208)
 
 
 def read_columns(path):
@@ -50,7 +55,7 @@ def read_columns(path):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('file')
-    ap.add_argument('--theory', type=float, default=250.0 * (1.0 - 12.6 / 60.6))
+    ap.add_argument('--theory', type=float, default=common.Bearing('6208').cage_speed(500.0))
     ap.add_argument('--tol', type=float, default=0.01)
     ap.add_argument('--window', type=int, default=10)
     a = ap.parse_args()

@@ -18,10 +18,9 @@ set -euo pipefail
 
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ROOT=$(cd "$HERE/../.." && pwd)
-export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
 PY=/usr/bin/python3
+eval "$($PY "$ROOT/studies/common.py" --shell)"  # OHMDEM, POST, OHMDEM_DECKS, ...
 LIGGGHTS=${LIGGGHTS:-liggghts}
-OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
 STEPS=30000
 OUT=$PWD/bench_stock_out
 while getopts "n:o:h" opt; do
@@ -38,16 +37,21 @@ mkdir -p "$OUT"
 OUT=$(cd "$OUT" && pwd)
 DT=1e-6
 TEND=$($PY -c "print($STEPS*$DT)")
-# 2 pi FTF at 500 rad/s: fr/2 (1 - d/D) with fr = 500/(2 pi), d = 12.6 mm, D = 60.6 mm
-THEORY=$($PY -c "print(250.0*(1.0-12.6/60.6))")
+# 2 pi FTF at 500 rad/s: 500/2 (1 - d/D), d and D from the catalog's 6208
+THEORY=$($PY "$ROOT/studies/common.py" --cage-speed 500)
+NB=$($PY "$ROOT/studies/common.py" --bearing nb)
 
-# Race meshes for the stock mesh scenes: bands 2 ball diameters high, faceting error <= 0.05 um
+# Race meshes for the stock mesh scenes (the catalog's 6208 races): bands 2 ball diameters high,
+# faceting error <= 0.05 um
+RIN=$($PY -c "print($($PY "$ROOT/studies/common.py" --bearing dinn) / 2)")
+REXT=$($PY -c "print($($PY "$ROOT/studies/common.py" --bearing dext) / 2)")
+BAND=$($PY -c "print(2 * $($PY "$ROOT/studies/common.py" --bearing db))")
 MESHES=$OUT/meshes
 if [ ! -s "$MESHES/inner.stl" ] || [ ! -s "$MESHES/outer.stl" ]; then
   mkdir -p "$MESHES"
-  $PY "$HERE/make_ring_stl.py" --radius 0.024 --height 0.0252 --max-error 5e-8 --normal out \
+  $PY "$HERE/make_ring_stl.py" --radius "$RIN" --height "$BAND" --max-error 5e-8 --normal out \
     --name inner -o "$MESHES/inner.stl"
-  $PY "$HERE/make_ring_stl.py" --radius 0.0366 --height 0.0252 --max-error 5e-8 --normal in \
+  $PY "$HERE/make_ring_stl.py" --radius "$REXT" --height "$BAND" --max-error 5e-8 --normal in \
     --name outer -o "$MESHES/outer.stl"
 fi
 
@@ -88,11 +92,11 @@ scene mesh_move    "$LIGGGHTS" "$HERE/in.stock_mesh" cage.txt -var steps "$STEPS
                    -var meshdir "$MESHES" -var motion move
 scene mesh_surface "$LIGGGHTS" "$HERE/in.stock_mesh" cage.txt -var steps "$STEPS" \
                    -var meshdir "$MESHES" -var motion surface
-scene ohmdem       "$OHMDEM" "$ROOT/inputs/bearing_6208/in.bearing" signal.txt -var tend "$TEND" -var nout 100
+scene ohmdem       "$OHMDEM" "$OHMDEM_DECKS/in.bearing" signal.txt -var tend "$TEND" -var nout 100
 
 # ---- summary -----------------------------------------------------------------------------
 echo
-echo "SKF 6208, 13 balls, inner race 500 rad/s, dt = $DT s; cage speed theory 2 pi FTF =" \
+echo "SKF 6208, $NB balls, inner race 500 rad/s, dt = $DT s; cage speed theory 2 pi FTF =" \
      "$(printf %.4f "$THEORY") rad/s"
 printf '%-14s %8s %12s %12s %11s %13s %10s\n' scene steps "wall s/step" \
        "x ${ROWS[0]%%|*}" "t_slide ms" "w_cage rad/s" "error %"

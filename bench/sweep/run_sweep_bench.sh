@@ -5,13 +5,11 @@
 #   bench/sweep/run_sweep_bench.sh [TEND]      (default 0.05 s simulated per case)
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-export OHMDEM_CATALOG=${OHMDEM_CATALOG:-$ROOT/inputs/bearings}  # in.bearing finds its bearing there
-OHMDEM=${OHMDEM:-$ROOT/build/ohmdem}
+eval "$(/usr/bin/python3 "$ROOT/studies/common.py" --shell)"  # OHMDEM, POST, OHMDEM_DECKS, ...
 TEND=${1:-0.05}
-DECK=$ROOT/inputs/bearing_6208
+DECK=$OHMDEM_DECKS
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 args=(-in "$DECK/in.sweep" -var here "$DECK" -var bearing_deck "$DECK/in.bearing" -var tend "$TEND")
 cd "$WORK"
 t0=$(date +%s.%N)

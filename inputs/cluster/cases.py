@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The case table of a sweep (doc/case_table.md): a CSV file, one column per deck variable, one
 row per case. Read by inputs/bearing_6208/in.sweep (partitions), inputs/cluster/sweep_slurm.sh
-(job array) and the study scripts; stdlib only.
+(job array) and the study commands (studies/); stdlib only.
 
   cases.py grid NAME=V1,V2,... [NAME=...] [--output FILE]   every combination, one row each
   cases.py check TABLE                          validate; print the number of cases

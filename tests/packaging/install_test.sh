@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # cmake --install gives a working tree: install BUILD into a temporary prefix, then run the
 # bearing deck from there (a short run: from its own folder, the data folder and anywhere with
-# no environment variable, and with OHMDEM_CATALOG) and the post tool on its signal, away from
-# the source tree.
+# no environment variable, and with OHMDEM_CATALOG), the post tool on its signal and a study
+# command (studies/runup.py), away from the source tree.
 #   install_test.sh BUILD_DIR WORK_DIR
 set -eu
 build=$1 work=$2
@@ -73,4 +73,22 @@ if env -u OHMDEM_CATALOG "$prefix/bin/ohmdem-post" frequencies --bearing nosuch 
 fi
 grep -q "catalog $(realpath "$share/bearings")" post_err.txt ||
   { echo "ERROR: the installed ohmdem-post does not read the installed catalog:"; cat post_err.txt; exit 1; }
+# 4. a study command from the install, with no variable set: it finds PREFIX/bin/ohmdem,
+#    PREFIX/bin/ohmdem-post and the installed decks and catalog by itself (the run-up study:
+#    the quickest, one run of 0.35 s simulated)
+studies=$prefix/share/ohmdem/studies
+for f in common.py defects.py detectability.py load_speed.py runup.py README.md; do
+  [ -e "$studies/$f" ] || { echo "ERROR: studies/$f not installed"; exit 1; }
+done
+settings=$(env -u OHMDEM -u POST -u OHMDEM_CATALOG /usr/bin/python3 "$studies/common.py" --shell)
+for want in "OHMDEM=$prefix/bin/ohmdem" "POST=$prefix/bin/ohmdem-post" \
+            "OHMDEM_CATALOG=$share/bearings"; do
+  echo "$settings" | grep -qxF "export $want" ||
+    { echo "ERROR: the installed studies do not use $want:"; echo "$settings"; exit 1; }
+done
+env -u OHMDEM -u POST -u OHMDEM_CATALOG /usr/bin/python3 "$studies/runup.py" study_runup \
+  >study_runup.out 2>&1 || { echo "ERROR: the installed studies/runup.py failed:"; tail -5 study_runup.out; exit 1; }
+grep -q 'reads \*\*inner\*\*' study_runup/runup.md ||
+  { echo "ERROR: the installed run-up study did not identify the inner defect"; exit 1; }
+finished study_runup
 echo "install test: passed"

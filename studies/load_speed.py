@@ -3,7 +3,9 @@
 """The load and speed study the paper announced (Machado et al. 2014, conclusion): statistical
 indicators of R(t) (RMS, kurtosis, crest, peak) and the diagnosis against the load F and the
 inner ring speed, healthy and with a 1 deg inner-race defect, outer ring under force control
-(the paper's) and held (fixed). Run through study_load_speed.sh; writes into OUT:
+(the paper's) and held (fixed).
+  studies/load_speed.py [--quick] [--jobs N] [--report-only] OUT
+Writes into OUT:
   load_speed.csv   one row per run (operating point, load mode, defect, indicators, diagnosis,
                    healthy R against the closed form of equal load sharing)
   load_speed.md    the tables, the inner-contact speed limit, the figures and what they show
@@ -17,17 +19,15 @@ import os
 import subprocess
 import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-OHMDEM = os.environ.get("OHMDEM", os.path.join(ROOT, "build", "ohmdem"))
-POST = os.environ.get("POST", os.path.join(ROOT, "build", "ohmdem-post"))
-# in.bearing finds the bearing catalog through OHMDEM_CATALOG when run from another folder.
-os.environ.setdefault("OHMDEM_CATALOG", os.path.join(ROOT, "inputs", "bearings"))
+import common
 
-# The deck's defaults (in.bearing: Table 1 of the paper and the deck's stated choices).
-NB, DB, DEXT, DINN = 13, 0.0126, 0.0732, 0.048
-RC_INN, RC_EXT = 0.00655, 0.00665
-E, NU, RHO, GAMMA = 2.0e11, 0.3, 7800.0, 5.88e7
+# The bearing from its catalog file (inputs/bearings/6208: Table 1 of the paper) and the deck's
+# material defaults (in.bearing).
+BEARING = common.Bearing("6208")
+NB, DB, DEXT, DINN = BEARING.nb, BEARING.db, BEARING.dext, BEARING.dinn
+RC_INN, RC_EXT = BEARING.rcinn, BEARING.rcext
+_DECK = common.deck_defaults()
+E, NU, RHO, GAMMA = _DECK["E"], _DECK["nu"], _DECK["rho"], _DECK["gamma"]
 DP = (DEXT + DINN) / 2
 RP = DP / 2
 RB = DB / 2
@@ -87,21 +87,13 @@ def closed_form_r(force, omega):
     return 4 * v / (GAMMA * s_in * s_out) / NB
 
 
-def run(cmd, log):
-    with open(log, "w") as f:
-        r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT)
-    if r.returncode != 0:
-        sys.exit(f"study_load_speed: failed ({r.returncode}): {' '.join(cmd)}; see {log}")
-
-
 def simulate(out, name, tend, variables):
     folder = os.path.join(out, name)
     os.makedirs(folder, exist_ok=True)
-    cmd = [OHMDEM, "-in", os.path.join(HERE, "in.bearing"), "-var", "out", folder,
-           "-var", "tend", repr(tend), "-log", os.path.join(folder, "log.liggghts"), "-screen", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    run(cmd, os.path.join(folder, "stdout.txt"))
+    cmd = common.deck_command(common.BEARING_DECK, [
+        "-var", "out", folder, "-var", "tend", repr(tend), "-log",
+        os.path.join(folder, "log.liggghts"), "-screen", "none"] + common.variables(variables))
+    common.run(cmd, os.path.join(folder, "stdout.txt"), who="load_speed")
     return folder
 
 
@@ -113,15 +105,10 @@ def sweep_point(out, tag, tend, variables):
     os.makedirs(root, exist_ok=True)
     table = os.path.join(root, "cases.csv")
     pairs = [(load, defect) for load in ("force", "fixed") for defect in ("none", "inner")]
-    with open(table, "w") as f:
-        f.write("load,defect\n" + "".join(f"{l},{d}\n" for l, d in pairs))
-    cmd = [OHMDEM, "-in", os.path.join(HERE, "in.sweep"), "-var", "here", HERE,
-           "-var", "bearing_deck", os.path.join(HERE, "in.bearing"), "-var", "root", root,
-           "-var", "cases", table, "-var", "tend", repr(tend),
-           "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
-    for k, v in variables.items():
-        cmd += ["-var", k, str(v)]
-    run(cmd, os.path.join(root, "stdout.txt"))
+    common.case_table(table, ["load", "defect"], pairs)
+    cmd = common.sweep_command(root, table, {"tend": repr(tend), **variables},
+                               os.path.join(root, "log.sweep"))
+    common.run(cmd, os.path.join(root, "stdout.txt"), who="load_speed", cwd=root)
     return {(l, d): os.path.join(root, f"load_{l}_defect_{d}") for l, d in pairs}
 
 
@@ -166,10 +153,7 @@ ROUND_OFF = 1e-9
 
 
 def post_json(args):
-    r = subprocess.run([POST] + args + ["--format", "json"], capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.exit(f"study_load_speed: ohmdem-post {' '.join(args)} failed: {r.stderr.strip()}")
-    return json.loads(r.stdout)
+    return json.loads(common.post(args + ["--format", "json"], who="load_speed").stdout)
 
 
 def operating_points(quick):
@@ -248,13 +232,13 @@ def write_outputs(out, rows, quick):
             for ys, what in (("kurtosis", "kurtosis"), ("crest_ac,score", "crest (mean removed), score"),
                              ("rms_ohm,peak_ohm", "RMS, peak")):
                 png = os.path.join(out, f"{sweep}_{load}_{ys.split(',')[0]}.png")
-                subprocess.run([POST, "plot", "--kind", "indicators", "--x", x, "--y", ys,
+                subprocess.run([common.POST, "plot", "--kind", "indicators", "--x", x, "--y", ys,
                                 "--where", f"{fixed},load={load},defect=inner",
                                 "--title", f"1 deg inner defect, ring {load}: {what} vs {x}",
                                 "--output", png, os.path.join(out, "load_speed.csv")], check=True)
     w_lim = {f: omega_limit(f) for f in sorted({r["F_N"] for r in rows})}
     lines = ["# Load and speed study, SKF 6208 (ohmdem)", "",
-             f"Regenerated by `inputs/bearing_6208/study_load_speed.sh {'--quick ' if quick else ''}OUT`. "
+             f"Regenerated by `studies/load_speed.py {'--quick ' if quick else ''}OUT`. "
              "Indicators of R over a window of whole shaft revolutions after the sliding phase "
              "(found per operating point from a pilot run: the balls orbit at the kinematic cage "
              "speed within 1e-3); the defect (1 deg, inner race) appears 2 ms after that, the held "
@@ -372,7 +356,7 @@ def main():
     points = operating_points(a.quick)
     for f, w in points:
         if w >= omega_limit(f):
-            sys.exit(f"study_load_speed: omega {w} is beyond the inner-contact limit {omega_limit(f):.0f} "
+            sys.exit(f"load_speed: omega {w} is beyond the inner-contact limit {omega_limit(f):.0f} "
                      f"rad/s of F = {f} N")
     revolutions = 8 if a.quick else 16
     with cf.ThreadPoolExecutor(a.jobs) as ex:

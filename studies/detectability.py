@@ -12,7 +12,9 @@ the electrical one (R, measured as the voltage I·R) and the vibration one (the 
 acceleration along the load, through an accelerometer). Every channel is acquired by
 `ohmdem-post acquire` for each instrument (sampling rate with its anti-alias filter, noise
 level, ADC bits) and diagnosed by `ohmdem-post diagnose` against the healthy run acquired by the
-same instrument (--baseline). Writes into OUT:
+same instrument (--baseline).
+  studies/detectability.py [--quick] [--jobs N] [--report-only] OUT
+Writes into OUT:
   detectability.csv  one row per case: size_deg, defect, channel, rate_hz, bits, noise, diagnosis,
                      score, detected, identified, size_est_deg (the pulse-width size estimate of
                      an identified race defect), note (why a case could not be analysed)
@@ -25,16 +27,12 @@ import json
 import math
 import os
 import subprocess
-import sys
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
-OHMDEM = os.environ.get("OHMDEM", os.path.join(ROOT, "build", "ohmdem"))
-POST = os.environ.get("POST", os.path.join(ROOT, "build", "ohmdem-post"))
-# in.bearing finds the bearing catalog through OHMDEM_CATALOG when run from another folder.
-os.environ.setdefault("OHMDEM_CATALOG", os.path.join(ROOT, "inputs", "bearings"))
+import common
 
-CURRENT = 0.1          # A, the deck's injected current: the instrument reads V = I R
+BEARING = common.Bearing("6208")  # the deck's default bearing, from its catalog file
+SHAFT_HZ = 500 / (2 * math.pi)     # the study's inner ring speed, 500 rad/s
+CURRENT = common.deck_defaults()["I"]  # A, the deck's injected current: the instrument reads V = I R
 SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer
 T_FROM = 0.05          # s: after the sliding phase and the ring's settling under radial load
 WINDOW = 0.5           # s analysed (40 shaft revolutions at 500 rad/s); --full: 1 s
@@ -66,13 +64,6 @@ def grid(quick):
             "noise": ["low", "mid", "high"], "bits": [12, 16]}
 
 
-def run(cmd, log, env=None):
-    with open(log, "w") as f:
-        r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env)
-    if r.returncode != 0:
-        sys.exit(f"study_detectability: failed ({r.returncode}): {' '.join(cmd)}; see {log}")
-
-
 DECK_VARS = {"load": "radial", "tend": T_FROM + WINDOW + 0.001, "tslide": T_FROM}
 # The radial load pushes the outer ring along -y: the balls carry it at the top, +y = 90 deg.
 OUTER_POSITION = 90.0
@@ -86,14 +77,11 @@ def simulate(out, sizes):
     healthy = os.path.join(out, "sim", "healthy")
     if not os.path.exists(os.path.join(healthy, "run.json")):
         os.makedirs(healthy, exist_ok=True)
-        cmd = [OHMDEM, "-in", os.path.join(HERE, "in.bearing"), "-var", "out", healthy,
-               "-log", os.path.join(healthy, "log.liggghts"), "-screen", "none"]
-        for k, v in DECK_VARS.items():
-            cmd += ["-var", k, str(v)]
-        run(cmd, os.path.join(healthy, "stdout.txt"))
+        cmd = common.deck_command(common.BEARING_DECK, [
+            "-var", "out", healthy, "-log", os.path.join(healthy, "log.liggghts"),
+            "-screen", "none"] + common.variables(DECK_VARS))
+        common.run(cmd, os.path.join(healthy, "stdout.txt"), who="detectability")
     sims[("none", 0.0)] = healthy
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_rmaps_base_oversubscribe="1")
     root = os.path.join(out, "sim", "defects")
     os.makedirs(root, exist_ok=True)
     table = os.path.join(out, "sim", "defect_cases.csv")
@@ -102,25 +90,16 @@ def simulate(out, sizes):
         # the outer pit in the middle of the load zone (+y), as in test rigs
         position = OUTER_POSITION if defect == "outer" else 0.0
         for s in sizes:
-            rows.append(f"{defect},{s:g},{position:g}")
+            rows.append([defect, f"{s:g}", f"{position:g}"])
             sims[(defect, s)] = os.path.join(root, f"defect_{defect}_size_{s:g}_position_{position:g}")
-    with open(table, "w") as f:
-        f.write("defect,size,position\n" + "\n".join(rows) + "\n")
-    cmd = ["mpirun", "-np", "2", OHMDEM, "-partition", "2x1", "-in", os.path.join(HERE, "in.sweep"),
-           "-var", "here", HERE, "-var", "bearing_deck", os.path.join(HERE, "in.bearing"),
-           "-var", "root", root, "-var", "cases", table,
-           "-log", os.path.join(root, "log.sweep"), "-screen", "none"]
-    for k, v in DECK_VARS.items():
-        cmd += ["-var", k, str(v)]
-    run(cmd, os.path.join(root, "stdout.txt"), env)
+    common.case_table(table, ["defect", "size", "position"], rows)
+    cmd = common.sweep_command(root, table, DECK_VARS, os.path.join(root, "log.sweep"), 2)
+    common.run(cmd, os.path.join(root, "stdout.txt"), who="detectability", cwd=root)
     return sims
 
 
 def post(args, allow_fail=False):
-    r = subprocess.run([POST] + args, capture_output=True, text=True)
-    if r.returncode != 0 and not allow_fail:
-        sys.exit(f"study_detectability: ohmdem-post {' '.join(args)} failed: {r.stderr.strip()}")
-    return r
+    return common.post(args, who="detectability", allow_fail=allow_fail)
 
 
 def acquire(sim, channel, rate, noise, bits, seed, dest):
@@ -243,7 +222,7 @@ def write_report(out, rows, g, quick, pngs):
     healthy = [r for r in rows if r["defect"] == "none"]
     false_alarms = sum(r["detected"] for r in healthy)
     lines = ["# Detectability study, SKF 6208 (ohmdem)", "",
-             f"Regenerated by `inputs/bearing_6208/study_detectability.sh {'--quick ' if quick else ''}OUT`. "
+             f"Regenerated by `studies/detectability.py {'--quick ' if quick else ''}OUT`. "
              f"500 rad/s, radial load 320 N on a free outer ring (load zone at the top), defects "
              f"from t = 0 (outer: centred in the load zone, {OUTER_POSITION:g} deg), "
              f"analysis window {T_FROM:g}-{T_FROM + WINDOW:g} s ({WINDOW:g} s, "
@@ -348,7 +327,8 @@ def answer(rows, g):
             "*\"Due to the limited sampling frequency of measuring devices, it will not be possible "
             "to identify defects with a small size.\"* Identification does not need the pulse "
             "resolved, only the defect lines below the instrument's Nyquist frequency: at 500 rad/s "
-            "BPFO is 410 Hz and BPFI 625 Hz"
+            f"BPFO is {BEARING.bpfo_order() * SHAFT_HZ:.0f} Hz and BPFI "
+            f"{BEARING.bpfi_order() * SHAFT_HZ:.0f} Hz"
             + (f"; at {', '.join(f'{r:g}' for r in not_analysable)} Hz no race defect can be "
                "analysed at all" if not_analysable else "")
             + (f"; at {', '.join(f'{r:g}' for r in unidentified_slow)} Hz the defects are "
@@ -365,7 +345,7 @@ def answer(rows, g):
             + " (electrical channel). The claim holds for sizing, not for detection or "
             "identification. The simulation itself samples at 1 MHz (dt = 1e-6 s): a "
             f"{smallest_size:g} deg inner defect is crossed in "
-            f"{smallest_size * math.pi / 180 / (500 - 198.02) * 1e6:.1f} us, so its size is "
+            f"{smallest_size * math.pi / 180 / (500 - BEARING.cage_speed(500)) * 1e6:.1f} us, so its size is "
             "not resolved even in the simulated signal.", ""]
     comparisons = []
     for defect in ("inner", "outer"):
