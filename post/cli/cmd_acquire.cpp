@@ -4,12 +4,12 @@
 #include <cmath>
 #include <iostream>
 
-#include "../acquire.h"
-#include "../error.h"
-#include "../json.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/acquire.h"
+#include "io/json.h"
 
 namespace ohmdem {
 const char *version();

@@ -8,14 +8,14 @@
 #include <map>
 #include <set>
 
-#include "../collect.h"
-#include "../diagnose.h"
-#include "../error.h"
-#include "../read_table.h"
-#include "../stats.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
+#include "bearing/diagnose.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/stats.h"
+#include "io/read_table.h"
+#include "io/run_folders.h"
 
 namespace ohmdem::post::cli {
 

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <iostream>
 
-#include "../constants.h"
-#include "../diagnose.h"
-#include "../error.h"
-#include "../order_diagnose.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
-#include "shaft_angle.h"
+#include "bearing/diagnose.h"
+#include "bearing/order_diagnose.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/shaft_angle.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
 
 namespace ohmdem::post::cli {
 
@@ -241,20 +241,21 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
 
 int run_diagnose(const std::vector<std::string> &argv)
 {
-  Args a("diagnose", "[options] FILE...",
-         "Detection, then identification. Detection tests whether the record is unlike a\n"
-         "healthy one: kurtosis, crest factor and the spectral kurtosis of the envelope band\n"
-         "against the Gaussian law (records with a noise floor), and with --baseline the RMS,\n"
-         "kurtosis, crest and band energy against a healthy record's window-to-window scatter;\n"
-         "each test at the false-alarm probability --false-alarm. Identification finds the peaks\n"
-         "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
-         "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
-         "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
-         "may be off by --tolerance (slip). The defect is the family scoring >= --min-score\n"
-         "(inner, outer, ball, cage), else 'unidentified' if detection fired (a fault of unknown\n"
-         "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
-         "estimated from the pulse widths of a level signal such as R(t).\n"
-         "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
+  Args a(
+      "diagnose", "[options] FILE...",
+      "Detection, then identification. Detection tests whether the record is unlike a\n"
+      "healthy one: kurtosis, crest factor and the spectral kurtosis of the envelope band\n"
+      "against the Gaussian law (records with a noise floor), and with --baseline the RMS,\n"
+      "kurtosis, crest and band energy against a healthy record's window-to-window scatter;\n"
+      "each test at the false-alarm probability --false-alarm. Identification finds the peaks\n"
+      "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
+      "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
+      "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
+      "may be off by --tolerance (slip). The defect is the family scoring >= --min-score\n"
+      "(inner, outer, ball, cage), else 'unidentified' if detection fired (a fault of unknown\n"
+      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
+      "estimated from the pulse widths of a level signal such as R(t).\n"
+      "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);
   add_shaft_angle_options(a);
@@ -313,8 +314,9 @@ int run_diagnose(const std::vector<std::string> &argv)
   }
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
   if (in_orders && o.baseline)
-    throw Error("diagnose: --baseline is not supported when the speed varies (the record is "
-                "diagnosed in the angle domain); give a record at constant speed");
+    throw Error(
+        "diagnose: --baseline is not supported when the speed varies (the record is "
+        "diagnosed in the angle domain); give a record at constant speed");
   const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";

@@ -6,17 +6,17 @@
 #include <iostream>
 #include <limits>
 
-#include "../constants.h"
-#include "../defect_lines.h"
-#include "../envelope.h"
-#include "../error.h"
-#include "../order_tracking.h"
-#include "../peaks.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
-#include "shaft_angle.h"
-#include "spectrum_options.h"
+#include "bearing/defect_lines.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/shaft_angle.h"
+#include "cli/spectrum_options.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/envelope.h"
+#include "dsp/order_tracking.h"
+#include "dsp/peaks.h"
 
 namespace ohmdem::post::cli {
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "commands.h"
+#include "cli/commands.h"
 
 #include <cstring>
 #include <iostream>
 #include <new>
 
-#include "../error.h"
+#include "core/error.h"
 
 namespace ohmdem {
 const char *version();

@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "common.h"
+#include "cli/common.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
-#include "../constants.h"
-#include "../error.h"
-#include "../read_log.h"
-#include "../read_mat.h"
-#include "../text_scan.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "io/read_log.h"
+#include "io/read_mat.h"
 
 namespace ohmdem::post::cli {
 
@@ -60,8 +60,7 @@ InputOptions input_options(const Args &a, const std::string &rate_option)
   o.dt = a.has("--dt") ? a.number_in("--dt", 0, Range::above(0), "a step", "s") : 0;
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
-    if (a.get("--log") == "-" &&
-        std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
+    if (a.get("--log") == "-" && std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
       throw Error("standard input ('-') can be read only once: give --log a file");
     o.dt = log_timestep(a.get("--log"));
   }

@@ -9,12 +9,12 @@
 #include <ostream>
 #include <string>
 
-#include "../bearing.h"
-#include "../envelope.h"
-#include "../load_signal.h"
-#include "../report.h"
-#include "../run_metadata.h"
-#include "args.h"
+#include "bearing/bearing.h"
+#include "cli/args.h"
+#include "dsp/envelope.h"
+#include "io/load_signal.h"
+#include "io/run_metadata.h"
+#include "report/report.h"
 
 namespace ohmdem::post::cli {
 

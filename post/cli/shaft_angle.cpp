@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "shaft_angle.h"
+#include "cli/shaft_angle.h"
 
 #include <cmath>
 
-#include "../error.h"
-#include "../load_signal.h"
-#include "common.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "io/load_signal.h"
 
 namespace ohmdem::post::cli {
 

@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <string>
 
-#include "acquire.h"
-#include "butterworth.h"
-#include "error.h"
-#include "spectrum.h"
+#include "core/error.h"
+#include "dsp/acquire.h"
+#include "dsp/butterworth.h"
+#include "dsp/spectrum.h"
 #include "test_util.h"
 
 namespace ohmdem::post {

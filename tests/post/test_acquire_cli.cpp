@@ -10,7 +10,7 @@
 #include <fstream>
 #include <memory>
 
-#include "json.h"
+#include "io/json.h"
 #include "synth.h"
 #include "test_util.h"
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "cli/args.h"
-#include "error.h"
+#include "core/error.h"
 
 namespace ohmdem::post::cli {
 namespace {

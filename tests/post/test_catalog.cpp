@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "bearing.h"
-#include "error.h"
+#include "bearing/bearing.h"
+#include "core/error.h"
 
 namespace ohmdem::post {
 namespace {

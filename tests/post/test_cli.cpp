@@ -10,7 +10,7 @@
 #include <memory>
 #include <sstream>
 
-#include "json.h"
+#include "io/json.h"
 #include "synth.h"
 #include "test_util.h"
 
@@ -175,8 +175,7 @@ TEST(Cli, DumpWithStepLengthFromTheLog)
 
 TEST(Cli, PlotsArePngFiles)
 {
-  if (!test::have_gnuplot())
-    GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
+  if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
   const std::string dir = make_run_dir("run_plot", "ball");
   const std::string sig = dir + "/signal.txt";
   struct Case {
@@ -245,8 +244,8 @@ TEST(Cli, StandardInputPipeAndFifoReadLikeTheFile)
   const std::string want = csv_rows(file.out);
   EXPECT_NE(want.find(",20000,"), std::string::npos) << want;  // every row read
   const std::string commands[] = {
-      exe + " stats --format csv - < " + sig,                     // '-': a file on stdin
-      "cat " + sig + " | " + exe + " stats --format csv -",        // '-': a pipe
+      exe + " stats --format csv - < " + sig,                         // '-': a file on stdin
+      "cat " + sig + " | " + exe + " stats --format csv -",           // '-': a pipe
       "cat " + sig + " | " + exe + " stats --format csv /dev/stdin",  // read once, not twice
   };
   for (const auto &c : commands) {
@@ -287,8 +286,7 @@ TEST(Cli, EndlessOrBinaryInputFailsWithBoundedMemory)
 
 TEST(Cli, FailedPlotLeavesNoFile)
 {
-  if (!test::have_gnuplot())
-    GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
+  if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
   // a zero signal on a logarithmic axis: gnuplot fails after opening its output
   std::string text = "# time R\n";
   for (int i = 0; i < 256; ++i) text += std::to_string(i * 1e-3) + " 0\n";

@@ -15,12 +15,13 @@
 #include <memory>
 #include <sstream>
 
-#include "collect.h"
-#include "error.h"
-#include "json.h"
-#include "read_table.h"
+#include "core/error.h"
+#include "dsp/stats.h"
+#include "io/json.h"
+#include "io/read_table.h"
+#include "io/run_folders.h"
+#include "io/table_select.h"
 #include "synth.h"
-#include "table_select.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -281,10 +282,10 @@ TEST(Collect, CsvRowsColumnsAndValues)
   const auto lines = data_lines(r.out);
   ASSERT_EQ(lines.size(), 4u) << r.out;  // header + 3 runs
   const std::vector<std::string> header = {
-      "run",      "status",   "area",      "defect",        "depth",     "F",
-      "load",     "resumed",  "size_deg",  "t_sliding_end", "t_start_s", "t_end_s",
-      "n",        "peak_ohm", "mean_ohm",  "rms_ohm",       "std_ohm",   "skewness",
-      "kurtosis", "crest",    "shape",     "impulse",       "clearance", "duty"};
+      "run",      "status",   "area",     "defect",        "depth",     "F",
+      "load",     "resumed",  "size_deg", "t_sliding_end", "t_start_s", "t_end_s",
+      "n",        "peak_ohm", "mean_ohm", "rms_ohm",       "std_ohm",   "skewness",
+      "kurtosis", "crest",    "shape",    "impulse",       "clearance", "duty"};
   EXPECT_EQ(cells(lines[0]), header);
   // natural order of the folders; a string with a comma is quoted; missing keys are empty
   // (run.json without "status": an older run, counted as finished)
@@ -444,10 +445,9 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
 {
   const std::string root = make_sweep("status");
   // the engine writes how a run ended; a run cut short has fewer samples
-  make_run(root + "/stopped",
-           R"({"size_deg": 3, "status": "interrupted", "time_reached": 0.0105})", 1050);
-  make_run(root + "/crashed", R"({"size_deg": 4, "status": "failed", "time_reached": 0.004})",
-           400);
+  make_run(root + "/stopped", R"({"size_deg": 3, "status": "interrupted", "time_reached": 0.0105})",
+           1050);
+  make_run(root + "/crashed", R"({"size_deg": 4, "status": "failed", "time_reached": 0.004})", 400);
   make_run(root + "/done", R"({"size_deg": 5, "status": "finished", "time_reached": 0.02})");
   // killed outright (SIGKILL, an MPI abort): the deck's "running" stays
   make_run(root + "/killed", R"({"size_deg": 6, "status": "running", "time_reached": 0})", 300);
@@ -489,11 +489,13 @@ TEST(Collect, UnfinishedRunsAreFlaggedOrSkipped)
   EXPECT_EQ(lines[1].rfind("done,finished,", 0), 0u) << lines[1];
   EXPECT_EQ(lines[2].rfind("fixed_2,finished,", 0), 0u) << lines[2];
 
-  std::ofstream(root + "/done/run.json") << R"({"status": "paused"})" << "\n";
+  std::ofstream(root + "/done/run.json") << R"({"status": "paused"})"
+                                         << "\n";
   const Outcome bad = post("collect done", root);
   EXPECT_EQ(bad.status, 1);
-  EXPECT_NE(bad.err.find("\"status\" must be \"running\", \"finished\", \"interrupted\" or \"failed\""),
-            std::string::npos)
+  EXPECT_NE(
+      bad.err.find("\"status\" must be \"running\", \"finished\", \"interrupted\" or \"failed\""),
+      std::string::npos)
       << bad.err;
 }
 
@@ -573,8 +575,7 @@ TEST(Collect, DiagnosisColumnsEqualDiagnose)
 
 TEST(Collect, PlotIndicatorsOfTheCollectedCsv)
 {
-  if (!test::have_gnuplot())
-    GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
+  if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
   const std::string root = make_sweep("plot");
   make_run(root + "/fixed_5", R"({"size_deg": 5, "load": "fixed"})", 2000, 40, 8);
   make_run(root + "/healthy", R"({"load": "fixed"})", 2000, 40, 0);  // no size_deg

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <set>
 
-#include "defect_lines.h"
-#include "error.h"
-#include "fault_bands.h"
-#include "spectrogram.h"
-#include "spectrum.h"
+#include "bearing/defect_lines.h"
+#include "bearing/fault_bands.h"
+#include "core/error.h"
+#include "dsp/spectrogram.h"
+#include "dsp/spectrum.h"
 
 namespace ohmdem::post {
 namespace {

@@ -12,13 +12,13 @@
 #include <map>
 #include <sstream>
 
+#include "bearing/diagnose.h"
+#include "core/error.h"
 #include "cwru.h"
-#include "detect.h"
-#include "diagnose.h"
-#include "envelope.h"
-#include "error.h"
-#include "json.h"
-#include "load_signal.h"
+#include "dsp/detect.h"
+#include "dsp/envelope.h"
+#include "io/json.h"
+#include "io/load_signal.h"
 #include "synth.h"
 #include "test_util.h"
 
@@ -181,8 +181,8 @@ TEST(Detect, FalseAlarmRateOnGaussianNoise)
       std::printf("[ false alarm ] %-6s %-12s", phi == 0 ? "white" : "AR0.9", names[t]);
       for (int l = 0; l < 3; ++l) {
         const double p = t == 3 ? std::min(1.0, 3 * levels[l]) : levels[l];
-        std::printf("  P=%-6g %4d/%d (expected %6.1f, bound %d)", levels[l], count[t][l], R,
-                    R * p, binomial_upper(R, p, 1e-4));
+        std::printf("  P=%-6g %4d/%d (expected %6.1f, bound %d)", levels[l], count[t][l], R, R * p,
+                    binomial_upper(R, p, 1e-4));
         EXPECT_LT(count[t][l], binomial_upper(R, p, 1e-4)) << names[t] << " P " << levels[l];
         if (phi == 0 && t < 2 && R * p >= 10) {
           EXPECT_GT(count[t][l], binomial_lower(R, p, 1e-4)) << names[t] << " P " << levels[l];
@@ -244,10 +244,11 @@ TEST(Detect, ImpulsesNoFamilyExplainsAreUnidentified)
   o.geometry = bearing_preset("6208");
   o.fr = 500 / (2 * kPi);
   const Diagnosis d = diagnose(s, o);
-  std::printf("[ unidentified] %d bursts: defect %s, best family score %.2f, kurtosis %.2f "
-              "(threshold %.2f)\n",
-              bursts, d.defect.c_str(), d.score, d.detection.tests[0].value,
-              d.detection.tests[0].threshold);
+  std::printf(
+      "[ unidentified] %d bursts: defect %s, best family score %.2f, kurtosis %.2f "
+      "(threshold %.2f)\n",
+      bursts, d.defect.c_str(), d.score, d.detection.tests[0].value,
+      d.detection.tests[0].threshold);
   EXPECT_EQ(d.defect, "unidentified");
   EXPECT_TRUE(d.detected);
   EXPECT_TRUE(d.detection.tests[0].fired);  // kurtosis
@@ -268,10 +269,11 @@ TEST(Detect, ImpulsesNoFamilyExplainsAreUnidentified)
   }
   s.x = y;
   const Diagnosis e = diagnose(s, o);
-  std::printf("[ unidentified] slipping BPFO bursts: defect %s, outer score %.2f, band SK %.2f "
-              "(threshold %.2f)\n",
-              e.defect.c_str(), e.families[1].score, e.detection.tests[2].value,
-              e.detection.tests[2].threshold);
+  std::printf(
+      "[ unidentified] slipping BPFO bursts: defect %s, outer score %.2f, band SK %.2f "
+      "(threshold %.2f)\n",
+      e.defect.c_str(), e.families[1].score, e.detection.tests[2].value,
+      e.detection.tests[2].threshold);
   EXPECT_EQ(e.defect, "unidentified");
   EXPECT_LT(e.families[1].score, 0.3);
   EXPECT_TRUE(e.detection.tests[2].fired);  // band_sk
@@ -350,10 +352,11 @@ TEST(Detect, LinesTheBaselineHasTooIdentifyNothing)
   const Diagnosis d = diagnose(defective, o);
   EXPECT_EQ(d.defect, "outer");
   EXPECT_NEAR(d.families[1].baseline_excess, 20.0, 3.0);  // lines 10x (20 dB) the baseline's
-  std::printf("[ baseline   ] BPFO comb in the baseline: healthy %s (%.1f dB over it), "
-              "10x comb %s (%.1f dB over it)\n",
-              h.defect.c_str(), h.families[1].baseline_excess, d.defect.c_str(),
-              d.families[1].baseline_excess);
+  std::printf(
+      "[ baseline   ] BPFO comb in the baseline: healthy %s (%.1f dB over it), "
+      "10x comb %s (%.1f dB over it)\n",
+      h.defect.c_str(), h.families[1].baseline_excess, d.defect.c_str(),
+      d.families[1].baseline_excess);
 }
 
 TEST(Detect, ATooShortBaselineLeavesItsTestsNotApplicable)
@@ -516,7 +519,8 @@ std::string write_samples(const std::string &name, const std::vector<double> &x)
 TEST(Detect, CommandLineReportsDetection)
 {
   const std::string bursts = write_samples("detect_bursts.txt", random_bursts(100000));
-  const std::string noise = write_samples("detect_noise.txt", gaussian_record(100000, 0, stream(31)));
+  const std::string noise =
+      write_samples("detect_noise.txt", gaussian_record(100000, 0, stream(31)));
   const std::string base = write_samples("detect_base.txt", gaussian_record(100000, 0, stream(32)));
   const std::string opts = " --rate 1e6 --bearing 6208 --omega 500 --no-size";
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "diagnose.h"
-#include "error.h"
+#include "bearing/diagnose.h"
+#include "core/error.h"
 #include "synth.h"
 
 namespace ohmdem::post {

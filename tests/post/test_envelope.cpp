@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "envelope.h"
-#include "peaks.h"
-#include "read_table.h"
-#include "spectrum.h"
+#include "dsp/envelope.h"
+#include "dsp/peaks.h"
+#include "dsp/spectrum.h"
+#include "io/read_table.h"
 #include "synth.h"
 #include "test_util.h"
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 
-#include "bearing.h"
-#include "error.h"
+#include "bearing/bearing.h"
+#include "core/error.h"
 
 namespace ohmdem::post {
 namespace {

@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <functional>
 
-#include "error.h"
-#include "load_signal.h"
-#include "read_mat.h"
-#include "stats.h"
+#include "core/error.h"
+#include "dsp/stats.h"
+#include "io/load_signal.h"
+#include "io/read_mat.h"
 #include "test_util.h"
 
 namespace ohmdem::post {

@@ -7,10 +7,10 @@
 #include <cmath>
 #include <functional>
 
-#include "error.h"
-#include "load_signal.h"
-#include "read_npy.h"
-#include "read_table.h"
+#include "core/error.h"
+#include "io/load_signal.h"
+#include "io/read_npy.h"
+#include "io/read_table.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -50,7 +50,8 @@ TEST(Npy, ReadsARecordTableByName)
     ASSERT_EQ(t.rows(), 300u);
     for (int k = 0; k < 300; ++k) {
       EXPECT_EQ(t.columns[0][k], k / 1000.0);
-      EXPECT_NEAR(t.columns[1][k], expected_x(k), 1e-14);  // numpy's sin and ours differ in the last bits
+      EXPECT_NEAR(t.columns[1][k], expected_x(k),
+                  1e-14);  // numpy's sin and ours differ in the last bits
       EXPECT_EQ(t.columns[2][k], std::round(1000 * expected_x(k)));
     }
   }
@@ -105,10 +106,12 @@ TEST(Npy, ClearErrors)
 {
   EXPECT_NE(error_of([] { read_npy(npy("big.npy")); }).find("big-endian element type '>f8'"),
             std::string::npos);
-  EXPECT_NE(error_of([] { read_npy(npy("complex.npy")); }).find("element type '<c16' is not supported"),
-            std::string::npos);
-  EXPECT_NE(error_of([] { read_npy(npy("cut.npy")); }).find("truncated: the header counts 300 rows"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([] { read_npy(npy("complex.npy")); }).find("element type '<c16' is not supported"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of([] { read_npy(npy("cut.npy")); }).find("truncated: the header counts 300 rows"),
+      std::string::npos);
   EXPECT_NE(error_of([] { read_npy(npy("subarray.npy")); }).find("sub-array"), std::string::npos);
   EXPECT_NE(error_of([] { read_npy(test::data("print.txt")); }).find("not an .npy file"),
             std::string::npos);

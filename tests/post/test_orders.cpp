@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "error.h"
-#include "order_tracking.h"
-#include "peaks.h"
-#include "spectrum.h"
+#include "core/error.h"
+#include "dsp/order_tracking.h"
+#include "dsp/peaks.h"
+#include "dsp/spectrum.h"
 #include "test_util.h"
 
 namespace ohmdem::post {

@@ -11,8 +11,8 @@
 #include <memory>
 #include <sstream>
 
-#include "bearing.h"
-#include "json.h"
+#include "bearing/bearing.h"
+#include "io/json.h"
 #include "synth.h"
 #include "test_util.h"
 

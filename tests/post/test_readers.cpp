@@ -8,12 +8,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "error.h"
-#include "line_reader.h"
-#include "load_signal.h"
-#include "read_dump.h"
-#include "read_log.h"
-#include "read_table.h"
+#include "core/error.h"
+#include "io/line_reader.h"
+#include "io/load_signal.h"
+#include "io/read_dump.h"
+#include "io/read_log.h"
+#include "io/read_table.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -301,13 +301,20 @@ TEST(LineReader, Utf8ByteOrderMarkIsSkipped)
   EXPECT_TRUE(t.has_header);
   EXPECT_EQ(t.names[0], "time");  // not "\xEF\xBB\xBFtime" or a comment missed
   EXPECT_EQ(t.columns[1][2], 4.0);
-  const std::string plain = write_temp("bom_plain.txt", "\xEF\xBB\xBF" "1.5\n2.5\n");
+  const std::string plain = write_temp("bom_plain.txt",
+                                       "\xEF\xBB\xBF"
+                                       "1.5\n2.5\n");
   InputOptions o;
   o.files = {plain};
   o.rate = 10;
   EXPECT_EQ(load_signal(o, {}).x.front(), 1.5);
-  expect_error([] { read_table(write_temp("utf16.txt", std::string("\xFF\xFE" "1\0", 4))); },
-               "utf16.txt:1: UTF-16 text");
+  expect_error(
+      [] {
+        read_table(write_temp("utf16.txt", std::string("\xFF\xFE"
+                                                       "1\0",
+                                                       4)));
+      },
+      "utf16.txt:1: UTF-16 text");
 }
 
 TEST(LineReader, LineLongerThanTheLimitNamesFileLineAndLimit)
@@ -315,8 +322,7 @@ TEST(LineReader, LineLongerThanTheLimitNamesFileLineAndLimit)
   const std::string p = write_temp("long.txt", "1\n2\n" + std::string(100, '3') + "\n4\n");
   TableOptions o;
   o.max_line = 64;
-  expect_error([&] { read_table(p, o); },
-               "long.txt:3: line longer than 64 bytes (no line break?)");
+  expect_error([&] { read_table(p, o); }, "long.txt:3: line longer than 64 bytes (no line break?)");
   o.max_line = 100;  // exactly at the limit is accepted
   EXPECT_EQ(read_table(p, o).rows(), 4u);
   // a file without any line break fails at the limit, without reading it whole
@@ -379,11 +385,11 @@ TEST(Readers, NonFiniteValuesCountOnlyInsideTheWindow)
 {
   // R = inf at step 0 of a thermo log (the first evaluation of a compute): fine when the window
   // starts later, an error naming the time and the line when the window holds it
-  const std::string log = write_temp(
-      "inf_log.txt",
-      "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)\ntimestep 1e-05\n"
-      "Step Atoms c_R\n0 10 inf\n100 10 1.5\n200 10 1.6\n300 10 1.55\n400 10 1.52\n"
-      "Loop time of 0.1 on 1 procs\n");
+  const std::string log =
+      write_temp("inf_log.txt",
+                 "LIGGGHTS (Version LIGGGHTS-PUBLIC 3.8.0)\ntimestep 1e-05\n"
+                 "Step Atoms c_R\n0 10 inf\n100 10 1.5\n200 10 1.6\n300 10 1.55\n400 10 1.52\n"
+                 "Loop time of 0.1 on 1 procs\n");
   InputOptions o;
   o.files = {log};
   o.column = "c_R";

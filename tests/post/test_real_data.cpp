@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Measured data: runs `ohmdem-post diagnose` on every measured CWRU record found beside the
-// repository (if present) with the rate, speed and bearing its README gives, and prints what it finds.
-// Nothing is asserted per file: the README does not say which record has which defect.
+// repository (if present) with the rate, speed and bearing its README gives, and prints what it
+// finds. Nothing is asserted per file: the README does not say which record has which defect.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "cwru.h"
-#include "json.h"
+#include "io/json.h"
 
 namespace ohmdem::post {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "report.h"
+#include "report/report.h"
 
 namespace ohmdem::post {
 namespace {

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <tuple>
 
-#include "envelope.h"
+#include "dsp/envelope.h"
 #include "synth.h"
 
 namespace ohmdem::post {

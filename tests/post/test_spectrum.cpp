@@ -5,10 +5,10 @@
 
 #include <cmath>
 
-#include "fft.h"
-#include "peaks.h"
-#include "read_table.h"
-#include "spectrum.h"
+#include "dsp/fft.h"
+#include "dsp/peaks.h"
+#include "dsp/spectrum.h"
+#include "io/read_table.h"
 #include "synth.h"
 #include "test_util.h"
 

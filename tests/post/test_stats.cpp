@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "error.h"
-#include "json.h"
-#include "read_table.h"
-#include "stats.h"
+#include "core/error.h"
+#include "dsp/stats.h"
+#include "io/json.h"
+#include "io/read_table.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
