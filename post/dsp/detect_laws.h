@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Sampling laws of detection statistics under the Gaussian law (kurtosis, crest factor,
 // spectral kurtosis) and the Student t law of the baseline bounds: p-values and thresholds,
-// each checked against scipy.stats (tests/post/test_detect.cpp).
+// each checked against scipy.stats (tests/post/dsp/test_detect.cpp).
 #ifndef OHMDEM_POST_DETECT_LAWS_H
 #define OHMDEM_POST_DETECT_LAWS_H
 

@@ -10,12 +10,13 @@
 #include "dsp/order_tracking.h"
 #include "dsp/peaks.h"
 #include "dsp/spectrum.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 constexpr double kFs = 2000, kS = 32;
 
 // fr(t) = 10 + 10 t Hz: theta(t) = 2 pi (10 t + 5 t^2), 40 revolutions in 2 s

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The measured CWRU records of ../shared/data/bearing-real (beside the source tree, as in CI):
 // where they are, and the rates, speeds and bearing geometry their README lists.
-#ifndef OHMDEM_TESTS_POST_CWRU_H
-#define OHMDEM_TESTS_POST_CWRU_H
+#ifndef OHMDEM_TESTS_SUPPORT_CWRU_H
+#define OHMDEM_TESTS_SUPPORT_CWRU_H
 
 #include <sys/stat.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace ohmdem::post::test {
+namespace ohmdem::test {
 
 inline std::string cwru_dir()
 {
@@ -56,6 +56,6 @@ inline CwruReadme parse_cwru_readme(const std::string &path)
   return r;
 }
 
-}  // namespace ohmdem::post::test
+}  // namespace ohmdem::test
 
 #endif

@@ -9,11 +9,12 @@
 #include "bearing/diagnose.h"
 #include "core/error.h"
 #include "synth.h"
+#include "test_constants.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 
 DiagnoseOptions options_6208(double omega = 500)
 {

@@ -14,12 +14,13 @@
 #include "dsp/stats.h"
 #include "io/load_signal.h"
 #include "io/read_mat.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 
 std::string mat(const std::string &name)
 {

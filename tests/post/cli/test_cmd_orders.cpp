@@ -14,12 +14,13 @@
 #include "bearing/bearing.h"
 #include "io/json.h"
 #include "synth.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 
 struct CliRun {
   int status = -1;

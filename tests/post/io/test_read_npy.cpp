@@ -11,12 +11,13 @@
 #include "io/load_signal.h"
 #include "io/read_npy.h"
 #include "io/read_table.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 
 std::string npy(const std::string &name)
 {

@@ -20,12 +20,13 @@
 #include "io/json.h"
 #include "io/load_signal.h"
 #include "synth.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 
 bool close_rel(double a, double b, double tol)
 {
@@ -402,18 +403,19 @@ TEST(Detect, BaselineWindowsGiveTheStatedFalseAlarmRate)
   EXPECT_LT(fired, binomial_upper(4 * R, 0.01, 1e-4));
 }
 
-Signal load_cwru(const test::CwruRecord &rec)
+Signal load_cwru(const ohmdem::test::CwruRecord &rec)
 {
   InputOptions io;
-  io.files = {test::cwru_dir() + "/" + rec.name + ".txt"};
+  io.files = {ohmdem::test::cwru_dir() + "/" + rec.name + ".txt"};
   io.rate = rec.rate;
   return load_signal(io, RunMetadata{});
 }
 
 TEST(Detect, MeasuredCwruRecords)
 {
-  if (!test::cwru_present()) GTEST_SKIP() << test::cwru_dir() << " not found";
-  const test::CwruReadme rd = test::parse_cwru_readme(test::cwru_dir() + "/README.md");
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << ohmdem::test::cwru_dir() << " not found";
+  const ohmdem::test::CwruReadme rd =
+      ohmdem::test::parse_cwru_readme(ohmdem::test::cwru_dir() + "/README.md");
   ASSERT_EQ(rd.records.size(), 14u);
   BearingGeometry geo;
   geo.name = "custom";
@@ -460,8 +462,9 @@ TEST(Detect, MeasuredCwruRecords)
 
 TEST(Detect, MeasuredCwruAgainstAHealthyBaseline)
 {
-  if (!test::cwru_present()) GTEST_SKIP() << test::cwru_dir() << " not found";
-  const test::CwruReadme rd = test::parse_cwru_readme(test::cwru_dir() + "/README.md");
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << ohmdem::test::cwru_dir() << " not found";
+  const ohmdem::test::CwruReadme rd =
+      ohmdem::test::parse_cwru_readme(ohmdem::test::cwru_dir() + "/README.md");
   std::map<std::string, Signal> sig;
   for (const auto &rec : rd.records)
     if (rec.name == "sig08" || rec.name == "sig11" || rec.name == "sig14")
