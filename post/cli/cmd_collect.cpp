@@ -78,7 +78,7 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
   if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
     o.from = *meta.t_sliding_end;
   o.min_samples = want_diagnosis ? 256 : 2;
-  const Signal s = load_signal(o, meta);
+  const Signal s = load_named(o, meta);
   r.quantity = s.name;
   r.t_start = s.time(0);
   r.t_end = s.time(s.size() - 1);
@@ -91,7 +91,7 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
     InputOptions od = o;
     od.column = kDutyColumn;
     od.min_samples = 2;
-    r.duty = duty_fraction(load_signal(od, meta).x);
+    r.duty = duty_fraction(load_named(od, meta).x);
     r.has_duty = true;
   }
 
@@ -208,8 +208,9 @@ int run_collect(const std::vector<std::string> &argv)
                     "' in " + results.front().run + "; choose one with --column");
       results.push_back(std::move(r));
     } catch (const Error &e) {
-      if (!skip_bad) throw Error("run " + run + ": " + e.what() + " (--skip-bad skips such runs)");
-      std::cerr << "WARNING: collect: skipped run " << run << ": " << e.what() << "\n";
+      if (!skip_bad)
+        throw Error("run " + run + ": " + user_message(e) + " (--skip-bad skips such runs)");
+      std::cerr << "WARNING: collect: skipped run " << run << ": " << user_message(e) << "\n";
       bad.push_back(run);
     }
   }

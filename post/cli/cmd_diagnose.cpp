@@ -309,7 +309,7 @@ int run_diagnose(const std::vector<std::string> &argv)
     io.min_samples = 256;
     if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
       io.from = *meta.t_sliding_end;
-    base = load_signal(io, meta);
+    base = load_named(io, meta);
     o.baseline = &base;
   }
   const bool in_orders = sa && sa->speed.variation > o.tolerance;

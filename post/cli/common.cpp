@@ -79,6 +79,22 @@ RunMetadata run_metadata(const Args &a)
   return p.empty() ? RunMetadata{} : read_run_metadata(p);
 }
 
+Signal load_named(const InputOptions &o, const RunMetadata &meta, const std::string &rate_option)
+{
+  SettingFlags flags;
+  if (rate_option != "--rate")
+    flags = {{"input.rate", rate_option}, {"input.rate_variable", rate_option + "-variable"}};
+  Signal s;
+  try {
+    s = load_signal(o, meta);
+  } catch (const SettingError &e) {
+    throw Error(flag_named(e.text(), flags));
+  }
+  for (auto &kv : s.meta)
+    if (kv.first == "time base") kv.second = flag_named(kv.second, flags);
+  return s;
+}
+
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
                   bool skip_sliding_phase, const std::string &rate_option)
 {
@@ -89,7 +105,7 @@ Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_sample
     o.from = *meta.t_sliding_end;
     auto_from = true;
   }
-  Signal s = load_signal(o, meta);
+  Signal s = load_named(o, meta, rate_option);
   if (meta.present()) s.meta.emplace_back("metadata", meta.path);
   if (auto_from)
     s.meta.emplace_back("sliding phase skipped", "t < " + format_number(o.from) + " s");

@@ -13,41 +13,43 @@ void validate(const AcquireSettings &s, double fs_in)
 {
   if (!(fs_in > 0) || !std::isfinite(fs_in)) throw Error("acquire: the input rate must be > 0 Hz");
   if (!std::isfinite(s.scale) || s.scale == 0)
-    throw Error("option --scale expects a finite, non-zero factor");
-  if (!std::isfinite(s.offset)) throw Error("option --offset expects a finite number");
-  if (s.rate < 0 || !std::isfinite(s.rate)) throw Error("option --rate expects a rate > 0 Hz");
+    throw SettingError("option {acquire.scale} expects a finite, non-zero factor");
+  if (!std::isfinite(s.offset))
+    throw SettingError("option {acquire.offset} expects a finite number");
+  if (s.rate < 0 || !std::isfinite(s.rate))
+    throw SettingError("option {acquire.rate} expects a rate > 0 Hz");
   const double fs_out = s.rate > 0 ? s.rate : fs_in;
   if (fs_out > fs_in * (1 + 1e-9))
-    throw Error("--rate " + format_number(fs_out) + " Hz exceeds the input's sampling rate " +
-                format_number(fs_in, 10) +
-                " Hz: an instrument cannot record faster than the signal is known");
+    throw SettingError("{acquire.rate} " + format_number(fs_out) +
+                       " Hz exceeds the input's sampling rate " + format_number(fs_in, 10) +
+                       " Hz: an instrument cannot record faster than the signal is known");
   if (s.order < 1 || s.order > kMaxButterworthOrder)
-    throw Error("option --order expects a filter order in 1.." +
-                std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(s.order));
+    throw SettingError("option {acquire.order} expects a filter order in 1.." +
+                       std::to_string(kMaxButterworthOrder) + ", got " + std::to_string(s.order));
   if (s.lowpass != 0) {
     if (!(s.lowpass > 0) || !std::isfinite(s.lowpass))
-      throw Error("option --lowpass expects a cut-off > 0 Hz");
+      throw SettingError("option {acquire.lowpass} expects a cut-off > 0 Hz");
     if (s.lowpass >= fs_in / 2)
-      throw Error("--lowpass " + format_number(s.lowpass) +
-                  " Hz is at or above the input's Nyquist frequency " +
-                  format_number(fs_in / 2, 10) + " Hz (the filter runs at the input rate)");
+      throw SettingError("{acquire.lowpass} " + format_number(s.lowpass) +
+                         " Hz is at or above the input's Nyquist frequency " +
+                         format_number(fs_in / 2, 10) + " Hz (the filter runs at the input rate)");
     if (s.lowpass >= fs_out / 2)
-      throw Error("--lowpass " + format_number(s.lowpass) +
-                  " Hz is at or above the output Nyquist frequency rate/2 = " +
-                  format_number(fs_out / 2, 10) + " Hz: it would not stop aliasing");
+      throw SettingError("{acquire.lowpass} " + format_number(s.lowpass) +
+                         " Hz is at or above the output Nyquist frequency rate/2 = " +
+                         format_number(fs_out / 2, 10) + " Hz: it would not stop aliasing");
   }
   if (s.noise_rms < 0 || !std::isfinite(s.noise_rms))
-    throw Error("option --noise-rms expects a value >= 0");
+    throw SettingError("option {acquire.noise_rms} expects a value >= 0");
   if (s.noise_density < 0 || !std::isfinite(s.noise_density))
-    throw Error("option --noise-density expects a value >= 0");
+    throw SettingError("option {acquire.noise_density} expects a value >= 0");
   if (s.noise_rms > 0 && s.noise_density > 0)
-    throw Error("give the noise once: --noise-rms or --noise-density");
+    throw SettingError("give the noise once: {acquire.noise_rms} or {acquire.noise_density}");
   if (s.bits != 0) {
     if (s.bits < 1 || s.bits > 32)
-      throw Error("option --bits expects 1..32, got " + std::to_string(s.bits));
+      throw SettingError("option {acquire.bits} expects 1..32, got " + std::to_string(s.bits));
     if (!std::isfinite(s.lo) || !std::isfinite(s.hi) || !(s.lo < s.hi))
-      throw Error("option --range expects LO < HI, got " + format_number(s.lo) + " " +
-                  format_number(s.hi) + " (an empty ADC range)");
+      throw SettingError("option {acquire.range} expects LO < HI, got " + format_number(s.lo) +
+                         " " + format_number(s.hi) + " (an empty ADC range)");
   }
 }
 
@@ -165,16 +167,16 @@ Acquisition acquire(const Signal &in, const AcquireSettings &s)
     fs_out = s.rate;
     if (s.lowpass == 0 && fs_out < in.rate)
       a.warnings.push_back("sampling at " + format_number(fs_out) +
-                           " Hz without --lowpass: nothing stops aliasing of content above "
+                           " Hz without {acquire.lowpass}: nothing stops aliasing of content above "
                            "rate/2 = " +
                            format_number(fs_out / 2) + " Hz");
   } else {
     a.decimation = 1;
   }
   if (y.size() < 2)
-    throw Error("--rate " + format_number(fs_out) + " Hz leaves " + std::to_string(y.size()) +
-                " sample(s) of the " + format_number(in.duration()) +
-                " s input; at least 2 are needed");
+    throw SettingError("{acquire.rate} " + format_number(fs_out) + " Hz leaves " +
+                       std::to_string(y.size()) + " sample(s) of the " +
+                       format_number(in.duration()) + " s input; at least 2 are needed");
 
   a.noise_sigma = s.noise_rms > 0 ? s.noise_rms : s.noise_density * std::sqrt(fs_out / 2);
   if (a.noise_sigma > 0) {

@@ -42,7 +42,8 @@ std::string detect(const InputOptions &opt, LineReader &in)
 {
   if (opt.format != "auto") {
     if (opt.format != "table" && opt.format != "log" && opt.format != "dump" && opt.format != "mat")
-      throw Error("option --input expects auto|table|log|dump|mat|npy, got '" + opt.format + "'");
+      throw SettingError("option {input.format} expects auto|table|log|dump|mat|npy, got '" +
+                         opt.format + "'");
     return opt.format;
   }
   const std::string &l = in.peek_first_content();
@@ -63,8 +64,9 @@ double step_length(const InputOptions &opt, const RunMetadata &meta, double from
   if (opt.dt > 0) return opt.dt;
   if (from_file > 0) return from_file;
   if (meta.dt && *meta.dt > 0) return *meta.dt;
-  throw Error(what + " counts time steps and no step length is known: pass --dt SECONDS" +
-              std::string(meta.present() ? "" : " (or a run.json with \"dt\" via --metadata)"));
+  throw SettingError(
+      what + " counts time steps and no step length is known: pass {input.dt} SECONDS" +
+      std::string(meta.present() ? "" : " (or a run.json with \"dt\" via --metadata)"));
 }
 
 // Time-stamped samples before the window and the uniformity check.
@@ -113,9 +115,9 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, Read read)
       if (candidates.size() == 1) {
         vc = candidates.front();
       } else if ((vc = t.find_name("R")) == ColumnTable::npos || vc == tc) {
-        throw Error(
-            t.source + ": " + std::to_string(t.cols()) +
-            " columns; choose the signal with --column NAME|N (columns: " + t.column_list() + ")");
+        throw SettingError(t.source + ": " + std::to_string(t.cols()) +
+                           " columns; choose the signal with {input.column} NAME|N (columns: " +
+                           t.column_list() + ")");
       }
     }
     std::vector<bool> keep(t.cols(), false);
@@ -137,10 +139,11 @@ Samples from_table(const InputOptions &opt, const RunMetadata &meta, Read read)
   std::string base;
   if (opt.rate > 0) {
     s.rate = opt.rate;
-    base = "uniform, --rate";
+    base = "uniform, {input.rate}";
   } else if (tc == ColumnTable::npos) {
-    throw Error(t.source + ": no time column (columns: " + t.column_list() +
-                "); pass --rate HZ for a uniformly sampled signal or --time-column NAME|N");
+    throw SettingError(
+        t.source + ": no time column (columns: " + t.column_list() +
+        "); pass {input.rate} HZ for a uniformly sampled signal or {input.time_column} NAME|N");
   } else {
     s.t = std::move(t.columns[tc]);
     s.t_resolution = t.resolution(tc);
@@ -169,8 +172,8 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta, LineReader &i
   auto blocks = read_log(in);
   const ColumnTable &first = blocks.front().table;
   if (opt.column.empty())
-    throw Error(path + ": choose a thermo column with --column NAME|N (columns: " +
-                first.column_list() + ")");
+    throw SettingError(path + ": choose a thermo column with {input.column} NAME|N (columns: " +
+                       first.column_list() + ")");
   const std::string name = first.names[first.find(opt.column)];
   std::vector<double> time, x;
   RowLines lines;
@@ -184,8 +187,9 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta, LineReader &i
     const std::size_t tc = t.find_name("Time");
     if (tc == ColumnTable::npos && opt.dt <= 0 && b.timestep > 0) {
       if (dt_seen > 0 && dt_seen != b.timestep)
-        throw Error(path + ": the timestep changes between runs (" + format_number(dt_seen) +
-                    " then " + format_number(b.timestep) + " s); pass --dt to override");
+        throw SettingError(path + ": the timestep changes between runs (" + format_number(dt_seen) +
+                           " then " + format_number(b.timestep) +
+                           " s); pass {input.dt} to override");
       dt_seen = b.timestep;
     }
     ++used;
@@ -210,7 +214,7 @@ Samples from_log(const InputOptions &opt, const RunMetadata &meta, LineReader &i
     const double dt = step_length(opt, meta, dt_seen, path + ": thermo column Step");
     for (double &v : time) v *= dt;
     base = "Step x dt " + format_number(dt) + " s" +
-           (opt.dt > 0    ? " (--dt)"
+           (opt.dt > 0    ? " ({input.dt})"
             : dt_seen > 0 ? " (timestep in the log)"
                           : " (metadata)");
   }
@@ -290,7 +294,7 @@ void keep_range(std::vector<T> &v, std::size_t i0, std::size_t i1)
 Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
 {
   if (opt.files.empty()) throw Error("no input file given");
-  if (opt.rate < 0 || opt.dt < 0) throw Error("--rate and --dt must be > 0");
+  if (opt.rate < 0 || opt.dt < 0) throw SettingError("{input.rate} and {input.dt} must be > 0");
   if (std::count(opt.files.begin(), opt.files.end(), "-") > 1)
     throw Error("standard input ('-') can be read only once");
   Samples in;
@@ -315,8 +319,8 @@ Signal load_signal(const InputOptions &opt, const RunMetadata &meta)
   // the window is applied to the time stamps, before the uniformity check
   const bool windowed = std::isfinite(opt.from) || std::isfinite(opt.to);
   if (std::isfinite(opt.from) && std::isfinite(opt.to) && !(opt.to > opt.from))
-    throw Error("--to (" + format_number(opt.to) + " s) must be after --from (" +
-                format_number(opt.from) + " s)");
+    throw SettingError("{input.to} (" + format_number(opt.to) + " s) must be after {input.from} (" +
+                       format_number(opt.from) + " s)");
   std::size_t i0 = 0, i1 = n;
   if (std::isfinite(opt.from)) i0 = first_index(n, time, opt.from, false);
   if (std::isfinite(opt.to)) i1 = first_index(n, time, opt.to, true);

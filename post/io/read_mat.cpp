@@ -280,17 +280,19 @@ MatSignal read_mat_signal(const std::vector<std::string> &files, const std::stri
   MatSignal s;
   s.name = variable.empty() ? default_mat_variable(path) : variable;
   s.x = read_mat_vector(path, s.name);
-  std::string base = "uniform, --rate";
+  std::string base = "uniform, {input.rate}";
   if (rate > 0) {
     s.rate = rate;
   } else if (!rate_variable.empty()) {
     s.rate = read_mat_scalar(path, rate_variable);
     if (!(s.rate > 0))
-      throw Error(path + ": variable '" + rate_variable + "' (--rate-variable) is " +
-                  format_number(s.rate) + "; a sampling rate must be > 0 Hz");
+      throw SettingError(path + ": variable '" + rate_variable + "' ({input.rate_variable}) is " +
+                         format_number(s.rate) + "; a sampling rate must be > 0 Hz");
     base = "uniform, variable " + rate_variable + " (Hz)";
   } else {
-    throw Error(path + ": a MAT file has no time base; pass --rate HZ (or --rate-variable NAME)");
+    throw SettingError(
+        path +
+        ": a MAT file has no time base; pass {input.rate} HZ (or {input.rate_variable} NAME)");
   }
   s.meta = {{"format", "MATLAB MAT-file (libmatio)"},
             {"column", "variable " + s.name},

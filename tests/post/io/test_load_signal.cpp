@@ -93,7 +93,7 @@ TEST(Readers, PlainOneColumnNeedsRate)
   const std::string p = write_temp("plain.txt", "1.5\n-0.25\n3e-1\n+4\n");
   InputOptions o;
   o.files = {p};
-  expect_error([&] { load_signal(o, {}); }, "pass --rate HZ");
+  expect_error([&] { load_signal(o, {}); }, "pass rate HZ");
   o.rate = 10;
   const Signal s = load_signal(o, {});
   ASSERT_EQ(s.size(), 4u);

@@ -130,7 +130,7 @@ TEST(Readers, DumpAsSignalNeedsTheStepLength)
   InputOptions o;
   o.files = {data("dump.atoms")};
   o.column = "vz";
-  expect_error([&] { load_signal(o, {}); }, "--dt");
+  expect_error([&] { load_signal(o, {}); }, "pass dt SECONDS");
   RunMetadata m;
   m.path = "run.json";
   m.dt = 2.5e-5;

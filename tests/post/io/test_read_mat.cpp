@@ -75,7 +75,7 @@ TEST(Mat, LoadSignalDetectsMatAndTakesTheRateFromAVariable)
   EXPECT_EQ(s.name, "x");
   // without a rate: an error saying how to give it
   o.rate_variable.clear();
-  EXPECT_NE(error_of([&] { load_signal(o, {}); }).find("pass --rate HZ"), std::string::npos);
+  EXPECT_NE(error_of([&] { load_signal(o, {}); }).find("pass rate HZ"), std::string::npos);
   // --from/--to apply as for every input
   o.rate = 1000;
   o.from = 0.1;
