@@ -8,15 +8,36 @@ namespace ohmdem::post::cli {
 const SettingFlags &setting_flags()
 {
   static const SettingFlags flags = {
-      // InputOptions (io/load_signal.h) and the MAT reader (io/read_mat.h)
+      // InputOptions (io/load_signal.h), its readers, RunMetadata (io/run_metadata.h)
       {"input.rate", "--rate"},
       {"input.rate_variable", "--rate-variable"},
       {"input.dt", "--dt"},
       {"input.column", "--column"},
       {"input.time_column", "--time-column"},
       {"input.format", "--input"},
+      {"input.variable", "--variable"},
+      {"input.aggregate", "--aggregate"},
+      {"input.resample", "--resample"},
+      {"metadata.path", "--metadata"},
       {"input.from", "--from"},
       {"input.to", "--to"},
+      // SpectrumOptions (dsp/spectrum.h, dsp/window.h), SpectrogramOptions (dsp/spectrogram.h)
+      {"spectrum.detrend", "--detrend"},
+      {"spectrum.scale", "--scale"},
+      {"spectrum.segment", "--segment"},
+      {"spectrum.overlap", "--overlap"},
+      {"spectrum.pad", "--pad"},
+      {"spectrum.nfft", "--nfft"},
+      {"spectrum.window", "--window"},
+      {"spectrogram.fmin", "--fmin"},
+      {"spectrogram.fmax", "--fmax"},
+      // order tracking (dsp/order_tracking.h), detection (dsp/detect.h)
+      {"orders.speed_unit", "--speed-unit"},
+      {"orders.samples_per_rev", "--samples-per-rev"},
+      {"detect.baseline", "--baseline"},
+      // row selection (io/table_select.h), output form (report/report.h)
+      {"select.where", "--where"},
+      {"report.format", "--format"},
       // AcquireSettings (dsp/acquire.h)
       {"acquire.scale", "--scale"},
       {"acquire.offset", "--offset"},

@@ -83,11 +83,11 @@ Signal make_uniform(const std::vector<double> &t, std::vector<double> x, double 
     return s;
   }
   if (!resample)
-    throw Error(at_row(where, line_of_row, worst) + ": non-uniform time stamps (off by " +
-                format_number(worst_dev / dt_fit, 3) + " of the mean step " +
-                format_number(dt_fit) +
-                " s); pass --resample to interpolate linearly onto a uniform grid, or choose "
-                "a uniform part with --from/--to");
+    throw SettingError(
+        at_row(where, line_of_row, worst) + ": non-uniform time stamps (off by " +
+        format_number(worst_dev / dt_fit, 3) + " of the mean step " + format_number(dt_fit) +
+        " s); pass {input.resample} to interpolate linearly onto a uniform grid, or choose "
+        "a uniform part with {input.from}/{input.to}");
   std::vector<double> d(n - 1);
   for (std::size_t i = 1; i < n; ++i) d[i - 1] = t[i] - t[i - 1];
   std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());

@@ -208,7 +208,8 @@ WindowStats window_stats(const double *w, std::size_t n, double rate, Band band)
   const double mean = std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(n);
   for (double &v : x) v -= mean;
   const Indicators ind = indicators(x);
-  if (!(ind.std > 0)) throw Error("a window of the record or of --baseline is constant");
+  if (!(ind.std > 0))
+    throw SettingError("a window of the record or of {detect.baseline} is constant");
   // band mean square from the Hann-windowed power spectrum (it sums to the mean square)
   SpectrumOptions o;
   o.window = WindowKind::Hann;

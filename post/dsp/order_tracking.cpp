@@ -58,7 +58,7 @@ SpeedUnit parse_speed_unit(const std::string &name)
   if (n == "rad/s") return SpeedUnit::RadPerS;
   if (n == "rpm") return SpeedUnit::Rpm;
   if (n == "hz") return SpeedUnit::Hz;
-  throw Error("option --speed-unit expects rad/s|rpm|hz, got '" + name + "'");
+  throw SettingError("option {orders.speed_unit} expects rad/s|rpm|hz, got '" + name + "'");
 }
 
 const char *speed_unit_name(SpeedUnit u)
@@ -153,8 +153,8 @@ AngleResampled resample_by_angle(const std::vector<double> &x, double rate,
   if (n < 4) throw Error("order tracking needs at least 4 samples");
   if (!(rate > 0)) throw Error("order tracking: the sampling rate must be > 0");
   if (!(samples_per_rev >= 4) || !std::isfinite(samples_per_rev))
-    throw Error("option --samples-per-rev expects a number >= 4, got " +
-                format_number(samples_per_rev));
+    throw SettingError("option {orders.samples_per_rev} expects a number >= 4, got " +
+                       format_number(samples_per_rev));
   for (std::size_t j = 0; j + 1 < n; ++j)
     if (!(theta[j + 1] > theta[j]))
       throw Error(

@@ -49,8 +49,8 @@ Spectrogram spectrogram(const Signal &s, const SpectrogramOptions &o)
       for (std::size_t k = 0; k < sp.bins(); ++k)
         inside += sp.frequency(k) >= o.fmin && sp.frequency(k) <= o.fmax;
       if (inside == 0)
-        throw Error("spectrogram: no frequency bin in [" + format_number(o.fmin) + ", " +
-                    format_number(o.fmax) + "] Hz (--fmin, --fmax)");
+        throw SettingError("spectrogram: no frequency bin in [" + format_number(o.fmin) + ", " +
+                           format_number(o.fmax) + "] Hz ({spectrogram.fmin}, {spectrogram.fmax})");
       group = (inside + o.max_rows - 1) / o.max_rows;
       for (std::size_t k = 0; k < sp.bins(); ++k)
         if (sp.frequency(k) >= o.fmin && sp.frequency(k) <= o.fmax &&

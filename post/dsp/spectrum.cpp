@@ -13,7 +13,7 @@ Detrend parse_detrend(const std::string &name)
   if (name == "none") return Detrend::None;
   if (name == "mean" || name == "constant") return Detrend::Mean;
   if (name == "linear") return Detrend::Linear;
-  throw Error("option --detrend expects none|mean|linear, got '" + name + "'");
+  throw SettingError("option {spectrum.detrend} expects none|mean|linear, got '" + name + "'");
 }
 
 const char *detrend_name(Detrend d)
@@ -26,7 +26,7 @@ Scaling parse_scaling(const std::string &name)
   if (name == "amplitude") return Scaling::Amplitude;
   if (name == "power") return Scaling::Power;
   if (name == "psd") return Scaling::Psd;
-  throw Error("option --scale expects amplitude|power|psd, got '" + name + "'");
+  throw SettingError("option {spectrum.scale} expects amplitude|power|psd, got '" + name + "'");
 }
 
 const char *scaling_name(Scaling s)
@@ -69,16 +69,16 @@ Spectrum spectrum(const std::vector<double> &x, double rate, const SpectrumOptio
   if (!(rate > 0)) throw Error("sampling rate must be > 0");
   const std::size_t seg = opt.segment ? opt.segment : n;
   if (seg > n)
-    throw Error("option --segment (" + std::to_string(seg) + " samples) exceeds the signal (" +
-                std::to_string(n) + " samples)");
-  if (seg < 4) throw Error("option --segment must be at least 4 samples");
+    throw SettingError("option {spectrum.segment} (" + std::to_string(seg) +
+                       " samples) exceeds the signal (" + std::to_string(n) + " samples)");
+  if (seg < 4) throw SettingError("option {spectrum.segment} must be at least 4 samples");
   if (!(opt.overlap >= 0 && opt.overlap < 1))
-    throw Error("option --overlap expects a fraction in [0, 1)");
-  if (opt.pad < 1) throw Error("option --pad expects an integer >= 1");
+    throw SettingError("option {spectrum.overlap} expects a fraction in [0, 1)");
+  if (opt.pad < 1) throw SettingError("option {spectrum.pad} expects an integer >= 1");
   const std::size_t nfft = opt.nfft ? opt.nfft : seg * opt.pad;
   if (nfft < seg)
-    throw Error("option --nfft (" + std::to_string(nfft) +
-                ") must be at least the segment length (" + std::to_string(seg) + ")");
+    throw SettingError("option {spectrum.nfft} (" + std::to_string(nfft) +
+                       ") must be at least the segment length (" + std::to_string(seg) + ")");
   auto step = static_cast<std::size_t>(std::floor(static_cast<double>(seg) * (1 - opt.overlap)));
   if (step < 1) step = 1;
 

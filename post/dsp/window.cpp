@@ -58,7 +58,8 @@ WindowKind parse_window(const std::string &name)
   if (name == "blackman") return WindowKind::Blackman;
   if (name == "blackmanharris") return WindowKind::BlackmanHarris;
   if (name == "flattop") return WindowKind::Flattop;
-  throw Error(std::string("option --window expects ") + window_names() + ", got '" + name + "'");
+  throw SettingError(std::string("option {spectrum.window} expects ") + window_names() + ", got '" +
+                     name + "'");
 }
 
 const char *window_names()

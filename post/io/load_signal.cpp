@@ -66,7 +66,7 @@ double step_length(const InputOptions &opt, const RunMetadata &meta, double from
   if (meta.dt && *meta.dt > 0) return *meta.dt;
   throw SettingError(
       what + " counts time steps and no step length is known: pass {input.dt} SECONDS" +
-      std::string(meta.present() ? "" : " (or a run.json with \"dt\" via --metadata)"));
+      std::string(meta.present() ? "" : " (or a run.json with \"dt\" via {metadata.path})"));
 }
 
 // Time-stamped samples before the window and the uniformity check.

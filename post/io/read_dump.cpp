@@ -21,7 +21,8 @@ Aggregate parse_aggregate(const std::string &name)
   if (name == "max") return Aggregate::Max;
   if (name == "rms") return Aggregate::Rms;
   if (name == "count") return Aggregate::Count;
-  throw Error("option --aggregate expects sum|mean|min|max|rms|count, got '" + name + "'");
+  throw SettingError("option {input.aggregate} expects sum|mean|min|max|rms|count, got '" + name +
+                     "'");
 }
 
 const char *aggregate_name(Aggregate a)
@@ -69,9 +70,9 @@ struct Accumulator {
   double value(const std::string &where, long long step) const
   {
     if (n == 0 && kind != Aggregate::Sum && kind != Aggregate::Count)
-      throw Error(where + ": frame of step " + std::to_string(step) +
-                  " has no rows to aggregate with '" + aggregate_name(kind) +
-                  "'; use --aggregate sum or count");
+      throw SettingError(where + ": frame of step " + std::to_string(step) +
+                         " has no rows to aggregate with '" + aggregate_name(kind) +
+                         "'; use {input.aggregate} sum or count");
     if (nan && kind != Aggregate::Count) return std::numeric_limits<double>::quiet_NaN();
     switch (kind) {
       case Aggregate::Sum:
@@ -169,8 +170,9 @@ class DumpFile {
     if (h.names.empty()) throw Error(in_.where() + ": dump header names no columns");
     if (out_.columns.empty()) out_.columns = h.names;
     if (column_.empty())
-      throw Error(in_.name() +
-                  ": choose a dump column with --column NAME|N (columns: " + h.column_list() + ")");
+      throw SettingError(
+          in_.name() +
+          ": choose a dump column with {input.column} NAME|N (columns: " + h.column_list() + ")");
     col_ = h.find(column_);
     ncol_ = h.names.size();
     if (out_.column.empty()) out_.column = h.names[col_];

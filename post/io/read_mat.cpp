@@ -266,9 +266,10 @@ std::string default_mat_variable(const std::string &path)
     if (v.numeric() && n > 1 && long_dims == 1) candidates.push_back(v.name);
   }
   if (candidates.size() == 1) return candidates.front();
-  throw Error(path + ": " + std::to_string(candidates.size()) +
-              " vector variables; choose the signal with --variable NAME (variables: " +
-              mat_variable_list(vars) + ")");
+  throw SettingError(
+      path + ": " + std::to_string(candidates.size()) +
+      " vector variables; choose the signal with {input.variable} NAME (variables: " +
+      mat_variable_list(vars) + ")");
 }
 
 MatSignal read_mat_signal(const std::vector<std::string> &files, const std::string &variable,

@@ -47,11 +47,13 @@ std::vector<std::size_t> select_rows(const ColumnTable &t, const std::string &wh
     if (item.empty()) continue;
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw Error("option --where expects COLUMN=VALUE or COLUMN!=VALUE, got '" + item + "'");
+      throw SettingError("option {select.where} expects COLUMN=VALUE or COLUMN!=VALUE, got '" +
+                         item + "'");
     const bool negated = item[eq - 1] == '!';
     const std::string name(trim(std::string_view(item).substr(0, negated ? eq - 1 : eq)));
     if (name.empty())
-      throw Error("option --where expects COLUMN=VALUE or COLUMN!=VALUE, got '" + item + "'");
+      throw SettingError("option {select.where} expects COLUMN=VALUE or COLUMN!=VALUE, got '" +
+                         item + "'");
     conds.push_back(
         {t.find(name), !negated, std::string(trim(std::string_view(item).substr(eq + 1)))});
   }

@@ -13,7 +13,7 @@ OutputFormat parse_output_format(const std::string &name)
   if (name == "table") return OutputFormat::Table;
   if (name == "csv") return OutputFormat::Csv;
   if (name == "json") return OutputFormat::Json;
-  throw Error("option --format expects table|csv|json, got '" + name + "'");
+  throw SettingError("option {report.format} expects table|csv|json, got '" + name + "'");
 }
 
 std::string format_cell(const Cell &c, int digits)

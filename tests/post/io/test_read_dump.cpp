@@ -122,7 +122,7 @@ TEST(Readers, DumpLocalSeveralFilesSortedWithoutDuplicates)
   expect_error([&] { read_dump({data("dump.local")}, "c_cpl[7]", Aggregate::Mean); },
                "has no rows to aggregate with 'mean'");
   expect_error([&] { read_dump({data("dump.local")}, "", Aggregate::Sum); },
-               "choose a dump column with --column NAME|N (columns: c_cpl[1] c_cpl[2]");
+               "choose a dump column with column NAME|N (columns: c_cpl[1] c_cpl[2]");
 }
 
 TEST(Readers, DumpAsSignalNeedsTheStepLength)

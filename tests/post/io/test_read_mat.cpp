@@ -124,7 +124,9 @@ TEST(Mat, ClearErrors)
             std::string::npos);
   // the only vector is the default signal; several vectors need --variable
   EXPECT_EQ(default_mat_variable(mat("good_v4.mat")), "x");
-  EXPECT_NE(error_of([&] { default_mat_variable(mat("good.mat")); }).find("--variable NAME"),
+  EXPECT_NE(error_of([&] {
+              default_mat_variable(mat("good.mat"));
+            }).find("choose the signal with variable NAME"),
             std::string::npos);
 }
 
