@@ -260,9 +260,4 @@ std::string unit_of(const Args &a, const std::string &q)
   return "";
 }
 
-std::string with_unit(const std::string &name, const std::string &unit)
-{
-  return unit.empty() ? name : name + "_" + unit;
-}
-
 }  // namespace ohmdem::post::cli

@@ -67,7 +67,6 @@ Band band_option(const Args &a);                          // --band F1 F2, 0 <= 
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.
 std::string unit_of(const Args &a, const std::string &quantity);
-std::string with_unit(const std::string &name, const std::string &unit);
 
 }  // namespace ohmdem::post::cli
 

@@ -137,4 +137,9 @@ void write_result(std::ostream &out, const Result &r, OutputFormat f)
   }
 }
 
+std::string with_unit(const std::string &name, const std::string &unit)
+{
+  return unit.empty() ? name : name + "_" + unit;
+}
+
 }  // namespace ohmdem::post
