@@ -60,10 +60,10 @@ void write_csv(std::ostream &out, const Table &t);         // header row, then r
 Json table_json(const Table &t, const MetaList &meta);
 
 Json meta_json(const MetaList &meta);
-std::string format_cell(const Cell &c, int digits);
+std::string format_cell(const Cell &c, int digits);  // numbers %.{digits}g, non-finite "n/a"
 
 // A column name with its unit: "amplitude_ohm" ("amplitude" when the unit is unknown).
-std::string with_unit(const std::string &name, const std::string &unit);  // numbers %.{digits}g, non-finite "n/a"
+std::string with_unit(const std::string &name, const std::string &unit);
 
 }  // namespace ohmdem::post
 
