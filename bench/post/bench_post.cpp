@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "envelope.h"
-#include "spectrum.h"
+#include "dsp/envelope.h"
+#include "dsp/spectrum.h"
 
 namespace {
 

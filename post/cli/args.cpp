@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "args.h"
+#include "cli/args.h"
 
 #include <cmath>
 
-#include "../error.h"
-#include "../sampled_signal.h"
-#include "../text_scan.h"
+#include "core/error.h"
+#include "core/sampled_signal.h"
+#include "core/text_scan.h"
 
 namespace ohmdem::post::cli {
 

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <iostream>
 
-#include "../acquire.h"
-#include "../error.h"
-#include "../json.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/acquire.h"
+#include "io/json.h"
 
 namespace ohmdem {
 const char *version();
@@ -18,15 +18,6 @@ const char *version();
 namespace ohmdem::post::cli {
 
 namespace {
-
-// The loader's messages name the input's rate option --rate; here it is --input-rate.
-std::string input_rate_named(std::string s)
-{
-  const std::string from = "--rate", to = "--input-rate";
-  for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size()))
-    if (s.compare(p, to.size(), to) != 0) s.replace(p, from.size(), to);
-  return s;
-}
 
 AcquireSettings settings(const Args &a)
 {
@@ -168,12 +159,7 @@ int run_acquire(const std::vector<std::string> &argv)
   if (!a.parse(argv, std::cout)) return 0;
   const AcquireSettings set = settings(a);
   const RunMetadata meta = run_metadata(a);
-  Signal s;
-  try {
-    s = load_input(a, meta, 4, false, "--input-rate");
-  } catch (const Error &e) {
-    throw Error(input_rate_named(e.what()));
-  }
+  const Signal s = load_input(a, meta, 4, false, "--input-rate");
   const std::string name = a.has("--name") ? a.get("--name") : s.name;
   if (name.empty() || name.find_first_of(" \t\r\n,#\"") != std::string::npos)
     throw Error("option --name expects one word without blanks, commas, quotes or '#', got '" +
@@ -184,13 +170,13 @@ int run_acquire(const std::vector<std::string> &argv)
   Output out(a);
   if (out.format() == OutputFormat::Json)
     throw Error("option --format expects table|csv for acquire (the other commands read them)");
-  for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << w << "\n";
+  for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << flag_named(w) << "\n";
 
   std::string text =
       "# ohmdem-post " + std::string(ohmdem::version()) + " acquire: what an instrument records\n";
   for (const auto &kv : s.meta)
-    text += "# " + (kv.first == "source" ? kv.first : "input " + kv.first) + ": " +
-            input_rate_named(kv.second) + "\n";
+    text +=
+        "# " + (kv.first == "source" ? kv.first : "input " + kv.first) + ": " + kv.second + "\n";
   text += setting_lines(a, set, q, s.rate, a.get("--unit"));
   const bool csv = out.format() == OutputFormat::Csv;
   text += csv ? "time," + name + "\n" : "# time " + name + "\n";

@@ -8,14 +8,15 @@
 #include <map>
 #include <set>
 
-#include "../collect.h"
-#include "../diagnose.h"
-#include "../error.h"
-#include "../read_table.h"
-#include "../stats.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
+#include "bearing/diagnose.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/stats.h"
+#include "io/read_table.h"
+#include "io/run_folders.h"
+#include "report/collect_report.h"
 
 namespace ohmdem::post::cli {
 
@@ -31,31 +32,11 @@ bool is_outcome_key(const std::string &k)
   return k == "status" || k == "time_reached";
 }
 
-struct RunResult {
-  std::string run;
-  std::string status;  // finished, interrupted or failed (run.json; finished when absent)
-  RunParameters params;
-  std::string quantity;  // the signal's name (column)
-  double t_start = 0, t_end = 0;
-  Indicators ind;
-  double duty = kNaN;
-  bool has_duty = false;
-  Diagnosis diagnosis;
-};
-
-Cell param_cell(const Json *v)
-{
-  if (!v) return Cell(kNaN);
-  if (v->is_number()) return Cell(v->number());
-  if (v->is_string()) return Cell(v->string());
-  return Cell(v->boolean() ? "true" : "false");
-}
-
 // One run: metadata, window, indicators, duty and (optionally) the diagnosis.
-RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
-                  std::set<std::string> &nonscalar)
+CollectedRun analyse(const Args &a, const std::string &run, bool want_diagnosis,
+                     std::set<std::string> &nonscalar)
 {
-  RunResult r;
+  CollectedRun r;
   r.run = run;
   const std::string signal = run_signal_file(run), json = run + "/run.json";
   std::vector<std::string> ns;
@@ -78,7 +59,7 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
   if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
     o.from = *meta.t_sliding_end;
   o.min_samples = want_diagnosis ? 256 : 2;
-  const Signal s = load_signal(o, meta);
+  const Signal s = load_named(o, meta);
   r.quantity = s.name;
   r.t_start = s.time(0);
   r.t_end = s.time(s.size() - 1);
@@ -91,7 +72,7 @@ RunResult analyse(const Args &a, const std::string &run, bool want_diagnosis,
     InputOptions od = o;
     od.column = kDutyColumn;
     od.min_samples = 2;
-    r.duty = duty_fraction(load_signal(od, meta).x);
+    r.duty = duty_fraction(load_named(od, meta).x);
     r.has_duty = true;
   }
 
@@ -116,17 +97,9 @@ std::string join(const std::vector<std::string> &v, const std::string &sep)
   return s;
 }
 
-}  // namespace
-
-int run_collect(const std::vector<std::string> &argv)
+// The options of collect (run_collect parses them).
+void declare_options(Args &a)
 {
-  Args a("collect", "[options] DIR...",
-         "Gathers the runs found in the folders given (a run is a folder holding signal.txt and\n"
-         "run.json) into one table: one row per run, sorted by folder (natural order), with the\n"
-         "folder, the swept parameters (every scalar key of the runs' run.json, sorted; empty\n"
-         "where a run lacks one), the analysis window, the indicators of `stats` over it, the\n"
-         "duty (fraction of samples with n_masked >= 1) and, with --diagnose, the diagnosis.\n"
-         "The window starts at t_sliding_end of each run.json unless --from or --keep-sliding.");
   a.section("Runs");
   a.flag("--recursive", "search the folders given and their subfolders for runs");
   a.flag("--skip-bad",
@@ -149,40 +122,24 @@ int run_collect(const std::vector<std::string> &argv)
          "given below)");
   add_bearing_options(a);
   add_output_options(a);
-  if (!a.parse(argv, std::cout)) return 0;
-  if (a.positional().empty())
-    throw Error("collect: no folder given (see ohmdem-post collect --help)");
-  if (a.has("--params") && a.has("--varying"))
-    throw Error("collect: give --params or --varying, not both");
-  const bool recursive = a.has("--recursive"), skip_bad = a.has("--skip-bad"),
-             want_diagnosis = a.has("--diagnose");
-  // options that apply to every run fail here, not as the first run's error
-  (void)parse_output_format(a.get("--format"));
-  const double from = a.number("--from"), to = a.number("--to");
-  if (std::isfinite(from) && std::isfinite(to) && !(to > from))
-    throw Error("--to (" + a.get("--to") + " s) must be after --from (" + a.get("--from") + " s)");
-  if (want_diagnosis) (void)bearing_choice(a, RunMetadata{});
+}
 
-  std::vector<std::string> given = a.positional();  // sorted for messages: order-independent
-  std::sort(given.begin(), given.end(), natural_less);
-  const RunFolders folders = find_run_folders(given, recursive);
-  if (folders.runs.empty()) {  // one error line, with the reasons, instead of the warnings
-    std::string why;
-    for (std::size_t k = 0; k < folders.skipped.size() && k < 4; ++k)
-      why += "; " + folders.skipped[k].first + ": " + folders.skipped[k].second;
-    if (folders.skipped.size() > 4)
-      why += "; and " + std::to_string(folders.skipped.size() - 4) + " more";
-    throw Error("collect: no run folder (a folder holding signal.txt and run.json) in " +
-                join(given, " ") + (recursive ? "" : " (try --recursive)") + ", " +
-                std::to_string(folders.skipped.size()) + " skipped" + why);
-  }
-  for (const auto &sk : folders.skipped)
-    std::cerr << "WARNING: collect: skipped " << sk.first << ": " << sk.second << "\n";
-
-  std::vector<RunResult> results;
+// What the runs gave: a row each, the runs skipped as bad, the non-scalar run.json keys left
+// out, how many did not finish.
+struct Gathered {
+  std::vector<CollectedRun> results;
   std::vector<std::string> bad;
   std::set<std::string> nonscalar;
   std::size_t unfinished = 0;
+};
+
+Gathered gather(const Args &a, const RunFolders &folders, bool skip_bad, bool want_diagnosis)
+{
+  Gathered g;
+  std::vector<CollectedRun> &results = g.results;
+  std::vector<std::string> &bad = g.bad;
+  std::set<std::string> &nonscalar = g.nonscalar;
+  std::size_t &unfinished = g.unfinished;
   for (const std::string &run : folders.runs) {
     try {
       const RunMetadata meta = read_run_metadata(run + "/run.json");
@@ -202,73 +159,53 @@ int run_collect(const std::vector<std::string> &argv)
                      "--skip-bad skips such runs)\n";
         ++unfinished;
       }
-      RunResult r = analyse(a, run, want_diagnosis, nonscalar);
+      CollectedRun r = analyse(a, run, want_diagnosis, nonscalar);
       if (!results.empty() && r.quantity != results.front().quantity)
         throw Error("the signal is column '" + r.quantity + "', '" + results.front().quantity +
                     "' in " + results.front().run + "; choose one with --column");
       results.push_back(std::move(r));
     } catch (const Error &e) {
-      if (!skip_bad) throw Error("run " + run + ": " + e.what() + " (--skip-bad skips such runs)");
-      std::cerr << "WARNING: collect: skipped run " << run << ": " << e.what() << "\n";
+      if (!skip_bad)
+        throw Error("run " + run + ": " + user_message(e) + " (--skip-bad skips such runs)");
+      std::cerr << "WARNING: collect: skipped run " << run << ": " << user_message(e) << "\n";
       bad.push_back(run);
     }
   }
   if (results.empty())
     throw Error("collect: none of the " + std::to_string(folders.runs.size()) +
                 " run(s) has usable data (all skipped by --skip-bad)");
+  return g;
+}
 
-  // parameter columns
+// The parameter columns: --params, else the run.json keys (--varying: those that differ).
+std::vector<std::string> parameter_columns(const Args &a, const std::vector<CollectedRun> &results)
+{
   std::vector<std::string> keys;
   if (a.has("--params")) {
     keys = split_commas(a.get("--params"));
     for (const auto &k : keys)
-      if (std::none_of(results.begin(), results.end(),
-                       [&](const RunResult &r) { return find_parameter(r.params, k) != nullptr; }))
+      if (std::none_of(results.begin(), results.end(), [&](const CollectedRun &r) {
+            return find_parameter(r.params, k) != nullptr;
+          }))
         throw Error("option --params: no run.json of the runs has the key '" + k + "'");
   } else {
     std::vector<const RunParameters *> params;
     for (const auto &r : results) params.push_back(&r.params);
     keys = parameter_keys(params, a.has("--varying"));
   }
+  return keys;
+}
 
-  const std::string quantity = results.front().quantity;
-  const std::string unit = unit_of(a, quantity);
-  std::vector<std::string> fixed = {"run", "status", "t_start_s", "t_end_s", "n"};
-  for (const auto &f : indicator_fields())
-    fixed.push_back(f.dimensionless ? f.key : with_unit(f.key, unit));
-  const bool any_duty =
-      std::any_of(results.begin(), results.end(), [](const RunResult &r) { return r.has_duty; });
-  if (any_duty) fixed.push_back("duty");
-  if (want_diagnosis)
-    for (const char *c : {"diag_defect", "diag_score", "diag_frequency_Hz", "diag_size_deg"})
-      fixed.emplace_back(c);
-  auto param_column = [&](const std::string &k) {
-    return std::find(fixed.begin(), fixed.end(), k) != fixed.end() ? "param_" + k : k;
-  };
-
-  Result rep;
-  rep.table.columns = {"run", "status"};
-  for (const auto &k : keys) rep.table.columns.push_back(param_column(k));
-  rep.table.columns.insert(rep.table.columns.end(), fixed.begin() + 2, fixed.end());
-  for (const auto &r : results) {
-    std::vector<Cell> row{r.run, r.status};
-    for (const auto &k : keys) row.push_back(param_cell(find_parameter(r.params, k)));
-    row.emplace_back(r.t_start);
-    row.emplace_back(r.t_end);
-    row.emplace_back(r.ind.n);
-    for (const auto &f : indicator_fields()) row.emplace_back(r.ind.*f.value);
-    if (any_duty) row.emplace_back(r.duty);
-    if (want_diagnosis) {
-      const Diagnosis &d = r.diagnosis;
-      row.emplace_back(d.defect);
-      row.emplace_back(d.score);
-      row.emplace_back(d.defect == "none" ? kNaN : d.frequency_hz);
-      row.emplace_back(d.size.valid ? d.size.size_deg : kNaN);
-    }
-    rep.table.rows.push_back(std::move(row));
-  }
-
-  MetaList &m = rep.meta;
+// The '#' lines of the table: what was collected, skipped, and how.
+MetaList collect_meta(const Args &a, const std::vector<std::string> &given, bool recursive,
+                      const RunFolders &folders, const Gathered &g, const std::string &quantity,
+                      const std::string &unit, bool any_duty, bool want_diagnosis)
+{
+  MetaList m;
+  const std::vector<CollectedRun> &results = g.results;
+  const std::vector<std::string> &bad = g.bad;
+  const std::set<std::string> &nonscalar = g.nonscalar;
+  const std::size_t unfinished = g.unfinished;
   m.emplace_back("runs", std::to_string(results.size()) + " collected from " + join(given, " ") +
                              (recursive ? " (recursive)" : ""));
   if (!folders.skipped.empty()) {
@@ -305,7 +242,71 @@ int run_collect(const std::vector<std::string> &argv)
                                " >= 1 (empty where a run has no " + kDutyColumn + " column)");
   if (want_diagnosis)
     m.emplace_back("diagnosis", "as ohmdem-post diagnose with its default options, same window");
+  return m;
+}
 
+// The run folders in `given`; none is an error naming the reasons, the folders skipped are
+// warnings.
+RunFolders runs_in(const std::vector<std::string> &given, bool recursive)
+{
+  const RunFolders folders = find_run_folders(given, recursive);
+  if (folders.runs.empty()) {  // one error line, with the reasons, instead of the warnings
+    std::string why;
+    for (std::size_t k = 0; k < folders.skipped.size() && k < 4; ++k)
+      why += "; " + folders.skipped[k].first + ": " + folders.skipped[k].second;
+    if (folders.skipped.size() > 4)
+      why += "; and " + std::to_string(folders.skipped.size() - 4) + " more";
+    throw Error("collect: no run folder (a folder holding signal.txt and run.json) in " +
+                join(given, " ") + (recursive ? "" : " (try --recursive)") + ", " +
+                std::to_string(folders.skipped.size()) + " skipped" + why);
+  }
+  for (const auto &sk : folders.skipped)
+    std::cerr << "WARNING: collect: skipped " << sk.first << ": " << sk.second << "\n";
+  return folders;
+}
+
+}  // namespace
+
+int run_collect(const std::vector<std::string> &argv)
+{
+  Args a("collect", "[options] DIR...",
+         "Gathers the runs found in the folders given (a run is a folder holding signal.txt and\n"
+         "run.json) into one table: one row per run, sorted by folder (natural order), with the\n"
+         "folder, the swept parameters (every scalar key of the runs' run.json, sorted; empty\n"
+         "where a run lacks one), the analysis window, the indicators of `stats` over it, the\n"
+         "duty (fraction of samples with n_masked >= 1) and, with --diagnose, the diagnosis.\n"
+         "The window starts at t_sliding_end of each run.json unless --from or --keep-sliding.");
+  declare_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  if (a.positional().empty())
+    throw Error("collect: no folder given (see ohmdem-post collect --help)");
+  if (a.has("--params") && a.has("--varying"))
+    throw Error("collect: give --params or --varying, not both");
+  const bool recursive = a.has("--recursive"), skip_bad = a.has("--skip-bad"),
+             want_diagnosis = a.has("--diagnose");
+  // options that apply to every run fail here, not as the first run's error
+  (void)parse_output_format(a.get("--format"));
+  const double from = a.number("--from"), to = a.number("--to");
+  if (std::isfinite(from) && std::isfinite(to) && !(to > from))
+    throw Error("--to (" + a.get("--to") + " s) must be after --from (" + a.get("--from") + " s)");
+  if (want_diagnosis) (void)bearing_choice(a, RunMetadata{});
+
+  std::vector<std::string> given = a.positional();  // sorted for messages: order-independent
+  std::sort(given.begin(), given.end(), natural_less);
+  const RunFolders folders = runs_in(given, recursive);
+
+  const Gathered g = gather(a, folders, skip_bad, want_diagnosis);
+  const std::vector<CollectedRun> &results = g.results;
+  const std::vector<std::string> keys = parameter_columns(a, results);
+  const std::string quantity = results.front().quantity;
+  const std::string unit = unit_of(a, quantity);
+  const bool any_duty =
+      std::any_of(results.begin(), results.end(), [](const CollectedRun &r) { return r.has_duty; });
+  Result rep;
+  rep.table = collected_table(results, keys, unit, want_diagnosis);
+
+  rep.meta =
+      collect_meta(a, given, recursive, folders, g, quantity, unit, any_duty, want_diagnosis);
   Output out(a);
   out.write(rep);
   return 0;

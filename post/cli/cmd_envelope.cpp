@@ -4,13 +4,13 @@
 #include <cmath>
 #include <iostream>
 
-#include "../defect_lines.h"
-#include "../envelope.h"
-#include "../error.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
-#include "spectrum_options.h"
+#include "bearing/defect_lines.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/spectrum_options.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/envelope.h"
 
 namespace ohmdem::post::cli {
 

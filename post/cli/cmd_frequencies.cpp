@@ -2,10 +2,10 @@
 // ohmdem-post frequencies: kinematic defect frequencies from geometry and shaft speed.
 #include <iostream>
 
-#include "../defect_lines.h"
-#include "../error.h"
-#include "commands.h"
-#include "common.h"
+#include "bearing/defect_lines.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
 
 namespace ohmdem::post::cli {
 

@@ -6,17 +6,18 @@
 #include <iostream>
 #include <limits>
 
-#include "../constants.h"
-#include "../defect_lines.h"
-#include "../envelope.h"
-#include "../error.h"
-#include "../order_tracking.h"
-#include "../peaks.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
-#include "shaft_angle.h"
-#include "spectrum_options.h"
+#include "bearing/defect_lines.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/shaft_angle.h"
+#include "cli/spectrum_options.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/envelope.h"
+#include "dsp/order_tracking.h"
+#include "dsp/peaks.h"
+#include "report/orders_report.h"
 
 namespace ohmdem::post::cli {
 
@@ -32,20 +33,9 @@ MetaList speed_meta(const ShaftAngle &sa)
                " over 16 blocks (variation " + format_number(100 * sa.speed.variation, 3) + " %)"}};
 }
 
-}  // namespace
-
-int run_orders(const std::vector<std::string> &argv)
+// The options of orders (run_orders parses them).
+void declare_options(Args &a)
 {
-  Args a("orders", "[options] FILE...",
-         "Order tracking: the signal is resampled at constant increments of the shaft angle\n"
-         "(band-limited Kaiser-windowed sinc interpolation whose cut-off follows the speed, so\n"
-         "it also removes what would alias) and its spectrum taken with 'samples per revolution'\n"
-         "as the rate: lines tied to the shaft stay sharp while the speed varies, at orders\n"
-         "(cycles per revolution). The defect families are constant orders: FTF/fr, BPFO/fr,\n"
-         "BPFI/fr, BSF/fr, 2BSF/fr. --envelope gives the envelope order spectrum (the envelope\n"
-         "is formed in time, in a band in Hz, then resampled). The angle comes from an angle\n"
-         "column, a speed column, our signal.txt's angle_inner, or a constant speed (--rpm, ...,\n"
-         "run.json).");
   add_input_options(a);
   add_shaft_angle_options(a);
   add_bearing_options(a);
@@ -71,6 +61,57 @@ int run_orders(const std::vector<std::string> &argv)
   a.flag("--keep-sliding", "analyse our runs' sliding phase too (default: from t_sliding_end)");
   add_spectrum_options(a, "amplitude");
   add_output_options(a);
+}
+
+// --envelope: `x` becomes the envelope in the band of --band or --kurtogram (else the whole
+// band), noted in `m`. Returns what the spectrum is of.
+std::string envelope_option(const Args &a, const Signal &s, const BearingChoice &bc,
+                            const ShaftAngle &shaft, std::vector<double> &x, MetaList &m)
+{
+  if (a.has("--envelope")) {
+    Band band{0, s.rate / 2};
+    std::string how = "whole band";
+    if (a.has("--band")) {
+      if (a.has("--kurtogram")) throw Error("give either --band or --kurtogram, not both");
+      band = band_option(a);
+      how = "--band";
+    } else if (a.has("--kurtogram")) {
+      const int levels = levels_option(a);
+      // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
+      double min_bw = 0;
+      if (bc.geometry) {
+        min_bw = defect_band_width(defect_frequencies(*bc.geometry, shaft.speed.max / (2 * kPi)), 5,
+                                   s.rate);
+      }
+      const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
+      band = {kg.best.lo, kg.best.hi};
+      how = "kurtogram, spectral kurtosis " + format_number(kg.best.kurtosis, 4);
+    }
+    x = envelope(x, s.rate, band);
+    m.emplace_back("envelope band (Hz)",
+                   format_number(band.lo) + " to " + format_number(band.hi) + " (" + how + ")");
+    return "envelope order spectrum";
+  } else if (a.has("--band") || a.has("--kurtogram")) {
+    throw Error("--band and --kurtogram choose the envelope band: add --envelope");
+  }
+  return "order spectrum";
+}
+
+}  // namespace
+
+int run_orders(const std::vector<std::string> &argv)
+{
+  Args a("orders", "[options] FILE...",
+         "Order tracking: the signal is resampled at constant increments of the shaft angle\n"
+         "(band-limited Kaiser-windowed sinc interpolation whose cut-off follows the speed, so\n"
+         "it also removes what would alias) and its spectrum taken with 'samples per revolution'\n"
+         "as the rate: lines tied to the shaft stay sharp while the speed varies, at orders\n"
+         "(cycles per revolution). The defect families are constant orders: FTF/fr, BPFO/fr,\n"
+         "BPFI/fr, BSF/fr, 2BSF/fr. --envelope gives the envelope order spectrum (the envelope\n"
+         "is formed in time, in a band in Hz, then resampled). The angle comes from an angle\n"
+         "column, a speed column, our signal.txt's angle_inner, or a constant speed (--rpm, ...,\n"
+         "run.json).");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 64, !a.has("--keep-sliding"));
@@ -89,33 +130,7 @@ int run_orders(const std::vector<std::string> &argv)
   m.insert(m.end(), sm.begin(), sm.end());
 
   std::vector<double> x = s.x;
-  std::string what = "order spectrum";
-  if (a.has("--envelope")) {
-    Band band{0, s.rate / 2};
-    std::string how = "whole band";
-    if (a.has("--band")) {
-      if (a.has("--kurtogram")) throw Error("give either --band or --kurtogram, not both");
-      band = band_option(a);
-      how = "--band";
-    } else if (a.has("--kurtogram")) {
-      const int levels = levels_option(a);
-      // bands wide enough to carry 5 harmonics of the defect frequencies at the top speed
-      double min_bw = 0;
-      if (bc.geometry) {
-        min_bw = defect_band_width(defect_frequencies(*bc.geometry, sa->speed.max / (2 * kPi)), 5,
-                                   s.rate);
-      }
-      const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
-      band = {kg.best.lo, kg.best.hi};
-      how = "kurtogram, spectral kurtosis " + format_number(kg.best.kurtosis, 4);
-    }
-    x = envelope(x, s.rate, band);
-    what = "envelope order spectrum";
-    m.emplace_back("envelope band (Hz)",
-                   format_number(band.lo) + " to " + format_number(band.hi) + " (" + how + ")");
-  } else if (a.has("--band") || a.has("--kurtogram")) {
-    throw Error("--band and --kurtogram choose the envelope band: add --envelope");
-  }
+  const std::string what = envelope_option(a, s, bc, *sa, x, m);
   const double spr = a.has("--samples-per-rev") ? a.number("--samples-per-rev")
                                                 : default_samples_per_rev(s.rate, sa->speed.mean);
   const AngleResampled r = resample_by_angle(x, s.rate, sa->theta, spr);
@@ -132,12 +147,7 @@ int run_orders(const std::vector<std::string> &argv)
   if (show == "resampled") {
     Result rep;
     rep.meta = m;
-    rep.table.columns = {"revolution", "angle_rad", with_unit(s.name, unit)};
-    for (std::size_t k = 0; k < r.x.size(); ++k) {
-      const double ang = r.theta0 + 2 * kPi * static_cast<double>(k) / spr;
-      rep.table.rows.push_back({ang / (2 * kPi), ang, r.x[k]});
-    }
-    rep.table.table_digits = 10;
+    rep.table = resampled_table(r, spr, with_unit(s.name, unit));
     out.write(rep);
     return 0;
   }
@@ -168,23 +178,13 @@ int run_orders(const std::vector<std::string> &argv)
   const MetaList spm = spectrum_meta(sp, so.detrend);
   rep.meta.insert(rep.meta.end(), spm.begin(), spm.end());
   if (show == "bins") {
-    rep.table.columns = {"order", vname};
-    for (std::size_t k = 0; k < sp.bins(); ++k)
-      if (sp.frequency(k) >= po.fmin && sp.frequency(k) <= po.fmax)
-        rep.table.rows.push_back({sp.frequency(k), sp.value[k]});
-    rep.table.table_digits = 8;
+    rep.table = order_bins_table(sp, po.fmin, po.fmax, vname);
   } else {
     rep.meta.emplace_back(
         "peaks", what + ", largest first, prominence >= " + format_number(po.min_prominence_db) +
                      " dB over the local median, interpolated");
-    rep.table.columns = {"rank", "order", vname, "prominence_dB"};
-    if (orders) rep.table.columns.push_back("label");
-    int rank = 0;
-    for (const Peak &p : find_peaks(sp, po)) {
-      std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-      if (orders) row.emplace_back(label_frequency(p.frequency, *orders, harmonics, tol));
-      rep.table.rows.push_back(row);
-    }
+    rep.table =
+        order_peaks_table(find_peaks(sp, po), vname, orders ? &*orders : nullptr, harmonics, tol);
   }
   out.write(rep);
   return 0;

@@ -5,19 +5,19 @@
 #include <iostream>
 #include <sstream>
 
-#include "../constants.h"
-#include "../defect_lines.h"
-#include "../envelope.h"
-#include "../error.h"
-#include "../gnuplot.h"
-#include "../read_table.h"
-#include "../spectrogram.h"
-#include "../table_select.h"
-#include "../text_scan.h"
-#include "commands.h"
-#include "common.h"
-#include "shaft_angle.h"
-#include "spectrum_options.h"
+#include "bearing/defect_lines.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/shaft_angle.h"
+#include "cli/spectrum_options.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "dsp/envelope.h"
+#include "dsp/spectrogram.h"
+#include "io/read_table.h"
+#include "io/table_select.h"
+#include "report/gnuplot.h"
 
 namespace ohmdem::post::cli {
 

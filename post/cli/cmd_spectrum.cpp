@@ -2,10 +2,10 @@
 // ohmdem-post spectrum: one-sided spectrum and its peaks.
 #include <iostream>
 
-#include "../error.h"
-#include "commands.h"
-#include "common.h"
-#include "spectrum_options.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/spectrum_options.h"
+#include "core/error.h"
 
 namespace ohmdem::post::cli {
 

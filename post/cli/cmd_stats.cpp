@@ -4,11 +4,11 @@
 #include <cmath>
 #include <iostream>
 
-#include "../error.h"
-#include "../collect.h"
-#include "../stats.h"
-#include "commands.h"
-#include "common.h"
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "dsp/stats.h"
+#include "io/run_folders.h"
 
 namespace ohmdem::post::cli {
 

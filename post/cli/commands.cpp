@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "commands.h"
+#include "cli/commands.h"
 
 #include <cstring>
 #include <iostream>
 #include <new>
 
-#include "../error.h"
+#include "cli/setting_flags.h"
+#include "core/error.h"
 
 namespace ohmdem {
 const char *version();
@@ -77,7 +78,7 @@ int dispatch(int argc, char **argv)
     try {
       return c.run(std::vector<std::string>(argv + 2, argv + argc));
     } catch (const Error &e) {
-      std::cerr << "ERROR: " << e.what() << "\n";
+      std::cerr << "ERROR: " << user_message(e) << "\n";
     } catch (const std::bad_alloc &) {
       std::cerr << "ERROR: out of memory\n";
     } catch (const std::exception &e) {

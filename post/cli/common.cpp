@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "common.h"
+#include "cli/common.h"
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 
-#include "../constants.h"
-#include "../error.h"
-#include "../read_log.h"
-#include "../read_mat.h"
-#include "../text_scan.h"
+#include "core/constants.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+#include "io/read_log.h"
+#include "io/read_mat.h"
 
 namespace ohmdem::post::cli {
 
@@ -60,8 +60,7 @@ InputOptions input_options(const Args &a, const std::string &rate_option)
   o.dt = a.has("--dt") ? a.number_in("--dt", 0, Range::above(0), "a step", "s") : 0;
   if (a.has("--log")) {
     if (a.has("--dt")) throw Error("give the step length once: --dt or --log");
-    if (a.get("--log") == "-" &&
-        std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
+    if (a.get("--log") == "-" && std::find(o.files.begin(), o.files.end(), "-") != o.files.end())
       throw Error("standard input ('-') can be read only once: give --log a file");
     o.dt = log_timestep(a.get("--log"));
   }
@@ -80,6 +79,22 @@ RunMetadata run_metadata(const Args &a)
   return p.empty() ? RunMetadata{} : read_run_metadata(p);
 }
 
+Signal load_named(const InputOptions &o, const RunMetadata &meta, const std::string &rate_option)
+{
+  SettingFlags flags;
+  if (rate_option != "--rate")
+    flags = {{"input.rate", rate_option}, {"input.rate_variable", rate_option + "-variable"}};
+  Signal s;
+  try {
+    s = load_signal(o, meta);
+  } catch (const SettingError &e) {
+    throw Error(flag_named(e.text(), flags));
+  }
+  for (auto &kv : s.meta)
+    if (kv.first == "time base") kv.second = flag_named(kv.second, flags);
+  return s;
+}
+
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
                   bool skip_sliding_phase, const std::string &rate_option)
 {
@@ -90,7 +105,7 @@ Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_sample
     o.from = *meta.t_sliding_end;
     auto_from = true;
   }
-  Signal s = load_signal(o, meta);
+  Signal s = load_named(o, meta, rate_option);
   if (meta.present()) s.meta.emplace_back("metadata", meta.path);
   if (auto_from)
     s.meta.emplace_back("sliding phase skipped", "t < " + format_number(o.from) + " s");
@@ -243,11 +258,6 @@ std::string unit_of(const Args &a, const std::string &q)
   if (q.rfind("fn_", 0) == 0) return "N";
   if (q.rfind("omega", 0) == 0) return "rad/s";
   return "";
-}
-
-std::string with_unit(const std::string &name, const std::string &unit)
-{
-  return unit.empty() ? name : name + "_" + unit;
 }
 
 }  // namespace ohmdem::post::cli

@@ -9,12 +9,13 @@
 #include <ostream>
 #include <string>
 
-#include "../bearing.h"
-#include "../envelope.h"
-#include "../load_signal.h"
-#include "../report.h"
-#include "../run_metadata.h"
-#include "args.h"
+#include "bearing/bearing.h"
+#include "cli/args.h"
+#include "cli/setting_flags.h"
+#include "dsp/envelope.h"
+#include "io/load_signal.h"
+#include "io/run_metadata.h"
+#include "report/report.h"
 
 namespace ohmdem::post::cli {
 
@@ -24,6 +25,10 @@ void add_input_options(Args &a, const std::string &rate_option = "--rate");
 InputOptions input_options(const Args &a, const std::string &rate_option = "--rate");
 // --metadata FILE, else run.json next to the first input (unless --no-metadata), else none.
 RunMetadata run_metadata(const Args &a);
+// load_signal, with the settings in its messages and time base named by the flags: `rate_option`
+// for the input's rate ("uniform, --rate"), the others as every command names them.
+Signal load_named(const InputOptions &o, const RunMetadata &meta,
+                  const std::string &rate_option = "--rate");
 // Loads the signal and applies the metadata's t_sliding_end as default --from when asked.
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
                   bool skip_sliding_phase = false, const std::string &rate_option = "--rate");
@@ -62,7 +67,6 @@ Band band_option(const Args &a);                          // --band F1 F2, 0 <= 
 
 // Unit of a quantity named as in our signal.txt ("R" -> "ohm"); --unit overrides; "" if unknown.
 std::string unit_of(const Args &a, const std::string &quantity);
-std::string with_unit(const std::string &name, const std::string &unit);
 
 }  // namespace ohmdem::post::cli
 

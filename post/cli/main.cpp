@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post: the post-processing command line (commands in commands.cpp).
-#include "commands.h"
+#include "cli/commands.h"
 
 int main(int argc, char **argv)
 {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "shaft_angle.h"
+#include "cli/shaft_angle.h"
 
 #include <cmath>
 
-#include "../error.h"
-#include "../load_signal.h"
-#include "common.h"
+#include "cli/common.h"
+#include "core/error.h"
+#include "io/load_signal.h"
 
 namespace ohmdem::post::cli {
 
@@ -20,7 +20,7 @@ Signal companion_column(const Args &a, const RunMetadata &meta, const Signal &s,
   o.min_samples = 2;
   o.from = s.t0 - 0.5 / s.rate;
   o.to = s.time(s.size() - 1) + 0.5 / s.rate;
-  Signal c = load_signal(o, meta);
+  Signal c = load_named(o, meta);
   if (c.size() != s.size() || std::fabs(c.t0 - s.t0) > 0.5 / s.rate)
     throw Error("column " + name + ": " + std::to_string(c.size()) + " samples from " +
                 format_number(c.t0) + " s do not line up with the signal's " +

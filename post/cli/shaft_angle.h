@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "../order_tracking.h"
-#include "../run_metadata.h"
-#include "../sampled_signal.h"
-#include "args.h"
+#include "cli/args.h"
+#include "core/sampled_signal.h"
+#include "dsp/order_tracking.h"
+#include "io/run_metadata.h"
 
 namespace ohmdem::post::cli {
 

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-#include "spectrum_options.h"
+#include "cli/spectrum_options.h"
 
 #include <climits>
 #include <limits>
 
-#include "../defect_lines.h"
-#include "../error.h"
-#include "../fault_bands.h"
-#include "common.h"
+#include "bearing/defect_lines.h"
+#include "bearing/fault_bands.h"
+#include "cli/common.h"
+#include "core/error.h"
 
 namespace ohmdem::post::cli {
 

@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "../bearing.h"
-#include "../peaks.h"
-#include "../report.h"
-#include "../spectrum.h"
-#include "args.h"
+#include "bearing/bearing.h"
+#include "cli/args.h"
+#include "dsp/peaks.h"
+#include "dsp/spectrum.h"
+#include "report/report.h"
 
 namespace ohmdem::post::cli {
 

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Reference values for the acquire tests (test_acquire.cpp), computed with scipy (Debian
-python3-scipy): the anti-alias Butterworth filter's sections and its output.
+"""Reference values for the acquire tests (tests/post/dsp/test_butterworth.cpp and
+test_acquire.cpp), computed with scipy (Debian python3-scipy): the anti-alias Butterworth
+filter's sections and its output.
 
 Writes into reference/ (next to this script):
   butter_sos.txt       scipy.signal.butter(N, fc, fs=fs, output='sos') over a grid of orders and

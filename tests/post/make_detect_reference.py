@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Reference values for the detection tests (tests/post/test_detect.cpp), from scipy.stats.
+"""Reference values for the detection tests (tests/post/dsp/test_detect.cpp), from scipy.stats.
 
 Writes reference/detect_reference.txt (next to this script), one case per line, "%.17g":
   kurtosis N B2 Z P     scipy.stats.kurtosistest (Anscombe-Glynn, alternative='greater') on

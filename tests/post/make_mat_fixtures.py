@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Small MATLAB files for the .mat reader tests (tests/post/test_mat.cpp), written with
+"""Small MATLAB files for the .mat reader tests (tests/post/io/test_read_mat.cpp), written with
 scipy.io.savemat (MAT v5, uncompressed unless named _z; one v4 file).
 
   good.mat     x (1x300 double: 0.5 sin(2 pi 50 t) + 0.01 k at 1 kHz), y (300x1 single, 2 x),

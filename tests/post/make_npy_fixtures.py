@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Small NumPy .npy files for the .npy reader tests (tests/post/test_npy.cpp), written by numpy
+"""Small NumPy .npy files for the .npy reader tests (tests/post/io/test_read_npy.cpp), written by numpy
 itself (numpy.save / numpy.lib.format.write_array), independent of ohmdem's writer.
 
 x(k) = 0.5 sin(2 pi 50 k / 1000) + 0.01 k, k = 0..299, sampled at 1 kHz (t = k / 1000 s).

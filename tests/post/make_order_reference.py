@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Reference for the order-tracking tests (tests/post/test_orders.cpp), with numpy/scipy.
+"""Reference for the order-tracking tests (tests/post/dsp/test_order_tracking.cpp), with numpy/scipy.
 
 The record (synthesised identically by the test): fs = 2000 Hz, 4000 samples (2 s), shaft
 frequency rising linearly fr(t) = 10 + 10 t Hz, so the shaft angle is known in closed form,

@@ -3,10 +3,12 @@
 
 #include <cmath>
 
+#include "test_constants.h"
+
 namespace ohmdem::post::test {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using ohmdem::test::kPi;
 }
 
 Gaussian::Gaussian(std::uint64_t seed) : state_(seed * 0x9E3779B97F4A7C15ull + 1) {}

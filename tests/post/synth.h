@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "bearing.h"
-#include "sampled_signal.h"
+#include "bearing/bearing.h"
+#include "core/sampled_signal.h"
 
 namespace ohmdem::post::test {
 

@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// Defect diagnosis in two stages: detection (is the record unlike a healthy one: detect.h), then
+// identification: peaks of the spectrum and of the envelope spectrum matched against the
+// bearing's defect families (harmonic combs with shaft/cage sidebands, a tolerance for slip),
+// the most likely defect with a score and its evidence, and the defect size from pulse widths.
+#ifndef OHMDEM_POST_DIAGNOSE_H
+#define OHMDEM_POST_DIAGNOSE_H
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "bearing/bearing.h"
+#include "core/sampled_signal.h"
+#include "dsp/detect.h"
+#include "dsp/envelope.h"
+
+namespace ohmdem::post {
+
+struct DiagnoseOptions {
+  BearingGeometry geometry;
+  double fr = 0;            // shaft frequency (Hz)
+  double tolerance = 0.02;  // fundamental searched within +-tolerance (relative) for slip
+  int harmonics = 5;        // comb length
+  double min_score = 0.3;   // below: defect "none"
+  Band band;                // envelope band; lo = hi = 0: chosen by the kurtogram
+  int kurtogram_levels = 7;
+  bool estimate_size = true;
+  double false_alarm = 1e-3;         // per detection test
+  const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
+};
+
+struct Evidence {
+  std::string spectrum;      // "envelope" or "spectrum"
+  std::string label;         // "1xBPFI", "2xBPFO", "1xBPFI+1xfr", ...
+  double expected_hz = 0;    // h x matched fundamental (+- sideband)
+  double frequency_hz = 0;   // peak found (interpolated)
+  double amplitude = 0;      // in the signal's unit
+  double prominence_db = 0;  // above the local noise floor
+};
+
+struct FamilyScore {
+  std::string defect;       // inner, outer, ball, cage
+  std::string label;        // the comb's fundamental: BPFI, BPFO, 2BSF or BSF, FTF
+  double nominal_hz = 0;    // kinematic fundamental
+  double frequency_hz = 0;  // matched fundamental (best comb within the tolerance)
+  double score = 0;         // 0..1: margin / 12 dB, clamped
+  double comb = 0;          // mean prominence credit of the harmonics (dB over 6 dB, capped
+                            // at 34) + a quarter of the sidebands' mean credit
+  double chance = 0;        // upper quartile of the same comb at decoy fundamentals (dB)
+  double margin = 0;        // comb - chance (dB); with a baseline, at most baseline_excess
+  // With a baseline: the mean over the evidence lines of how far (dB, 0..34) each stands
+  // above the baseline's spectrum at the same frequency; NaN without a baseline.
+  double baseline_excess = std::numeric_limits<double>::quiet_NaN();
+  std::string spectrum;  // which spectrum gave the score
+  // harmonics scored: --harmonics, fewer when the comb (and its decoys, up to 1.3 x) would
+  // pass Nyquist; 0 when even the fundamental does (the family cannot be seen at this rate)
+  int harmonics = 0;
+  std::vector<Evidence> evidence;
+};
+
+struct SizeEstimate {
+  bool valid = false;
+  std::string method;  // "pulses" (direct), "synchronous average", or why not
+  double pulse_width_s = 0;
+  double size_deg = 0;  // angular extent on the race (inner/outer) or on the ball
+  double arc_m = 0;     // the same as an arc length
+  std::size_t pulses = 0;
+};
+
+struct Diagnosis {
+  // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
+  // detection stage fired (a fault of unknown type); else "none"
+  std::string defect = "none";
+  bool detected = false;  // a family identified or a detection test fired
+  Detection detection;
+  double score = 0;
+  double frequency_hz = 0;  // matched fundamental of the reported family (0 for none)
+  std::string label;        // what frequency_hz is: BPFI, BPFO, 2BSF, BSF or FTF
+  std::vector<Evidence> evidence;
+  std::vector<FamilyScore> families;  // inner, outer, ball, cage
+  DefectFrequencies kinematics;
+  Band band;                 // envelope band used
+  double band_kurtosis = 0;  // spectral kurtosis of that band (kurtogram), NaN if given
+  // Gaussian-noise level of the kurtogram's best band at alpha = 0.01 over the bands searched
+  // (Kurtogram::threshold), NaN if the band was given
+  double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
+  bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
+  SizeEstimate size;
+  std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
+};
+
+Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt);
+
+// Angular defect size from a pulse width tau and the matched fundamental f:
+// inner race (omega_inner - omega_cage) tau = 2 pi f tau / Nb, outer race omega_cage tau =
+// 2 pi f tau / Nb, ball 2 pi BSF tau = pi f tau (f = 2 BSF). Radians.
+double defect_angle(const std::string &defect, double f, double tau, int nb);
+
+}  // namespace ohmdem::post
+
+#endif

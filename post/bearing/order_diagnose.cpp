@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "bearing/order_diagnose.h"
+
+#include "core/constants.h"
+#include "dsp/order_tracking.h"
+
+namespace ohmdem::post {
+
+Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, DiagnoseOptions opt,
+                             double samples_per_rev)
+{
+  constexpr double kTwoPi = 2 * kPi;
+  const SpeedSummary speed = speed_summary(theta, s.rate);
+  const double fr = speed.mean / kTwoPi;  // mean shaft frequency (Hz)
+  const double spr =
+      samples_per_rev > 0 ? samples_per_rev : default_samples_per_rev(s.rate, speed.mean);
+  const AngleResampled r = resample_by_angle(s.x, s.rate, theta, spr);
+  Signal a;
+  a.x = r.x;
+  a.rate = spr;  // samples per revolution: frequencies below are orders
+  a.t0 = r.theta0 / kTwoPi;
+  a.name = s.name;
+  opt.fr = 1;
+  opt.band.lo /= fr;
+  opt.band.hi /= fr;
+  Diagnosis d = diagnose(a, opt);
+  // back to Hz at the mean speed
+  d.frequency_hz *= fr;
+  d.kinematics = defect_frequencies(opt.geometry, fr);
+  d.band.lo *= fr;
+  d.band.hi *= fr;
+  for (Evidence &e : d.evidence) {
+    e.expected_hz *= fr;
+    e.frequency_hz *= fr;
+  }
+  for (FamilyScore &f : d.families) {
+    f.nominal_hz *= fr;
+    f.frequency_hz *= fr;
+    for (Evidence &e : f.evidence) {
+      e.expected_hz *= fr;
+      e.frequency_hz *= fr;
+    }
+  }
+  d.size.pulse_width_s /= fr;  // revolutions -> seconds at the mean speed
+  return d;
+}
+
+}  // namespace ohmdem::post

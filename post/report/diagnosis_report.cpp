@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "report/diagnosis_report.h"
+
+#include <cmath>
+
+#include "core/constants.h"
+#include "core/text_scan.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+Json evidence_json(const std::vector<Evidence> &ev)
+{
+  Json arr = Json::array();
+  for (const auto &e : ev) {
+    Json o = Json::object();
+    o.set("spectrum", e.spectrum);
+    o.set("label", e.label);
+    o.set("expected_hz", e.expected_hz);
+    o.set("frequency_hz", e.frequency_hz);
+    o.set("amplitude", e.amplitude);
+    o.set("prominence_db", e.prominence_db);
+    arr.push_back(o);
+  }
+  return arr;
+}
+
+Json detection_json(const Detection &det, double false_alarm)
+{
+  Json o = Json::object();
+  o.set("fired", det.fired);
+  o.set("false_alarm", false_alarm);
+  o.set("false_alarm_bound", det.false_alarm_bound);
+  o.set("gaussian_applicable", det.gaussian_applicable);
+  o.set("white_floor", det.white_floor);
+  o.set("note", det.gaussian_note);
+  Json arr = Json::array();
+  for (const auto &t : det.tests) {
+    Json e = Json::object();
+    e.set("name", t.name);
+    e.set("reference", t.reference);
+    e.set("value", t.value);
+    e.set("threshold", t.threshold);
+    e.set("p_value", t.p_value);
+    e.set("samples", t.samples);
+    e.set("applicable", t.applicable);
+    e.set("fired", t.fired);
+    e.set("note", t.note);
+    arr.push_back(e);
+  }
+  o.set("tests", arr);
+  return o;
+}
+
+std::string fired_list(const Detection &det)
+{
+  std::string s;
+  for (const auto &t : det.tests)
+    if (t.fired) s += (s.empty() ? "" : "+") + t.name;
+  return s.empty() ? "-" : s;
+}
+
+std::string percent_off(double f, double nominal)
+{
+  return format_number(100 * (f / nominal - 1), 3) + " %";
+}
+
+// The family the verdict names, if any.
+const FamilyScore *chosen_family(const Diagnosis &d)
+{
+  const FamilyScore *chosen = nullptr;
+  for (const auto &f : d.families)
+    if (f.defect == d.defect) chosen = &f;
+  return chosen;
+}
+
+}  // namespace
+
+Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Json j = Json::object();
+  j.set("defect", d.defect);
+  j.set("detected", d.detected);
+  j.set("detection", detection_json(d.detection, c.options.false_alarm));
+  j.set("score", d.score);
+  j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
+  j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
+  j.set("fundamental", chosen ? Json(d.label) : Json());
+  j.set("evidence", evidence_json(d.evidence));
+  Json fams = Json::object();
+  for (const auto &f : d.families) {
+    Json o = Json::object();
+    o.set("score", f.score);
+    o.set("fundamental", f.label);
+    o.set("nominal_hz", f.nominal_hz);
+    o.set("frequency_hz", f.frequency_hz);
+    o.set("comb", f.comb);
+    o.set("chance", f.chance);
+    o.set("margin_db", f.margin);
+    o.set("harmonics", f.harmonics);
+    if (std::isfinite(f.baseline_excess)) o.set("baseline_excess_db", f.baseline_excess);
+    o.set("spectrum", f.spectrum);
+    fams.set(f.defect, o);
+  }
+  j.set("families", fams);
+  Json sz = Json::object();
+  sz.set("valid", d.size.valid);
+  sz.set("method", d.size.method);
+  sz.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
+  sz.set("size_deg", d.size.valid ? Json(d.size.size_deg) : Json());
+  sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
+  sz.set("pulses", d.size.pulses);
+  j.set("size", sz);
+  Json band = Json::array();
+  band.push_back(d.band.lo);
+  band.push_back(d.band.hi);
+  j.set("band_hz", band);
+  j.set("band_kurtosis", d.band_kurtosis);
+  j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
+  j.set("band_kurtosis_significant",
+        std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
+  j.set("shaft_hz", c.options.fr);
+  j.set("domain", c.in_orders ? "orders" : "time");
+  j.set("bearing", c.options.geometry.name);
+  if (c.run_defect) j.set("run_defect", *c.run_defect);
+  j.set("meta", meta_json(meta));
+  return j;
+}
+
+Table diagnosis_row(const Diagnosis &d)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Table t;
+  t.columns = {"defect", "score", "frequency_Hz", "kinematic_Hz", "size_deg", "pulse_width_s"};
+  for (const auto &f : d.families) t.columns.push_back(f.defect + "_score");
+  t.columns.insert(t.columns.end(),
+                   {"band_kurtosis", "band_kurtosis_threshold", "band_kurtosis_significant"});
+  std::vector<Cell> row{d.defect,
+                        d.score,
+                        chosen ? d.frequency_hz : NAN,
+                        chosen ? chosen->nominal_hz : NAN,
+                        d.size.valid ? d.size.size_deg : NAN,
+                        d.size.valid ? d.size.pulse_width_s : NAN};
+  for (const auto &f : d.families) row.emplace_back(f.score);
+  row.emplace_back(d.band_kurtosis);
+  row.emplace_back(d.band_kurtosis_threshold);
+  row.emplace_back(std::isfinite(d.band_kurtosis) ? (d.band_kurtosis_significant() ? "yes" : "no")
+                                                  : "");
+  // detection columns, appended (scripts reading the columns above keep working)
+  t.columns.push_back("detected");
+  row.emplace_back(d.detected ? "yes" : "no");
+  t.columns.push_back("fired");
+  row.emplace_back(fired_list(d.detection));
+  for (const auto &test : d.detection.tests) {
+    t.columns.push_back(test.name);
+    t.columns.push_back(test.name + "_threshold");
+    row.emplace_back(test.applicable ? test.value : NAN);
+    row.emplace_back(test.applicable ? test.threshold : NAN);
+  }
+  t.rows.push_back(row);
+  return t;
+}
+
+std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  std::vector<Block> b;
+  auto line = [&b](const std::string &text) { b.push_back({text, std::nullopt}); };
+  line("defect:        " + d.defect);
+  line("detected:      " + std::string(d.detected ? "yes" : "no") +
+       (d.detection.fired ? " (fired: " + fired_list(d.detection) + ")"
+        : d.detected      ? " (a family identified; no detection test fired)"
+                          : ""));
+  line("score:         " + format_number(d.score, 3));
+  if (chosen)
+    line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
+         " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
+         percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
+  if (d.size.valid)
+    line("size:          " + format_number(d.size.size_deg, 4) + " deg, arc " +
+         format_number(d.size.arc_m * 1e3, 4) + " mm (pulse width " +
+         format_number(d.size.pulse_width_s * 1e6, 4) + " us, " + d.size.method + ", " +
+         std::to_string(d.size.pulses) + (d.size.method == "pulses" ? " pulses" : " periods") +
+         ")");
+  else if (chosen)
+    line("size:          n/a (" + d.size.method + ")");
+  line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
+       ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
+       std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);
+  line("");
+  Table dt;
+  dt.columns = {"test", "against", "value", "threshold", "p_value", "samples", "fired", "note"};
+  for (const auto &t : d.detection.tests)
+    dt.rows.push_back({t.name, t.reference, t.value, t.threshold, t.p_value, t.samples,
+                       !t.applicable ? "n/a"
+                       : t.fired     ? "yes"
+                                     : "no",
+                       t.note.empty() ? "-" : t.note});
+  b.push_back({"", dt});
+  line("");
+  const bool baseline = c.options.baseline != nullptr;
+  Table ft;
+  ft.columns = {"family",    "comb_of",    "score",      "margin_dB", "comb_dB",
+                "chance_dB", "nominal_Hz", "matched_Hz", "spectrum"};
+  if (baseline) ft.columns.push_back("over_baseline_dB");
+  for (const auto &f : d.families) {
+    ft.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
+                       f.frequency_hz, f.spectrum});
+    if (baseline) ft.rows.back().emplace_back(f.baseline_excess);
+  }
+  b.push_back({"", ft});
+  if (!d.evidence.empty()) {
+    line("");
+    Table et;
+    et.columns = {"evidence", "spectrum", "expected_Hz", "peak_Hz", "amplitude", "prominence_dB"};
+    for (const auto &e : d.evidence)
+      et.rows.push_back(
+          {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
+    b.push_back({"", et});
+  }
+  return b;
+}
+
+}  // namespace ohmdem::post

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "report/gnuplot.h"
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+bool executable(const std::string &p)
+{
+  return !p.empty() && ::access(p.c_str(), X_OK) == 0;
+}
+
+// gnuplot string literal in single quotes: only the quote itself needs doubling
+std::string quote(const std::string &s)
+{
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  return q + "'";
+}
+
+class TempDir {
+ public:
+  TempDir()
+  {
+    const char *base = std::getenv("TMPDIR");
+    std::string tmpl = std::string(base && *base ? base : "/tmp") + "/ohmdem-post-XXXXXX";
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    if (!::mkdtemp(buf.data()))
+      throw Error(std::string("cannot create a temporary directory: ") + std::strerror(errno));
+    path_ = buf.data();
+  }
+  ~TempDir()
+  {
+    for (const auto &f : files_) ::unlink(f.c_str());
+    ::rmdir(path_.c_str());
+  }
+  TempDir(const TempDir &) = delete;
+  TempDir &operator=(const TempDir &) = delete;
+  std::string file(const std::string &name)
+  {
+    files_.push_back(path_ + "/" + name);
+    return files_.back();
+  }
+
+ private:
+  std::string path_;
+  std::vector<std::string> files_;
+};
+
+// The image is written to a temporary file beside the target and renamed onto it only once
+// complete: a failed plot leaves neither an empty nor a partial PNG (nor an older one changed).
+class PendingFile {
+ public:
+  explicit PendingFile(const std::string &target) : target_(target)
+  {
+    const auto slash = target.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "" : target.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    std::string tmpl = dir + "." + base + ".tmp-XXXXXX";
+    std::vector<char> buf(tmpl.begin(), tmpl.end());
+    buf.push_back('\0');
+    const int fd = ::mkstemp(buf.data());
+    if (fd < 0) throw Error("cannot write '" + target + "': " + std::strerror(errno));
+    ::close(fd);
+    path_ = buf.data();
+  }
+  ~PendingFile()
+  {
+    if (!path_.empty()) ::unlink(path_.c_str());
+  }
+  PendingFile(const PendingFile &) = delete;
+  PendingFile &operator=(const PendingFile &) = delete;
+  const std::string &path() const { return path_; }
+  void commit()
+  {
+    ::chmod(path_.c_str(), 0644 & ~current_umask());
+    if (::rename(path_.c_str(), target_.c_str()) != 0)
+      throw Error("cannot write '" + target_ + "': " + std::strerror(errno));
+    path_.clear();
+  }
+
+ private:
+  static mode_t current_umask()
+  {
+    const mode_t m = ::umask(0);
+    ::umask(m);
+    return m;
+  }
+  std::string target_, path_;
+};
+// The image as "x y z" rows, one blank line between x columns (gnuplot grid data).
+void write_image(const PlotImage &im, const std::string &path)
+{
+  std::ofstream out(path);
+  out.precision(9);
+  const std::size_t nx = im.x.size(), ny = im.y.size();
+  if (im.z.size() != nx * ny)
+    throw Error("plot: image of " + std::to_string(im.z.size()) + " values for a " +
+                std::to_string(nx) + " x " + std::to_string(ny) + " grid");
+  for (std::size_t ix = 0; ix < nx; ++ix) {
+    for (std::size_t iy = 0; iy < ny; ++iy)
+      out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';
+    out << '\n';
+  }
+  if (!out) throw Error("cannot write plot data to " + path);
+}
+
+}  // namespace
+
+std::string find_gnuplot()
+{
+  if (const char *env = std::getenv("OHMDEM_GNUPLOT")) return executable(env) ? env : "";
+  const char *path = std::getenv("PATH");
+  std::stringstream ss(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(ss, dir, ':')) {
+    const std::string p = (dir.empty() ? "." : dir) + "/gnuplot";
+    if (executable(p)) return p;
+  }
+  return "";
+}
+
+void decimate_minmax(const std::vector<double> &x, const std::vector<double> &y,
+                     std::size_t max_points, std::vector<double> &xo, std::vector<double> &yo)
+{
+  xo.clear();
+  yo.clear();
+  const std::size_t n = std::min(x.size(), y.size());
+  if (n <= max_points || max_points < 4) {
+    xo.assign(x.begin(), x.begin() + static_cast<long>(n));
+    yo.assign(y.begin(), y.begin() + static_cast<long>(n));
+    return;
+  }
+  const std::size_t buckets = max_points / 2;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const std::size_t i0 = b * n / buckets, i1 = (b + 1) * n / buckets;
+    std::size_t lo = i0, hi = i0;
+    for (std::size_t i = i0; i < i1; ++i) {
+      if (y[i] < y[lo]) lo = i;
+      if (y[i] > y[hi]) hi = i;
+    }
+    const std::size_t a = std::min(lo, hi), c = std::max(lo, hi);
+    xo.push_back(x[a]);
+    yo.push_back(y[a]);
+    if (c != a) {
+      xo.push_back(x[c]);
+      yo.push_back(y[c]);
+    }
+  }
+}
+
+void render_png(const Figure &fig, const std::string &png_path)
+{
+  const std::string gp = find_gnuplot();
+  if (gp.empty())
+    throw Error(
+        "plot needs gnuplot (Debian package gnuplot-nox); none found in PATH "
+        "(or set OHMDEM_GNUPLOT)");
+  if (fig.series.empty() && fig.image.empty()) throw Error("plot: nothing to draw");
+  TempDir dir;
+  PendingFile png(png_path);
+  std::ostringstream script;
+  script.precision(17);
+  script << "set terminal pngcairo noenhanced size " << fig.width << "," << fig.height
+         << " font 'Sans,10'\n"
+         << "set output " << quote(png.path()) << "\n"
+         << "set title " << quote(fig.title) << "\n"
+         << "set xlabel " << quote(fig.xlabel) << "\n"
+         << "set ylabel " << quote(fig.ylabel) << "\n"
+         << "set grid lc rgb '#dddddd'\nset key below\n";
+  if (fig.logy) script << "set logscale y\nset format y '%g'\n";
+  if (std::isfinite(fig.xmin) || std::isfinite(fig.xmax))
+    script << "set xrange [" << (std::isfinite(fig.xmin) ? std::to_string(fig.xmin) : "*") << ":"
+           << (std::isfinite(fig.xmax) ? std::to_string(fig.xmax) : "*") << "]\n";
+  int tag = 1;
+  for (const auto &m : fig.markers) {
+    script << "set arrow " << tag << " from " << m.x << ", graph 0 to " << m.x
+           << ", graph 1 nohead dt 2 lw 1 lc rgb " << quote(m.color) << "\n"
+           << "set label " << tag << " " << quote(m.label) << " at " << m.x
+           << ", graph 0.98 rotate by 90 right offset -0.6,0 tc rgb " << quote(m.color)
+           << " font 'Sans,8'\n";
+    ++tag;
+  }
+  if (!fig.image.empty())
+    script << "set cblabel " << quote(fig.image.zlabel) << "\nset palette rgb 33,13,10\n";
+  if (std::isfinite(fig.ymin) || std::isfinite(fig.ymax))
+    script << "set yrange [" << (std::isfinite(fig.ymin) ? std::to_string(fig.ymin) : "*") << ":"
+           << (std::isfinite(fig.ymax) ? std::to_string(fig.ymax) : "*") << "]\n";
+  script << "plot ";
+  if (!fig.image.empty()) {
+    const std::string data = dir.file("image.dat");
+    write_image(fig.image, data);
+    script << quote(data) << " using 1:2:3 with image notitle" << (fig.series.empty() ? "" : ", ");
+  }
+  for (std::size_t k = 0; k < fig.series.size(); ++k) {
+    const PlotSeries &s = fig.series[k];
+    const std::string data = dir.file("series" + std::to_string(k) + ".dat");
+    std::ofstream out(data);
+    out.precision(12);
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+      if (fig.logy && !(s.y[i] > 0)) continue;
+      out << s.x[i] << ' ' << s.y[i] << '\n';
+    }
+    if (!out) throw Error("cannot write plot data to " + data);
+    script << (k ? ", " : "") << quote(data) << " using 1:2 with " << s.style << " lw 1.2 title "
+           << quote(s.title);
+  }
+  script << "\n";
+  const std::string script_path = dir.file("figure.gp");
+  const std::string log_path = dir.file("gnuplot.log");
+  std::ofstream(script_path) << script.str();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Error(std::string("cannot start gnuplot: ") + std::strerror(errno));
+  if (pid == 0) {
+    std::FILE *log = std::fopen(log_path.c_str(), "w");
+    if (log) {
+      ::dup2(::fileno(log), 1);
+      ::dup2(::fileno(log), 2);
+    }
+    ::execl(gp.c_str(), gp.c_str(), script_path.c_str(), static_cast<char *>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  std::ifstream logf(log_path);
+  std::stringstream msg;
+  msg << logf.rdbuf();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error("gnuplot failed writing '" + png_path + "': " + msg.str());
+  struct stat st {};
+  if (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0)
+    throw Error("gnuplot wrote no image to '" + png_path + "': " + msg.str());
+  png.commit();
+}
+
+}  // namespace ohmdem::post

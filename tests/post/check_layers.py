@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The post library's layers, checked (ctest post.layers).
+
+usage: check_layers.py POST_DIR LAYER...   (lowest layer first: core io dsp bearing report cli)
+
+Every file of POST_DIR/<layer>/ may include, among the project's headers, only headers of its
+own layer or of a layer listed before it, written from the post root ("dsp/spectrum.h"): never
+"../x.h", never a bare "x.h". Prints one line per offending include and exits 1; prints
+"post layers: ok" otherwise.
+"""
+import os
+import re
+import sys
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def problems(post_dir, order):
+    rank = {layer: i for i, layer in enumerate(order)}
+    found = []
+    for entry in sorted(os.listdir(post_dir)):
+        folder = os.path.join(post_dir, entry)
+        if not os.path.isdir(folder):
+            if entry.endswith(('.h', '.cpp')):
+                found.append(f'{entry}: a source file outside the layers ({", ".join(order)})')
+            continue
+        if entry not in rank:
+            found.append(f'{entry}/: a folder that is not a layer ({", ".join(order)})')
+            continue
+        for root, _, files in os.walk(folder):
+            for name in sorted(files):
+                if not name.endswith(('.h', '.cpp')):
+                    continue
+                path = os.path.join(root, name)
+                shown = os.path.relpath(path, post_dir)
+                with open(path, encoding='utf-8') as f:
+                    text = f.read()
+                for line_no, inc in ((text.count('\n', 0, m.start()) + 1, m.group(1))
+                                     for m in INCLUDE.finditer(text)):
+                    where = f'{shown}:{line_no}: #include "{inc}"'
+                    if inc.startswith('../') or '/' not in inc:
+                        found.append(f'{where}: include from the post root ("dsp/spectrum.h")')
+                        continue
+                    target = inc.split('/')[0]
+                    if target not in rank:
+                        found.append(f'{where}: "{target}" is not a layer')
+                    elif rank[target] > rank[entry]:
+                        found.append(f'{where}: {entry} may not include {target} '
+                                     f'(a lower layer cannot include a higher one: '
+                                     f'{" < ".join(order)})')
+    return found
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    found = problems(sys.argv[1], sys.argv[2:])
+    for p in found:
+        print(p)
+    if found:
+        print(f'post layers: {len(found)} problem(s)')
+        return 1
+    print('post layers: ok')
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

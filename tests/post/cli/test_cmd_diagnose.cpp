@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// `ohmdem-post diagnose` end to end: our run layout (signal.txt + run.json), its formats; and
+// every measured CWRU record found beside the repository (if present), diagnosed with the rate,
+// speed and bearing its README gives and printed (nothing asserted per file: the README does not
+// say which record has which defect).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "cwru.h"
+#include "io/json.h"
+#include "synth.h"
+#include "test_util.h"
+
+namespace ohmdem::post {
+namespace {
+
+struct CliRun {
+  int status = -1;
+  std::string out;
+};
+
+// Runs a shell command line (stdout and stderr together).
+CliRun shell(const std::string &command)
+{
+  CliRun r;
+  std::unique_ptr<FILE, int (*)(FILE *)> p(popen((command + " 2>&1").c_str(), "r"), pclose);
+  if (!p) return r;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, p.get())) r.out.append(buf, n);
+  const int st = pclose(p.release());
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+CliRun run(const std::string &args)
+{
+  return shell(std::string(OHMDEM_POST_EXE) + " " + args);
+}
+
+// A run directory as our decks write it: signal.txt (R at 1 MHz) and run.json.
+std::string make_run_dir(const std::string &name, const std::string &kind)
+{
+  const std::string dir = std::string(OHMDEM_POST_TEST_TMP) + "/" + name;
+  ::mkdir(dir.c_str(), 0755);
+  test::DefectSpec spec;
+  spec.kind = kind;
+  spec.snr_db = 20;
+  spec.duration = 0.15;
+  const auto sig = test::defect_signal(bearing_preset("6208"), spec);
+  std::ofstream out(dir + "/signal.txt");
+  out << "# time omega_cage fn_inner_mean fn_outer_mean n_contacts_race R n_masked\n";
+  char buf[256];
+  // a sliding phase of 5 ms first, with a different level, that the diagnosis must skip
+  for (std::size_t i = 0; i < 5000; ++i) {
+    std::snprintf(buf, sizeof buf, "%.9g 150 24 24 26 %.9g 0\n", i * 1e-6, 1.2 + 1e-4 * (i % 97));
+    out << buf;
+  }
+  for (std::size_t i = 0; i < sig.signal.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%.9g 198.05 24.6 24.6 26 %.9g 0\n", (i + 5000) * 1e-6,
+                  sig.signal.x[i]);
+    out << buf;
+  }
+  std::ofstream(dir + "/run.json")
+      << "{\"bearing\":\"6208\",\"omega_inner\":500.0,\"nb\":13,\"db\":0.0126,\"dp\":0.0606,"
+         "\"contact_angle\":0,\"dt\":1e-6,\"defect\":\""
+      << kind << "\",\"size_deg\":1.0,\"load\":\"force\",\"F\":320,\"t_sliding_end\":0.005}\n";
+  return dir;
+}
+
+TEST(Cli, DiagnoseOurRunFromItsMetadata)
+{
+  for (const char *kind : {"inner", "outer"}) {
+    const std::string dir = make_run_dir(std::string("run_") + kind, kind);
+    const CliRun r = run("diagnose " + dir + "/signal.txt --format json");
+    ASSERT_EQ(r.status, 0) << r.out;
+    const Json j = Json::parse(r.out, "diagnose output");
+    for (const char *key : {"defect", "score", "frequency_hz", "evidence"})
+      EXPECT_TRUE(j.find(key)) << key;
+    EXPECT_EQ(j.find("defect")->string(), kind);
+    EXPECT_EQ(j.find("run_defect")->string(), kind);
+    EXPECT_TRUE(j.find("evidence")->is_array());
+    EXPECT_GT(j.find("evidence")->size(), 0u);
+    const Json *size = j.find("size");
+    ASSERT_TRUE(size && size->find("size_deg"));
+    EXPECT_NEAR(size->find("size_deg")->number(), 1.0, 0.05);
+    // the sliding phase (t < 5 ms) was skipped as run.json says
+    EXPECT_NE(j.find("meta")->find("sliding phase skipped"), nullptr);
+  }
+}
+
+TEST(Cli, DiagnoseCsvAndTable)
+{
+  const std::string dir = make_run_dir("run_csv", "inner");
+  const CliRun csv = run("diagnose " + dir + "/signal.txt --format csv");
+  ASSERT_EQ(csv.status, 0) << csv.out;
+  EXPECT_NE(csv.out.find("\ndefect,score,frequency_Hz,kinematic_Hz,size_deg,pulse_width_s,"),
+            std::string::npos);
+  EXPECT_NE(csv.out.find("\ninner,"), std::string::npos);
+  const CliRun table = run("diagnose " + dir + "/signal.txt");
+  ASSERT_EQ(table.status, 0);
+  EXPECT_NE(table.out.find("defect:        inner"), std::string::npos) << table.out;
+}
+
+// Measured data: runs `ohmdem-post diagnose` on every measured CWRU record found beside the
+// repository (if present) with the rate, speed and bearing its README gives, and prints what it
+// finds. Nothing is asserted per file: the README does not say which record has which defect.
+
+TEST(RealData, DiagnoseEveryMeasuredRecordAndPrint)
+{
+  const std::string dir = ohmdem::test::cwru_dir();
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
+  const ohmdem::test::CwruReadme rd = ohmdem::test::parse_cwru_readme(dir + "/README.md");
+  ASSERT_FALSE(rd.records.empty());
+  ASSERT_FALSE(rd.nb.empty() || rd.db_mm.empty() || rd.dp_mm.empty());
+  const std::string geometry = "--nb " + rd.nb + " --db " +
+                               std::to_string(std::stod(rd.db_mm) / 1000) + " --dp " +
+                               std::to_string(std::stod(rd.dp_mm) / 1000) + " --beta " +
+                               (rd.angle_deg.empty() ? "0" : rd.angle_deg);
+  std::printf("\n[ real data  ] %s\n[ real data  ] geometry from README: %s\n", dir.c_str(),
+              geometry.c_str());
+  std::printf("[ real data  ] %-6s %6s %-7s %6s %10s %10s  %-8s %s\n", "record", "rpm", "defect",
+              "score", "f_Hz", "kin_Hz", "spectrum", "family scores (inner outer ball cage)");
+  for (const ohmdem::test::CwruRecord &rec : rd.records) {
+    const std::string file = dir + "/" + rec.name + ".txt";
+    char rate[32], rpm[32];
+    std::snprintf(rate, sizeof rate, "%g", rec.rate);
+    std::snprintf(rpm, sizeof rpm, "%g", rec.rpm);
+    const std::string cmd = std::string(OHMDEM_POST_EXE) + " diagnose " + file + " --rate " + rate +
+                            " --rpm " + rpm + " " + geometry + " --format json 2>&1";
+    std::unique_ptr<FILE, int (*)(FILE *)> p(popen(cmd.c_str(), "r"), pclose);
+    ASSERT_TRUE(p);
+    std::string out;
+    char buf[4096];
+    while (std::size_t n = fread(buf, 1, sizeof buf, p.get())) out.append(buf, n);
+    Json j;
+    ASSERT_NO_THROW(j = Json::parse(out, rec.name)) << out;
+    const Json *fam = j.find("families");
+    ASSERT_TRUE(fam);
+    std::string spec = "-";
+    if (const Json *f = fam->find(j.find("defect")->string())) spec = f->find("spectrum")->string();
+    std::printf(
+        "[ real data  ] %-6s %6.0f %-7s %6.2f %10.3f %10.3f  %-8s %.2f %.2f %.2f %.2f\n",
+        rec.name.c_str(), rec.rpm, j.find("defect")->string().c_str(), j.find("score")->number(),
+        j.find("frequency_hz")->is_null() ? 0.0 : j.find("frequency_hz")->number(),
+        j.find("kinematic_hz")->is_null() ? 0.0 : j.find("kinematic_hz")->number(), spec.c_str(),
+        fam->find("inner")->find("score")->number(), fam->find("outer")->find("score")->number(),
+        fam->find("ball")->find("score")->number(), fam->find("cage")->find("score")->number());
+  }
+}
+
+}  // namespace
+}  // namespace ohmdem::post

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// NumPy .npy input: the fixtures of tests/post/make_npy_fixtures.py, written by numpy itself
+// (record tables, 1-D and 2-D arrays in C and Fortran order, float32 and integers, format
+// 2.0), read back value for value; the layouts numpy writes that we refuse, refused by name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "core/error.h"
+#include "io/load_signal.h"
+#include "io/read_npy.h"
+#include "io/read_table.h"
+#include "test_constants.h"
+#include "test_util.h"
+
+namespace ohmdem::post {
+namespace {
+
+using ohmdem::test::kPi;
+
+std::string npy(const std::string &name)
+{
+  return test::data("npy/" + name);
+}
+
+// make_npy_fixtures.py's signal
+double expected_x(int k)
+{
+  return 0.5 * std::sin(2 * kPi * 50 * (k / 1000.0)) + 0.01 * k;
+}
+
+std::string error_of(const std::function<void()> &f)
+{
+  try {
+    f();
+  } catch (const Error &e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+}  // namespace
+
+TEST(Npy, ReadsARecordTableByName)
+{
+  for (const char *name : {"table.npy", "table_v2.npy"}) {
+    const ColumnTable t = read_npy(npy(name));
+    ASSERT_EQ(t.names, (std::vector<std::string>{"time", "x", "n"})) << name;
+    EXPECT_TRUE(t.has_header);
+    ASSERT_EQ(t.rows(), 300u);
+    for (int k = 0; k < 300; ++k) {
+      EXPECT_EQ(t.columns[0][k], k / 1000.0);
+      EXPECT_NEAR(t.columns[1][k], expected_x(k),
+                  1e-14);  // numpy's sin and ours differ in the last bits
+      EXPECT_EQ(t.columns[2][k], std::round(1000 * expected_x(k)));
+    }
+  }
+}
+
+TEST(Npy, ReadsPlainArraysInBothOrdersAndTypes)
+{
+  const ColumnTable c = read_npy(npy("c2d.npy")), f = read_npy(npy("f2d.npy"));
+  ASSERT_EQ(c.cols(), 3u);
+  ASSERT_EQ(f.cols(), 3u);
+  EXPECT_FALSE(c.has_header);
+  for (int k = 0; k < 300; ++k)
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double want = j == 0 ? k / 1000.0 : (j == 1 ? 1 : 2) * expected_x(k);
+      EXPECT_NEAR(c.columns[j][k], want, 1e-14);
+      EXPECT_EQ(f.columns[j][k], c.columns[j][k]);  // the same numbers in the other order
+    }
+  const ColumnTable p = read_npy(npy("plain.npy")), i = read_npy(npy("int16.npy"));
+  ASSERT_EQ(p.rows(), 300u);
+  ASSERT_EQ(i.rows(), 300u);
+  for (int k = 0; k < 300; ++k) {
+    EXPECT_FLOAT_EQ(static_cast<float>(p.columns[0][k]), static_cast<float>(expected_x(k)));
+    EXPECT_EQ(i.columns[0][k], std::round(1000 * expected_x(k)));
+  }
+}
+
+TEST(Npy, RowsBeyondTheCountAreReadWithANote)
+{
+  const ColumnTable t = read_npy(npy("uncounted.npy"));
+  EXPECT_EQ(t.rows(), 300u);
+  ASSERT_FALSE(t.notes.empty());
+  EXPECT_NE(t.notes.back().find("10 whole rows beyond the header's count"), std::string::npos);
+}
+
+TEST(Npy, LoadSignalAndReadTableDetectTheFormat)
+{
+  InputOptions o;
+  o.files = {npy("table.npy")};
+  o.column = "x";
+  const Signal s = load_signal(o, RunMetadata{});
+  ASSERT_EQ(s.x.size(), 300u);
+  EXPECT_DOUBLE_EQ(s.rate, 1000.0);
+  EXPECT_NEAR(s.x[123], expected_x(123), 1e-14);
+  EXPECT_EQ(read_table(npy("c2d.npy")).cols(), 3u);  // the text reader's entry point too
+  o.files = {npy("plain.npy")};
+  o.column.clear();
+  o.rate = 1000;
+  EXPECT_EQ(load_signal(o, RunMetadata{}).x.size(), 300u);
+}
+
+TEST(Npy, ClearErrors)
+{
+  EXPECT_NE(error_of([] { read_npy(npy("big.npy")); }).find("big-endian element type '>f8'"),
+            std::string::npos);
+  EXPECT_NE(
+      error_of([] { read_npy(npy("complex.npy")); }).find("element type '<c16' is not supported"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of([] { read_npy(npy("cut.npy")); }).find("truncated: the header counts 300 rows"),
+      std::string::npos);
+  EXPECT_NE(error_of([] { read_npy(npy("subarray.npy")); }).find("sub-array"), std::string::npos);
+  EXPECT_NE(error_of([] { read_npy(test::data("print.txt")); }).find("not an .npy file"),
+            std::string::npos);
+}
+
+}  // namespace ohmdem::post
