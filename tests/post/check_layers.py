@@ -2,11 +2,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The post library's layers, checked (ctest post.layers).
 
-usage: check_layers.py POST_DIR LAYER...   (lowest layer first: core io dsp bearing report cli)
+usage: check_layers.py POST_DIR LAYER... [--shared FOLDER...]
+       (lowest layer first: core io dsp bearing report cli)
 
 Every file of POST_DIR/<layer>/ may include, among the project's headers, only headers of its
 own layer or of a layer listed before it, written from the post root ("dsp/spectrum.h"): never
-"../x.h", never a bare "x.h". Prints one line per offending include and exits 1; prints
+"../x.h", never a bare "x.h". A --shared FOLDER is a kernel folder of src_fix/lib that the post
+library shares with the engine (catalog: the bearing catalog reader); it sits below every layer. Prints one line per offending include and exits 1; prints
 "post layers: ok" otherwise.
 """
 import os
@@ -16,8 +18,9 @@ import sys
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
-def problems(post_dir, order):
+def problems(post_dir, order, shared=()):
     rank = {layer: i for i, layer in enumerate(order)}
+    rank.update({folder: -1 for folder in shared})
     found = []
     for entry in sorted(os.listdir(post_dir)):
         folder = os.path.join(post_dir, entry)
@@ -55,7 +58,9 @@ def problems(post_dir, order):
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
-    found = problems(sys.argv[1], sys.argv[2:])
+    args = sys.argv[2:]
+    cut = args.index('--shared') if '--shared' in args else len(args)
+    found = problems(sys.argv[1], args[:cut], args[cut + 1:])
     for p in found:
         print(p)
     if found:
