@@ -5,6 +5,8 @@
 * every file under src_fix/lib/ (the plain C++ kernels) includes only the standard library,
   third-party libraries (Eigen, MPI, hypre) and other files of src_fix/lib/: no LIGGGHTS
   header (lammps.h, fix.h, pointers.h, ...) and no quoted path that leaves src_fix/lib/;
+* inside src_fix/lib/, a folder includes only the folders below it (KERNEL_ARROWS; a new
+  kernel folder declares its arrows there);
 * no two folders or files of src_fix/, post/ or tests/ differ only by case (they would merge
   on a case-insensitive checkout, macOS or Windows).
 
@@ -31,6 +33,15 @@ LIGGGHTS_HEADERS = {
     "fix_property_global.h", "math_extra.h", "math_extra_liggghts.h", "properties.h",
 }
 LIGGGHTS_PREFIXES = ("fix_", "compute_", "pair_", "style_", "contact_models", "granular_")
+# The arrows inside src_fix/lib/ (doc/architecture.md): each folder and what it may include.
+KERNEL_ARROWS = {
+    "common": {"common"},
+    "contact": {"contact", "common"},
+    "network": {"network"},
+    "conduction": {"conduction", "network", "contact", "common"},
+    "writers": {"writers", "common"},
+    "catalog": {"catalog"},
+}
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 
 
@@ -71,6 +82,16 @@ def include_problems(src, extra):
                 out.append('%s: includes "%s", which is not a file of %s/' % (rel, name, KERNEL_ROOT))
             elif not all(p == lib or p.startswith(lib + os.sep) for p in found):
                 out.append('%s: includes "%s", outside %s/' % (rel, name, KERNEL_ROOT))
+            else:
+                source = os.path.relpath(path, lib).split(os.sep)[0]
+                target = os.path.relpath(found[0], lib).split(os.sep)[0]
+                allowed = KERNEL_ARROWS.get(source)
+                if allowed is None:
+                    out.append("%s: the kernel folder '%s' has no declared arrows "
+                               "(KERNEL_ARROWS in %s)" % (rel, source, os.path.basename(__file__)))
+                elif target not in allowed:
+                    out.append('%s: includes "%s": %s/ may include only %s' %
+                               (rel, name, source, ", ".join(sorted(allowed))))
     return out
 
 
@@ -118,6 +139,7 @@ def self_test():
               '#include "support/args.h"\n#include "../BEARING/fix_x.h"\n')
         write("src_fix/support/args.h")
         write("src_fix/lib/Contact/f.h")
+        write("src_fix/lib/common/up.h", '#include "contact/a.h"\n')
         write("post/Core/g.h")
         found = "\n".join(problems(root))
         expected = ['e.cpp: includes the LIGGGHTS header "pointers.h"',
@@ -125,6 +147,7 @@ def self_test():
                     'e.cpp: includes "support/args.h", which is not a file of',
                     'e.cpp: includes "../BEARING/fix_x.h"',
                     "'Contact' and 'contact' differ only by case",
+                    'up.h: includes "contact/a.h": common/ may include only common',
                     "'Core' and 'core' differ only by case"]
         missed = [e for e in expected if e not in found]
         if missed:
