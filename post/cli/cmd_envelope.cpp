@@ -11,21 +11,9 @@
 #include "core/error.h"
 #include "core/text_scan.h"
 #include "dsp/envelope.h"
+#include "report/envelope_report.h"
 
 namespace ohmdem::post::cli {
-
-namespace {
-
-// Issue 17: whether the best band's spectral kurtosis is more than a Gaussian record reaches.
-std::string significance(const Kurtogram &kg)
-{
-  return std::string(kg.significant ? "yes" : "no") + " (threshold " +
-         format_number(kg.threshold, 4) + ": a Gaussian record's best band exceeds it with " +
-         "probability " + format_number(kg.alpha) + "; " + std::to_string(kg.best.samples) +
-         " envelope samples, " + std::to_string(kg.cells.size()) + " bands searched)";
-}
-
-}  // namespace
 
 int run_envelope(const std::vector<std::string> &argv)
 {
@@ -74,36 +62,19 @@ int run_envelope(const std::vector<std::string> &argv)
     std::vector<double> x = s.x;
     const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {
-      Result r;
-      r.meta = m;
-      r.meta.emplace_back("spectral kurtosis",
-                          "E|c|^4/(E|c|^2)^2 - 2 of the band's complex "
-                          "envelope (0 for Gaussian noise)");
-      r.meta.emplace_back("best band (Hz)",
-                          format_number(kg.best.lo) + " to " + format_number(kg.best.hi));
-      r.meta.emplace_back("band kurtosis significant", significance(kg));
-      r.table.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
-      for (const auto &c : kg.cells)
-        r.table.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
-      out.write(r);
+      out.write(kurtogram_result(kg, m));
       return 0;
     }
     band = {kg.best.lo, kg.best.hi};
     m.emplace_back("band (Hz)", format_number(band.lo) + " to " + format_number(band.hi) +
                                     " (kurtogram, spectral kurtosis " +
                                     format_number(kg.best.kurtosis, 4) + ")");
-    m.emplace_back("band kurtosis significant", significance(kg));
+    m.emplace_back("band kurtosis significant", kurtogram_significance(kg));
   }
   const std::vector<double> env = envelope(s.x, s.rate, band);
   const std::string unit = unit_of(a, s.name);
   if (show == "envelope") {
-    Result r;
-    r.meta = m;
-    r.meta.emplace_back("envelope", "|analytic signal| of the band-passed signal");
-    r.table.columns = {"time_s", with_unit("envelope", unit)};
-    for (std::size_t i = 0; i < env.size(); ++i) r.table.rows.push_back({s.time(i), env[i]});
-    r.table.table_digits = 10;
-    out.write(r);
+    out.write(envelope_result(s, env, unit, m));
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, env.size(), s.rate);
