@@ -8,14 +8,28 @@ usage: check_layers.py POST_DIR LAYER... [--shared FOLDER...]
 Every file of POST_DIR/<layer>/ may include, among the project's headers, only headers of its
 own layer or of a layer listed before it, written from the post root ("dsp/spectrum.h"): never
 "../x.h", never a bare "x.h". A --shared FOLDER is a kernel folder of src_fix/lib that the post
-library shares with the engine (catalog: the bearing catalog reader); it sits below every layer. Prints one line per offending include and exits 1; prints
-"post layers: ok" otherwise.
+library shares with the engine (catalog: the bearing catalog reader); it sits below every layer.
+Only the last layer (the command line) names command-line flags: the library names its settings
+("{input.column}", core/error.h), in its messages and its comments alike. Prints one line per
+offending include or flag and exits 1; prints "post layers: ok" otherwise.
 """
 import os
 import re
 import sys
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+# a flag ("--rate") in a string literal or a comment (a decrement, "--it;", is code)
+STRING = re.compile(r'"(?:[^"\\\n]|\\.)*"')
+FLAG = re.compile(r'(?<![\w-])--[a-z][a-z-]*')
+
+
+def flags_named(text):
+    """(line number, flag) of each flag in the string literals and comments of `text`."""
+    for line_no, line in enumerate(text.split('\n'), 1):
+        code, _, comment = line.partition('//')
+        for part in STRING.findall(code) + [comment]:
+            for m in FLAG.finditer(part):
+                yield line_no, m.group(0)
 
 
 def problems(post_dir, order, shared=()):
@@ -39,6 +53,10 @@ def problems(post_dir, order, shared=()):
                 shown = os.path.relpath(path, post_dir)
                 with open(path, encoding='utf-8') as f:
                     text = f.read()
+                if entry != order[-1]:
+                    for line_no, flag in flags_named(text):
+                        found.append(f'{shown}:{line_no}: names the flag {flag}: a library file '
+                                     f'names its setting ("{{group.field}}", core/error.h)')
                 for line_no, inc in ((text.count('\n', 0, m.start()) + 1, m.group(1))
                                      for m in INCLUDE.finditer(text)):
                     where = f'{shown}:{line_no}: #include "{inc}"'
