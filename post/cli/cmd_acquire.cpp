@@ -56,23 +56,9 @@ AcquireSettings settings(const Args &a)
   return s;
 }
 
-}  // namespace
-
-int run_acquire(const std::vector<std::string> &argv)
+// The options of acquire (run_acquire parses them).
+void declare_options(Args &a)
 {
-  Args a("acquire", "[options] FILE",
-         "What an instrument records of the signal, written as a '#'-headed 'time value' table\n"
-         "(or CSV) that the other commands read. The chain, in this order, every step optional:\n"
-         "  1. column, then output = scale * input + offset (the sensor's sensitivity);\n"
-         "  2. anti-alias Butterworth low-pass (--lowpass), run at the input rate;\n"
-         "  3. sampling at --rate: every k-th sample when the rate divides the input rate,\n"
-         "     else cubic interpolation of the filtered signal at the instrument's times;\n"
-         "  4. white Gaussian noise added to each sample (the front end's noise at the ADC\n"
-         "     input): --noise-rms per sample, or --noise-density D over the output band\n"
-         "     0..rate/2, i.e. rms = D sqrt(rate/2);\n"
-         "  5. ADC: codes at LO + k q, q = (HI-LO)/2^bits, k = 0..2^bits-1, nearest code\n"
-         "     (mid-tread, ties up), values beyond the codes clipped (with a warning).\n"
-         "The time column keeps the input's clock. No option: a copy of the column.");
   add_input_options(a, "--input-rate");
   a.section("Measurement chain");
   a.option("--scale", "K",
@@ -101,6 +87,26 @@ int run_acquire(const std::vector<std::string> &argv)
   a.option("--format", "FMT", "table ('# time NAME' header, blank-separated) | csv", "table");
   a.option("--output", "FILE", "write to FILE instead of standard output");
   a.option("--unit", "UNIT", "unit of the output, written in the metadata");
+}
+
+}  // namespace
+
+int run_acquire(const std::vector<std::string> &argv)
+{
+  Args a("acquire", "[options] FILE",
+         "What an instrument records of the signal, written as a '#'-headed 'time value' table\n"
+         "(or CSV) that the other commands read. The chain, in this order, every step optional:\n"
+         "  1. column, then output = scale * input + offset (the sensor's sensitivity);\n"
+         "  2. anti-alias Butterworth low-pass (--lowpass), run at the input rate;\n"
+         "  3. sampling at --rate: every k-th sample when the rate divides the input rate,\n"
+         "     else cubic interpolation of the filtered signal at the instrument's times;\n"
+         "  4. white Gaussian noise added to each sample (the front end's noise at the ADC\n"
+         "     input): --noise-rms per sample, or --noise-density D over the output band\n"
+         "     0..rate/2, i.e. rms = D sqrt(rate/2);\n"
+         "  5. ADC: codes at LO + k q, q = (HI-LO)/2^bits, k = 0..2^bits-1, nearest code\n"
+         "     (mid-tread, ties up), values beyond the codes clipped (with a warning).\n"
+         "The time column keeps the input's clock. No option: a copy of the column.");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   const AcquireSettings set = settings(a);
   const RunMetadata meta = run_metadata(a);

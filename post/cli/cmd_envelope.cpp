@@ -15,14 +15,11 @@
 
 namespace ohmdem::post::cli {
 
-int run_envelope(const std::vector<std::string> &argv)
+namespace {
+
+// The options of envelope (run_envelope parses them).
+void declare_options(Args &a)
 {
-  Args a("envelope", "[options] FILE...",
-         "Envelope analysis: the signal is band-passed (ideal filter in the frequency domain),\n"
-         "its analytic signal formed with FFTW (Hilbert transform) and its magnitude taken;\n"
-         "the envelope's spectrum (mean removed) shows repetition frequencies of impulses.\n"
-         "Without --band the whole band is used, unless --kurtogram picks the band of largest\n"
-         "spectral kurtosis.");
   add_input_options(a);
   a.section("Envelope");
   a.option("--band", "F1 F2", "band-pass edges (Hz) (default: 0 to Nyquist)", "", 2);
@@ -39,6 +36,19 @@ int run_envelope(const std::vector<std::string> &argv)
   add_peak_options(a);
   add_bearing_options(a);
   add_output_options(a);
+}
+
+}  // namespace
+
+int run_envelope(const std::vector<std::string> &argv)
+{
+  Args a("envelope", "[options] FILE...",
+         "Envelope analysis: the signal is band-passed (ideal filter in the frequency domain),\n"
+         "its analytic signal formed with FFTW (Hilbert transform) and its magnitude taken;\n"
+         "the envelope's spectrum (mean removed) shows repetition frequencies of impulses.\n"
+         "Without --band the whole band is used, unless --kurtogram picks the band of largest\n"
+         "spectral kurtosis.");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 64);

@@ -129,16 +129,9 @@ void set_size(const Args &a, Figure &fig)
   fig.height = h;
 }
 
-}  // namespace
-
-int run_plot(const std::vector<std::string> &argv)
+// The options of plot (run_plot parses them).
+void declare_options(Args &a)
 {
-  Args a("plot",
-         "--kind signal|spectrum|envelope|spectrogram|indicators --output FIG.png [options] FILE",
-         "PNG figures rendered by gnuplot (pngcairo): the signal; its spectrum or envelope\n"
-         "spectrum with the bearing's defect frequencies (FTF, BPFO, BPFI, 2xBSF and harmonics)\n"
-         "marked; a spectrogram with them as curves following the shaft speed; indicators\n"
-         "versus a swept parameter from a CSV/table (e.g. collected stats).");
   a.section("Figure");
   a.option("--kind", "KIND", "signal | spectrum | envelope | spectrogram | indicators", "signal");
   a.option("--output", "FILE", "the PNG to write (required)");
@@ -162,6 +155,19 @@ int run_plot(const std::vector<std::string> &argv)
   add_bearing_options(a);
   add_shaft_angle_options(a);
   a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
+}
+
+}  // namespace
+
+int run_plot(const std::vector<std::string> &argv)
+{
+  Args a("plot",
+         "--kind signal|spectrum|envelope|spectrogram|indicators --output FIG.png [options] FILE",
+         "PNG figures rendered by gnuplot (pngcairo): the signal; its spectrum or envelope\n"
+         "spectrum with the bearing's defect frequencies (FTF, BPFO, BPFI, 2xBSF and harmonics)\n"
+         "marked; a spectrogram with them as curves following the shaft speed; indicators\n"
+         "versus a swept parameter from a CSV/table (e.g. collected stats).");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
   const std::string kind =
