@@ -25,7 +25,7 @@ std::vector<std::string> catalog_names(const std::string &dir)
   try {
     return catalog::catalog_names(dir);
   } catch (const catalog::CatalogError &e) {
-    throw Error(std::string(e.what()) + " (--catalog DIR or OHMDEM_CATALOG)");
+    throw SettingError(std::string(e.what()) + " ({catalog.dir} DIR or OHMDEM_CATALOG)");
   }
 }
 
@@ -45,8 +45,10 @@ CatalogEntry catalog_entry(const std::string &dir, const std::string &name)
 {
   const std::vector<std::string> names = catalog_names(dir);
   if (std::find(names.begin(), names.end(), name) == names.end())
-    throw Error("bearing '" + name + "' is not in the catalog " + dir + "; known bearings: " +
-                catalog::joined_names(names) + " (or give --nb --db --dp [--beta] explicitly)");
+    throw SettingError("bearing '" + name + "' is not in the catalog " + dir +
+                       "; known bearings: " + catalog::joined_names(names) +
+                       " (or give {geometry.nb} {geometry.db} {geometry.dp} "
+                       "[{geometry.contact_angle_deg}] explicitly)");
   return read_catalog_file(dir + "/" + name, name);
 }
 
@@ -57,13 +59,15 @@ BearingGeometry bearing_preset(const std::string &name)
 
 void validate(const BearingGeometry &g)
 {
-  if (g.nb < 1) throw Error("ball count --nb must be a positive integer");
-  if (!(g.db > 0)) throw Error("ball diameter --db must be > 0 (m), got " + format_number(g.db));
+  if (g.nb < 1) throw SettingError("ball count {geometry.nb} must be a positive integer");
+  if (!(g.db > 0))
+    throw SettingError("ball diameter {geometry.db} must be > 0 (m), got " + format_number(g.db));
   if (!(g.dp > g.db))
-    throw Error("pitch diameter --dp (" + format_number(g.dp) +
-                " m) must exceed the ball diameter --db (" + format_number(g.db) + " m)");
+    throw SettingError("pitch diameter {geometry.dp} (" + format_number(g.dp) +
+                       " m) must exceed the ball diameter {geometry.db} (" + format_number(g.db) +
+                       " m)");
   if (!(std::fabs(g.contact_angle_deg) < 90))
-    throw Error("contact angle --beta must lie in (-90, 90) degrees");
+    throw SettingError("contact angle {geometry.contact_angle_deg} must lie in (-90, 90) degrees");
 }
 
 DefectFrequencies defect_frequencies(const BearingGeometry &g, double fr)

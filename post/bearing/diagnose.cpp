@@ -85,8 +85,8 @@ std::string times(int h, const char *name)
   return std::to_string(h) + "x" + name;
 }
 
-// Harmonics of f0 (at most --harmonics) whose comb, searched within the tolerance, and whose
-// decoys (up to 1.3 f0) stay below the highest resolved frequency f_top.
+// Harmonics of f0 (at most DiagnoseOptions::harmonics) whose comb, searched within the tolerance,
+// and whose decoys (up to 1.3 f0) stay below the highest resolved frequency f_top.
 int harmonics_below_nyquist(double f0, const DiagnoseOptions &opt, double f_top)
 {
   const double reach = 1.3 * (1 + opt.tolerance) * f0;
@@ -276,9 +276,10 @@ double defect_angle(const std::string &defect, double f, double tau, int nb)
 Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
 {
   require_samples(s, 256, "diagnose");
-  if (opt.harmonics < 1 || opt.harmonics > 50) throw Error("option --harmonics expects 1..50");
+  if (opt.harmonics < 1 || opt.harmonics > 50)
+    throw SettingError("option {diagnose.harmonics} expects 1..50");
   if (!(opt.tolerance > 0 && opt.tolerance < 0.2))
-    throw Error("option --tolerance expects a fraction in (0, 0.2)");
+    throw SettingError("option {diagnose.tolerance} expects a fraction in (0, 0.2)");
   Diagnosis d;
   d.kinematics = defect_frequencies(opt.geometry, opt.fr);
   const DefectFrequencies &k = d.kinematics;
@@ -321,8 +322,9 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   std::vector<double> base;
   if (opt.baseline) {
     if (std::fabs(opt.baseline->rate / s.rate - 1) > 1e-9)
-      throw Error("--baseline: sampling rate " + format_number(opt.baseline->rate, 10) +
-                  " Hz differs from the record's " + format_number(s.rate, 10) + " Hz");
+      throw SettingError("{diagnose.baseline}: sampling rate " +
+                         format_number(opt.baseline->rate, 10) + " Hz differs from the record's " +
+                         format_number(s.rate, 10) + " Hz");
     base = opt.baseline->x;
     detrend(base.data(), base.size(), Detrend::Mean);
   }

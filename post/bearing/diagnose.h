@@ -53,8 +53,8 @@ struct FamilyScore {
   // above the baseline's spectrum at the same frequency; NaN without a baseline.
   double baseline_excess = std::numeric_limits<double>::quiet_NaN();
   std::string spectrum;  // which spectrum gave the score
-  // harmonics scored: --harmonics, fewer when the comb (and its decoys, up to 1.3 x) would
-  // pass Nyquist; 0 when even the fundamental does (the family cannot be seen at this rate)
+  // harmonics scored: DiagnoseOptions::harmonics, fewer when the comb (and its decoys, up to 1.3 x)
+  // would pass Nyquist; 0 when even the fundamental does (the family cannot be seen at this rate)
   int harmonics = 0;
   std::vector<Evidence> evidence;
 };

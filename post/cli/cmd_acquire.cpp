@@ -9,7 +9,7 @@
 #include "core/error.h"
 #include "core/text_scan.h"
 #include "dsp/acquire.h"
-#include "io/json.h"
+#include "report/acquire_report.h"
 
 namespace ohmdem {
 const char *version();
@@ -56,78 +56,9 @@ AcquireSettings settings(const Args &a)
   return s;
 }
 
-std::string setting_lines(const Args &a, const AcquireSettings &s, const Acquisition &q,
-                          double fs_in, const std::string &unit)
+// The options of acquire (run_acquire parses them).
+void declare_options(Args &a)
 {
-  const Signal &y = q.signal;
-  auto line = [](const std::string &k, const std::string &v) { return "# " + k + ": " + v + "\n"; };
-  std::string m;
-  m +=
-      line("chain", "scale/offset -> anti-alias low-pass (input rate) -> sampling -> noise -> ADC");
-  m += line("scale", format_number(s.scale, 10) + " (output = scale * input + offset)");
-  m += line("offset", format_number(s.offset, 10));
-  if (q.filter.empty())
-    m += line("lowpass", "none");
-  else
-    m += line("lowpass", "Butterworth order " + std::to_string(s.order) + ", cut-off " +
-                             format_number(s.lowpass) + " Hz (-3 dB), " +
-                             std::to_string(q.filter.size()) + " sections at " +
-                             format_number(fs_in, 10) + " Hz, " +
-                             (s.steady_start ? "steady" : "zero") + " initial state");
-  if (q.decimation == 1 && !a.has("--rate"))
-    m += line("sampling", "the input's samples");
-  else if (q.decimation > 0)
-    m += line("sampling", "every k-th sample of the input, k = " + std::to_string(q.decimation));
-  else
-    m += line("sampling",
-              "cubic (4-point Lagrange) interpolation at " + format_number(y.rate, 10) +
-                  " Hz; error on a tone at f <= (3/128)(2 pi f/" + format_number(fs_in, 10) +
-                  ")^4 of its amplitude (" +
-                  format_number(
-                      cubic_interpolation_error(s.lowpass > 0 ? s.lowpass : y.rate / 2, fs_in), 3) +
-                  (s.lowpass > 0 ? " at the cut-off)" : " at the output Nyquist frequency)"));
-  if (q.noise_sigma > 0)
-    m += line("noise", "white Gaussian added to the samples, rms " +
-                           format_number(q.noise_sigma, 10) + " (" +
-                           (s.noise_density > 0 ? "density " + format_number(s.noise_density, 10) +
-                                                      " per sqrt(Hz) over 0 to rate/2 = " +
-                                                      format_number(y.rate / 2, 10) + " Hz"
-                                                : std::string("--noise-rms")) +
-                           (a.has("--input-referred") ? ", input-referred x |scale|" : "") +
-                           "), mt19937_64 + Box-Muller, seed " + std::to_string(s.seed));
-  else
-    m += line("noise", "none");
-  if (s.bits > 0)
-    m += line("adc", std::to_string(s.bits) + " bits, range " + format_number(s.lo, 10) + " to " +
-                         format_number(s.hi, 10) + ", q = " + format_number(q.q, 10) +
-                         ", mid-tread (levels LO + k q), clipped " + std::to_string(q.clipped) +
-                         " of " + std::to_string(y.size()));
-  else
-    m += line("adc", "none");
-  if (!unit.empty()) m += line("unit", unit);
-  m += line("sampling rate (Hz)", format_number(y.rate, 10));
-  m += line("samples", std::to_string(y.size()));
-  m += line("duration (s)", format_number(y.duration()));
-  return m;
-}
-
-}  // namespace
-
-int run_acquire(const std::vector<std::string> &argv)
-{
-  Args a("acquire", "[options] FILE",
-         "What an instrument records of the signal, written as a '#'-headed 'time value' table\n"
-         "(or CSV) that the other commands read. The chain, in this order, every step optional:\n"
-         "  1. column, then output = scale * input + offset (the sensor's sensitivity);\n"
-         "  2. anti-alias Butterworth low-pass (--lowpass), run at the input rate;\n"
-         "  3. sampling at --rate: every k-th sample when the rate divides the input rate,\n"
-         "     else cubic interpolation of the filtered signal at the instrument's times;\n"
-         "  4. white Gaussian noise added to each sample (the front end's noise at the ADC\n"
-         "     input): --noise-rms per sample, or --noise-density D over the output band\n"
-         "     0..rate/2, i.e. rms = D sqrt(rate/2);\n"
-         "  5. ADC: codes at LO + k q, q = (HI-LO)/2^bits, k = 0..2^bits-1, nearest code\n"
-         "     (mid-tread, ties up), values beyond the codes clipped (with a warning).\n"
-         "The time column keeps the input's clock. No option: a copy of the column.");
   add_input_options(a, "--input-rate");
   a.section("Measurement chain");
   a.option("--scale", "K",
@@ -156,6 +87,26 @@ int run_acquire(const std::vector<std::string> &argv)
   a.option("--format", "FMT", "table ('# time NAME' header, blank-separated) | csv", "table");
   a.option("--output", "FILE", "write to FILE instead of standard output");
   a.option("--unit", "UNIT", "unit of the output, written in the metadata");
+}
+
+}  // namespace
+
+int run_acquire(const std::vector<std::string> &argv)
+{
+  Args a("acquire", "[options] FILE",
+         "What an instrument records of the signal, written as a '#'-headed 'time value' table\n"
+         "(or CSV) that the other commands read. The chain, in this order, every step optional:\n"
+         "  1. column, then output = scale * input + offset (the sensor's sensitivity);\n"
+         "  2. anti-alias Butterworth low-pass (--lowpass), run at the input rate;\n"
+         "  3. sampling at --rate: every k-th sample when the rate divides the input rate,\n"
+         "     else cubic interpolation of the filtered signal at the instrument's times;\n"
+         "  4. white Gaussian noise added to each sample (the front end's noise at the ADC\n"
+         "     input): --noise-rms per sample, or --noise-density D over the output band\n"
+         "     0..rate/2, i.e. rms = D sqrt(rate/2);\n"
+         "  5. ADC: codes at LO + k q, q = (HI-LO)/2^bits, k = 0..2^bits-1, nearest code\n"
+         "     (mid-tread, ties up), values beyond the codes clipped (with a warning).\n"
+         "The time column keeps the input's clock. No option: a copy of the column.");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   const AcquireSettings set = settings(a);
   const RunMetadata meta = run_metadata(a);
@@ -172,23 +123,14 @@ int run_acquire(const std::vector<std::string> &argv)
     throw Error("option --format expects table|csv for acquire (the other commands read them)");
   for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << flag_named(w) << "\n";
 
-  std::string text =
-      "# ohmdem-post " + std::string(ohmdem::version()) + " acquire: what an instrument records\n";
-  for (const auto &kv : s.meta)
-    text +=
-        "# " + (kv.first == "source" ? kv.first : "input " + kv.first) + ": " + kv.second + "\n";
-  text += setting_lines(a, set, q, s.rate, a.get("--unit"));
-  const bool csv = out.format() == OutputFormat::Csv;
-  text += csv ? "time," + name + "\n" : "# time " + name + "\n";
-  const char sep = csv ? ',' : ' ';
-  const Signal &y = q.signal;
-  for (std::size_t i = 0; i < y.size(); ++i) {
-    text += json_number(y.time(i));
-    text += sep;
-    text += json_number(y.x[i]);
-    text += '\n';
-  }
-  out.stream() << text;
+  AcquisitionContext c;
+  c.input_rate = s.rate;
+  c.rate_given = a.has("--rate");
+  c.input_referred = a.has("--input-referred");
+  c.unit = a.get("--unit");
+  out.stream() << acquisition_head(ohmdem::version(), s.meta)
+               << flag_named(acquisition_chain(set, q, c))
+               << acquisition_table(q.signal, name, out.format() == OutputFormat::Csv);
   out.stream().flush();
   if (!out.stream()) throw Error("acquire: writing the output failed");
   return 0;

@@ -249,7 +249,8 @@ MetaList collect_meta(const Args &a, const std::vector<std::string> &given, bool
 // warnings.
 RunFolders runs_in(const std::vector<std::string> &given, bool recursive)
 {
-  const RunFolders folders = find_run_folders(given, recursive);
+  RunFolders folders = find_run_folders(given, recursive);
+  for (auto &sk : folders.skipped) sk.second = flag_named(sk.second);  // "{runs.recursive}"
   if (folders.runs.empty()) {  // one error line, with the reasons, instead of the warnings
     std::string why;
     for (std::size_t k = 0; k < folders.skipped.size() && k < 4; ++k)

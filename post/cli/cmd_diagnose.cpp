@@ -16,6 +16,17 @@
 
 namespace ohmdem::post::cli {
 
+namespace {
+
+// The detection's notes name settings ("{detect.baseline}"): the user reads the flags.
+void name_flags(Detection &det)
+{
+  det.gaussian_note = flag_named(det.gaussian_note);
+  for (DetectionTest &t : det.tests) t.note = flag_named(t.note);
+}
+
+}  // namespace
+
 int run_diagnose(const std::vector<std::string> &argv)
 {
   Args a(
@@ -94,7 +105,8 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "
         "diagnosed in the angle domain); give a record at constant speed");
-  const Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  name_flags(d.detection);
   if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);

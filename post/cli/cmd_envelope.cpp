@@ -11,30 +11,15 @@
 #include "core/error.h"
 #include "core/text_scan.h"
 #include "dsp/envelope.h"
+#include "report/envelope_report.h"
 
 namespace ohmdem::post::cli {
 
 namespace {
 
-// Issue 17: whether the best band's spectral kurtosis is more than a Gaussian record reaches.
-std::string significance(const Kurtogram &kg)
+// The options of envelope (run_envelope parses them).
+void declare_options(Args &a)
 {
-  return std::string(kg.significant ? "yes" : "no") + " (threshold " +
-         format_number(kg.threshold, 4) + ": a Gaussian record's best band exceeds it with " +
-         "probability " + format_number(kg.alpha) + "; " + std::to_string(kg.best.samples) +
-         " envelope samples, " + std::to_string(kg.cells.size()) + " bands searched)";
-}
-
-}  // namespace
-
-int run_envelope(const std::vector<std::string> &argv)
-{
-  Args a("envelope", "[options] FILE...",
-         "Envelope analysis: the signal is band-passed (ideal filter in the frequency domain),\n"
-         "its analytic signal formed with FFTW (Hilbert transform) and its magnitude taken;\n"
-         "the envelope's spectrum (mean removed) shows repetition frequencies of impulses.\n"
-         "Without --band the whole band is used, unless --kurtogram picks the band of largest\n"
-         "spectral kurtosis.");
   add_input_options(a);
   a.section("Envelope");
   a.option("--band", "F1 F2", "band-pass edges (Hz) (default: 0 to Nyquist)", "", 2);
@@ -51,6 +36,19 @@ int run_envelope(const std::vector<std::string> &argv)
   add_peak_options(a);
   add_bearing_options(a);
   add_output_options(a);
+}
+
+}  // namespace
+
+int run_envelope(const std::vector<std::string> &argv)
+{
+  Args a("envelope", "[options] FILE...",
+         "Envelope analysis: the signal is band-passed (ideal filter in the frequency domain),\n"
+         "its analytic signal formed with FFTW (Hilbert transform) and its magnitude taken;\n"
+         "the envelope's spectrum (mean removed) shows repetition frequencies of impulses.\n"
+         "Without --band the whole band is used, unless --kurtogram picks the band of largest\n"
+         "spectral kurtosis.");
+  declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 64);
@@ -74,36 +72,19 @@ int run_envelope(const std::vector<std::string> &argv)
     std::vector<double> x = s.x;
     const Kurtogram kg = kurtogram(x, s.rate, levels, min_bw);
     if (show == "kurtogram") {
-      Result r;
-      r.meta = m;
-      r.meta.emplace_back("spectral kurtosis",
-                          "E|c|^4/(E|c|^2)^2 - 2 of the band's complex "
-                          "envelope (0 for Gaussian noise)");
-      r.meta.emplace_back("best band (Hz)",
-                          format_number(kg.best.lo) + " to " + format_number(kg.best.hi));
-      r.meta.emplace_back("band kurtosis significant", significance(kg));
-      r.table.columns = {"bands", "f_low_Hz", "f_high_Hz", "center_Hz", "spectral_kurtosis"};
-      for (const auto &c : kg.cells)
-        r.table.rows.push_back({c.bands, c.lo, c.hi, (c.lo + c.hi) / 2, c.kurtosis});
-      out.write(r);
+      out.write(kurtogram_result(kg, m));
       return 0;
     }
     band = {kg.best.lo, kg.best.hi};
     m.emplace_back("band (Hz)", format_number(band.lo) + " to " + format_number(band.hi) +
                                     " (kurtogram, spectral kurtosis " +
                                     format_number(kg.best.kurtosis, 4) + ")");
-    m.emplace_back("band kurtosis significant", significance(kg));
+    m.emplace_back("band kurtosis significant", kurtogram_significance(kg));
   }
   const std::vector<double> env = envelope(s.x, s.rate, band);
   const std::string unit = unit_of(a, s.name);
   if (show == "envelope") {
-    Result r;
-    r.meta = m;
-    r.meta.emplace_back("envelope", "|analytic signal| of the band-passed signal");
-    r.table.columns = {"time_s", with_unit("envelope", unit)};
-    for (std::size_t i = 0; i < env.size(); ++i) r.table.rows.push_back({s.time(i), env[i]});
-    r.table.table_digits = 10;
-    out.write(r);
+    out.write(envelope_result(s, env, unit, m));
     return 0;
   }
   const SpectrumOptions so = spectrum_options(a, env.size(), s.rate);

@@ -35,8 +35,21 @@ const SettingFlags &setting_flags()
       {"orders.speed_unit", "--speed-unit"},
       {"orders.samples_per_rev", "--samples-per-rev"},
       {"detect.baseline", "--baseline"},
+      {"detect.false_alarm", "--false-alarm"},
+      // DiagnoseOptions (bearing/diagnose.h), BearingGeometry and the catalog (bearing/bearing.h)
+      {"diagnose.harmonics", "--harmonics"},
+      {"diagnose.tolerance", "--tolerance"},
+      {"diagnose.baseline", "--baseline"},
+      {"geometry.nb", "--nb"},
+      {"geometry.db", "--db"},
+      {"geometry.dp", "--dp"},
+      {"geometry.contact_angle_deg", "--beta"},
+      {"catalog.dir", "--catalog"},
+      // find_run_folders (io/run_folders.h)
+      {"runs.recursive", "--recursive"},
       // row selection (io/table_select.h), output form (report/report.h)
       {"select.where", "--where"},
+      {"indicators.y", "--y"},
       {"report.format", "--format"},
       // AcquireSettings (dsp/acquire.h)
       {"acquire.scale", "--scale"},

@@ -4,8 +4,6 @@
 #include <climits>
 #include <limits>
 
-#include "bearing/defect_lines.h"
-#include "bearing/fault_bands.h"
 #include "cli/common.h"
 #include "core/error.h"
 
@@ -77,96 +75,21 @@ PeakOptions peak_options(const Args &a)
   return p;
 }
 
-MetaList spectrum_meta(const Spectrum &s, Detrend d)
-{
-  return {{"spectrum", std::string("one-sided ") + scaling_name(s.scaling) +
-                           (s.scaling == Scaling::Amplitude ? " (window coherent gain corrected)"
-                            : s.scaling == Scaling::Psd     ? " (ENBW corrected)"
-                                                            : "")},
-          {"window", window_name(s.window)},
-          {"detrend", detrend_name(d)},
-          {"segment (samples)", std::to_string(s.segment)},
-          {"segments averaged", std::to_string(s.segments)},
-          {"nfft", std::to_string(s.nfft)},
-          {"bin spacing (Hz)", format_number(s.df)},
-          {"ENBW (Hz)", format_number(s.enbw_hz)}};
-}
-
-namespace {
-
-Result fault_band_result(const Spectrum &s, MetaList meta, const std::string &unit,
-                         const DefectFrequencies &k, int harmonics, double tol)
-{
-  Result r;
-  r.meta = std::move(meta);
-  r.meta.emplace_back("fault bands", "harmonic h x f, +-" + format_number(100 * tol) +
-                                         " % (at least one bin); band power = sum of A^2/2 "
-                                         "over the band / ENBW in bins");
-  r.table.columns = {"label",
-                     "f_low_Hz",
-                     "f_high_Hz",
-                     "center_Hz",
-                     with_unit("peak_amplitude", unit),
-                     "peak_frequency_Hz",
-                     with_unit("band_power", unit.empty() ? "" : unit + "^2")};
-  for (const FaultBand &b : fault_bands(s, k, harmonics, tol))
-    r.table.rows.push_back(
-        {b.label, b.lo, b.hi, b.center, b.peak_amplitude, b.peak_frequency, b.power});
-  return r;
-}
-
-}  // namespace
-
 Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const std::string &unit,
                        const std::optional<DefectFrequencies> &kin, const char *what, bool bins)
 {
   const PeakOptions po = peak_options(a);
   const double tol = tolerance_option(a);
   const int harmonics = harmonics_option(a, 5);
-  const std::string vunit = s.scaling == Scaling::Amplitude ? unit
-                            : unit.empty() ? std::string(s.scaling == Scaling::Psd ? "per_Hz" : "")
-                                           : unit + scaling_unit(s.scaling);
-  const std::string vname = with_unit(scaling_name(s.scaling), vunit);
-  if (bins) {
-    Result r;
-    r.meta = std::move(meta);
-    r.table.columns = {"frequency_Hz", vname};
-    r.table.table_digits = 8;
-    Json fs = Json::array(), vs = Json::array();  // JSON: the two columns as arrays
-    for (std::size_t k = 0; k < s.bins(); ++k) {
-      const double f = s.frequency(k);
-      if (f < po.fmin || f > po.fmax) continue;
-      r.table.rows.push_back({f, s.value[k]});
-      fs.push_back(f);
-      vs.push_back(s.value[k]);
-    }
-    r.json = Json::object();
-    r.json.set("meta", meta_json(r.meta));
-    r.json.set("frequency_hz", fs);
-    r.json.set(vname, vs);
-    return r;
-  }
+  const std::string vname = spectrum_value_name(s, unit);
+  if (bins) return spectrum_bins_result(s, std::move(meta), vname, po.fmin, po.fmax);
   if (a.has("--fault-bands")) {
     if (!kin)
       throw Error("--fault-bands needs the bearing and the shaft speed (options or run.json)");
-    return fault_band_result(s, std::move(meta), unit, *kin, harmonics, tol);
+    return fault_band_result(fault_bands(s, *kin, harmonics, tol), std::move(meta), unit, tol);
   }
-  Result r;
-  r.meta = std::move(meta);
-  r.meta.emplace_back("peaks", std::string(what) + ", largest first, prominence >= " +
-                                   format_number(po.min_prominence_db) +
-                                   " dB over the local "
-                                   "median, " +
-                                   (po.interpolate ? "interpolated" : "bin values"));
-  r.table.columns = {"rank", "frequency_Hz", vname, "prominence_dB"};
-  if (kin) r.table.columns.push_back("label");
-  int rank = 0;
-  for (const Peak &p : find_peaks(s, po)) {
-    std::vector<Cell> row{++rank, p.frequency, p.value, p.prominence_db};
-    if (kin) row.emplace_back(label_frequency(p.frequency, *kin, harmonics, tol));
-    r.table.rows.push_back(row);
-  }
-  return r;
+  return spectrum_peaks_result(find_peaks(s, po), std::move(meta), vname, what, po,
+                               kin ? &*kin : nullptr, harmonics, tol);
 }
 
 }  // namespace ohmdem::post::cli

@@ -12,6 +12,7 @@
 #include "dsp/peaks.h"
 #include "dsp/spectrum.h"
 #include "report/report.h"
+#include "report/spectrum_report.h"
 
 namespace ohmdem::post::cli {
 
@@ -19,9 +20,9 @@ void add_spectrum_options(Args &a, const char *default_scale);
 SpectrumOptions spectrum_options(const Args &a, std::size_t n, double rate);
 void add_peak_options(Args &a);
 PeakOptions peak_options(const Args &a);
-MetaList spectrum_meta(const Spectrum &s, Detrend d);
 
-// The peaks (default), every bin in [fmin, fmax] (`bins`) or the fault bands (--fault-bands).
+// The peaks (default), every bin in [fmin, fmax] (`bins`) or the fault bands (--fault-bands),
+// rendered by report/spectrum_report.
 Result spectrum_result(const Args &a, const Spectrum &s, MetaList meta, const std::string &unit,
                        const std::optional<DefectFrequencies> &kin, const char *what, bool bins);
 

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <system_error>
 
 #include "core/error.h"
 #include "core/text_scan.h"
@@ -36,7 +38,10 @@ std::size_t ColumnTable::find(const std::string &key) const
   if (!key.empty() && std::all_of(key.begin(), key.end(), [](char ch) {
         return std::isdigit(static_cast<unsigned char>(ch));
       })) {
-    const long long k = parse_option_int("--column", key);
+    // all digits: only a number too large for long long fails
+    long long k = 0;
+    if (std::from_chars(key.data(), key.data() + key.size(), k).ec != std::errc())
+      throw SettingError("option {input.column} expects an integer, got '" + key + "'");
     if (k >= 1 && static_cast<std::size_t>(k) <= names.size())
       return static_cast<std::size_t>(k - 1);
     throw Error(source + ": column number " + key + " out of range 1.." +

@@ -32,12 +32,12 @@ struct AcquireSettings {
   double lo = 0, hi = 0;  // ADC input range
 };
 
-// Throws Error naming the command-line option for an impossible setting.
+// Throws SettingError naming the setting ("{acquire.rate}") for an impossible one.
 void validate(const AcquireSettings &s, double input_rate);
 
 struct Acquisition {
   Signal signal;               // the record (t0 = the input's first time)
-  Sos filter;                  // the anti-alias filter's sections (empty without --lowpass)
+  Sos filter;                  // the anti-alias filter's sections (empty without a low-pass)
   std::size_t decimation = 0;  // k when every k-th sample was taken; 0 when interpolated
   double noise_sigma = 0;      // rms of the added noise
   double q = 0;                // ADC step (HI - LO) / 2^bits

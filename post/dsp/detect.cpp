@@ -295,7 +295,7 @@ std::vector<DetectionTest> baseline_tests(const std::vector<double> &x, double r
 Detection detect(const std::vector<double> &x, double rate, const DetectOptions &opt,
                  const std::vector<double> *baseline)
 {
-  check_probability(opt.false_alarm, "--false-alarm");
+  check_probability(opt.false_alarm, "{detect.false_alarm}");
   if (x.size() < 256) throw Error("detection needs at least 256 samples");
   Detection d;
   d.white_floor = white_floor_ratio(x);
@@ -304,7 +304,7 @@ Detection detect(const std::vector<double> &x, double rate, const DetectOptions 
                         ? "white noise floor " + format_number(d.white_floor, 3) + " of the spread"
                         : "no noise floor (white floor " + format_number(d.white_floor, 3) +
                               " of the spread < " + format_number(kMinWhiteFloor) +
-                              "): a deterministic record, judged only against --baseline";
+                              "): a deterministic record, judged only against {detect.baseline}";
   std::vector<DetectionTest> g = {gaussian_kurtosis(x, opt.false_alarm),
                                   gaussian_crest(x, opt.false_alarm), gaussian_band(x, rate, opt)};
   for (auto &t : g) {
@@ -317,7 +317,7 @@ Detection detect(const std::vector<double> &x, double rate, const DetectOptions 
     // Gaussian statistics are shown for information only.
     if (baseline && t.applicable) {
       t.applicable = false;
-      t.note = "for information: with --baseline the healthy record is the reference";
+      t.note = "for information: with {detect.baseline} the healthy record is the reference";
     }
     if (!t.applicable) t.fired = false;
     d.tests.push_back(t);

@@ -60,7 +60,7 @@ double student_t_sf(double t, double nu)
 
 double check_probability(double p, const char *what)
 {
-  if (!(p > 0 && p < 1)) throw Error(std::string(what) + ": probability must be in (0, 1)");
+  if (!(p > 0 && p < 1)) throw SettingError(std::string(what) + ": probability must be in (0, 1)");
   return p;
 }
 

@@ -32,7 +32,8 @@ double crest_threshold(double n, double p);
 double spectral_kurtosis_sf(double sk, double m);
 double spectral_kurtosis_threshold(double m, double p);
 
-// Throws Error naming `what` unless 0 < p < 1.
+// Throws SettingError naming `what` (a setting as "{group.field}", or a function) unless
+// 0 < p < 1.
 double check_probability(double p, const char *what);
 
 }  // namespace ohmdem::post

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A small JSON value: built by the commands for `--format json`, parsed for run.json metadata.
+// A small JSON value: built by the commands for their JSON form, parsed for run.json metadata.
 // Objects keep insertion order so output is deterministic; non-finite numbers print as null.
 #ifndef OHMDEM_POST_JSON_H
 #define OHMDEM_POST_JSON_H

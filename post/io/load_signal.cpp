@@ -17,7 +17,7 @@ namespace ohmdem::post {
 
 namespace {
 
-// MAT files are binary: recognised by --input mat, the .mat extension, or their header (probed
+// MAT files are binary: recognised by the format "mat", the .mat extension, or their header (probed
 // on regular files only: a pipe cannot be read twice) before any text reader opens them.
 bool is_mat_input(const InputOptions &opt)
 {
@@ -29,8 +29,8 @@ bool is_mat_input(const InputOptions &opt)
   return has_mat_extension(f) || (std::filesystem::is_regular_file(f, ec) && has_mat_header(f));
 }
 
-// .npy files likewise: --input npy, or their magic (the extension alone is not trusted); a
-// binary table is a table (`--input table`, what collect asks for, reads it too).
+// .npy files likewise: the format "npy", or their magic (the extension alone is not trusted); a
+// binary table is a table (the format "table", what collect asks for, reads it too).
 bool is_npy_input(const InputOptions &opt)
 {
   if (opt.format == "npy") return true;
@@ -73,7 +73,7 @@ double step_length(const InputOptions &opt, const RunMetadata &meta, double from
 struct Samples {
   std::vector<double> t, x;
   double t_resolution = 0;
-  double rate = 0;  // > 0: uniform by declaration (--rate), t is ignored
+  double rate = 0;  // > 0: uniform by declaration (InputOptions::rate), t is ignored
   RowLines lines;
   std::string where, name;
   std::string column;  // as named in the file, for messages

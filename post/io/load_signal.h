@@ -19,7 +19,7 @@ struct InputOptions {
   std::vector<std::string> files;
   std::string format = "auto";  // auto | table | log | dump | mat
   std::string column;           // name or 1-based number; empty = the obvious one
-  std::string time_column;      // name or number; "none" = use --rate; empty = auto
+  std::string time_column;      // name or number; "none" = use `rate`; empty = auto
   double rate = 0;              // Hz, for signals without time stamps (overrides a time column)
   std::string rate_variable;    // MAT files: the variable holding the sampling rate (Hz)
   double dt = 0;                // s per time step, for step-stamped data (dumps, logs, ave/time)

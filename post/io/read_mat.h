@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // MATLAB .mat records (v5, and v7.3 when libmatio is built with HDF5, as Debian's is) through
 // libmatio: real numeric vectors (double, single, integer classes) as doubles, with errors that
-// name the variables present. Used by load_signal for `--input mat` and `.mat` files.
+// name the variables present. Used by load_signal for the format "mat" and `.mat` files.
 #ifndef OHMDEM_POST_READ_MAT_H
 #define OHMDEM_POST_READ_MAT_H
 
@@ -40,8 +40,8 @@ std::vector<double> read_mat_vector(const std::string &path, const std::string &
 // or sampling rate), e.g. CWRU's `RPM`.
 double read_mat_scalar(const std::string &path, const std::string &variable);
 
-// The default signal of a file: the only numeric vector with more than one element; else Error
-// listing the variables ("choose one with --variable NAME").
+// The default signal of a file: the only numeric vector with more than one element; else a
+// SettingError listing the variables ("choose the signal with {input.variable} NAME").
 std::string default_mat_variable(const std::string &path);
 
 // One signal of a MAT file for load_signal: `variable` (empty: default_mat_variable), sampled at

@@ -178,7 +178,7 @@ RunFolders find_run_folders(const std::vector<std::string> &paths, bool recursiv
     if (!recursive) {
       if (!why.empty())
         skipped.emplace_back(display_path(dir),
-                             why + (container ? "; --recursive searches its subfolders" : ""));
+                             why + (container ? "; {runs.recursive} searches its subfolders" : ""));
       continue;
     }
     std::size_t runs_below = 0;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Row selection in a table read by read_table (e.g. the CSV written by `collect`): filtering by
-// column values (`plot --where load=fixed`) and the rows where a column holds a value.
+// column values (`load=fixed`) and the rows where a column holds a value.
 #ifndef OHMDEM_POST_TABLE_SELECT_H
 #define OHMDEM_POST_TABLE_SELECT_H
 

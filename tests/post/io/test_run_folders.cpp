@@ -120,7 +120,8 @@ TEST(CollectLib, FindRunFolders)
   EXPECT_EQ(flat.runs[1], root + "/force_1");
   ASSERT_EQ(flat.skipped.size(), 2u);  // the root (a container) and no_metadata
   EXPECT_EQ(flat.skipped[0].first, root);
-  EXPECT_NE(flat.skipped[0].second.find("--recursive"), std::string::npos);
+  EXPECT_NE(flat.skipped[0].second.find("{runs.recursive} searches its subfolders"),
+            std::string::npos);
   EXPECT_EQ(flat.skipped[1].first, root + "/no_metadata");
   EXPECT_EQ(flat.skipped[1].second, "no run.json");
 
