@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 
+#include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
 #include "test_util.h"
@@ -17,23 +18,8 @@
 namespace ohmdem::post {
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out;  // standard output and error
-};
-
-CliRun run(const std::string &args)
-{
-  const std::string cmd = std::string(OHMDEM_POST_EXE) + " " + args + " 2>&1";
-  CliRun r;
-  std::unique_ptr<FILE, int (*)(FILE *)> p(popen(cmd.c_str(), "r"), pclose);
-  if (!p) return r;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p.get())) r.out.append(buf, n);
-  const int st = pclose(p.release());
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+using test::CliRun;
+using test::run;
 
 std::string tmp(const std::string &name)
 {

@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
 #include "test_util.h"
@@ -18,28 +19,9 @@
 namespace ohmdem::post {
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out;
-};
-
-// Runs a shell command line (stdout and stderr together).
-CliRun shell(const std::string &command)
-{
-  CliRun r;
-  std::unique_ptr<FILE, int (*)(FILE *)> p(popen((command + " 2>&1").c_str(), "r"), pclose);
-  if (!p) return r;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p.get())) r.out.append(buf, n);
-  const int st = pclose(p.release());
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
-CliRun run(const std::string &args)
-{
-  return shell(std::string(OHMDEM_POST_EXE) + " " + args);
-}
+using test::CliRun;
+using test::run;
+using test::shell;
 
 // The data lines of a CSV report (the '#' metadata name the source, which differs).
 std::string csv_rows(const std::string &out)

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "bearing/diagnose.h"
+#include "cli_run.h"
 #include "core/error.h"
 #include "cwru.h"
 #include "dsp/acquire.h"
@@ -26,6 +27,8 @@
 
 namespace ohmdem::post {
 namespace {
+
+using test::CliRun;
 
 using ohmdem::test::kPi;
 
@@ -502,24 +505,6 @@ TEST(Detect, MeasuredCwruAgainstAHealthyBaseline)
   }
 }
 
-struct CliRun {
-  int status = -1;
-  std::string out;
-};
-
-CliRun run_cli(const std::string &args)
-{
-  const std::string cmd = std::string(OHMDEM_POST_EXE) + " " + args + " 2>&1";
-  CliRun r;
-  FILE *p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
 std::string write_samples(const std::string &name, const std::vector<double> &x)
 {
   std::ostringstream os;
@@ -536,7 +521,7 @@ TEST(Detect, CommandLineReportsDetection)
   const std::string base = write_samples("detect_base.txt", gaussian_record(100000, 0, stream(32)));
   const std::string opts = " --rate 1e6 --bearing 6208 --omega 500 --no-size";
 
-  CliRun r = run_cli("diagnose " + bursts + opts + " --format json");
+  CliRun r = test::run("diagnose " + bursts + opts + " --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   Json j = Json::parse(r.out, "diagnose output");
   EXPECT_EQ(j.find("defect")->string(), "unidentified");
@@ -551,14 +536,14 @@ TEST(Detect, CommandLineReportsDetection)
   EXPECT_EQ((*tests)[0].find("name")->string(), "kurtosis");
   EXPECT_TRUE((*tests)[0].find("fired")->boolean());
 
-  r = run_cli("diagnose " + noise + opts + " --baseline " + base + " --format json");
+  r = test::run("diagnose " + noise + opts + " --baseline " + base + " --format json");
   ASSERT_EQ(r.status, 0) << r.out;
   j = Json::parse(r.out, "diagnose output");
   EXPECT_EQ(j.find("defect")->string(), "none");
   EXPECT_FALSE(j.find("detected")->boolean());
   EXPECT_EQ(j.find("detection")->find("tests")->size(), 7u);
 
-  r = run_cli("diagnose " + bursts + opts + " --baseline " + base + " --format csv");
+  r = test::run("diagnose " + bursts + opts + " --baseline " + base + " --format csv");
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("\ndefect,score,frequency_Hz,kinematic_Hz,size_deg,pulse_width_s,"
                        "inner_score,outer_score,ball_score,cage_score,band_kurtosis,"
@@ -571,7 +556,7 @@ TEST(Detect, CommandLineReportsDetection)
   // with a baseline the Gaussian tests are for information: the baseline ones fire
   EXPECT_NE(r.out.find(",yes,baseline_"), std::string::npos) << r.out;
 
-  r = run_cli("diagnose " + bursts + opts);
+  r = test::run("diagnose " + bursts + opts);
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("defect:        unidentified"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("detected:      yes (fired: kurtosis"), std::string::npos) << r.out;
