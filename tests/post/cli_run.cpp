@@ -10,6 +10,7 @@
 
 #include "bearing/bearing.h"
 #include "synth.h"
+#include "temp_dir.h"
 
 namespace ohmdem::post::test {
 
@@ -34,7 +35,7 @@ CliRun run(const std::string &args)
 // A run directory as our decks write it: signal.txt (R at 1 MHz) and run.json.
 std::string make_run_dir(const std::string &name, const std::string &kind)
 {
-  const std::string dir = std::string(OHMDEM_POST_TEST_TMP) + "/" + name;
+  const std::string dir = ohmdem::test::temp_dir().string() + "/" + name;
   ::mkdir(dir.c_str(), 0755);
   DefectSpec spec;
   spec.kind = kind;

@@ -3,11 +3,16 @@
 #ifndef OHMDEM_TESTS_POST_TEST_UTIL_H
 #define OHMDEM_TESTS_POST_TEST_UTIL_H
 
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "core/error.h"
+#include "temp_dir.h"
 
 namespace ohmdem::post::test {
 
@@ -58,7 +63,7 @@ inline std::vector<double> read_column(const std::string &path, std::size_t c = 
 // Writes text to a fresh file under the test's temporary directory; returns its path.
 inline std::string write_temp(const std::string &name, const std::string &text)
 {
-  const std::string path = std::string(OHMDEM_POST_TEST_TMP) + "/" + name;
+  const std::string path = ohmdem::test::temp_dir().string() + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -76,6 +81,19 @@ inline bool is_png(const std::string &path)
 inline bool have_gnuplot()
 {
   return std::system("command -v gnuplot > /dev/null 2>&1") == 0 || std::getenv("OHMDEM_GNUPLOT");
+}
+
+// Expects an Error whose message contains `part`.
+template <class F>
+void expect_error(F f, const std::string &part)
+{
+  try {
+    f();
+    ADD_FAILURE() << "no error, expected one containing '" << part << "'";
+  } catch (const Error &e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+        << "message: " << e.what() << "\nexpected to contain: " << part;
+  }
 }
 
 }  // namespace ohmdem::post::test

@@ -13,6 +13,7 @@
 #include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -23,7 +24,7 @@ using test::run;
 
 std::string tmp(const std::string &name)
 {
-  return std::string(OHMDEM_POST_TEST_TMP) + "/" + name;
+  return ohmdem::test::temp_dir().string() + "/" + name;
 }
 
 // A run as our decks write it: signal.txt (time, R at 1 MHz, 5 ms of sliding phase first) and

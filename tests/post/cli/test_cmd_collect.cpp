@@ -21,13 +21,18 @@
 #include "io/read_table.h"
 #include "io/run_folders.h"
 #include "io/table_select.h"
+#include "run_folder_fixtures.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
 namespace {
 
 namespace fs = std::filesystem;
+using test::fresh_dir;
+using test::make_run;
+using test::make_sweep;
 
 struct Outcome {
   int status = -1;
@@ -38,7 +43,7 @@ struct Outcome {
 Outcome post(const std::string &args, const std::string &cwd = "")
 {
   static int counter = 0;
-  const std::string err_file = std::string(OHMDEM_POST_TEST_TMP) + "/collect_stderr_" +
+  const std::string err_file = ohmdem::test::temp_dir().string() + "/collect_stderr_" +
                                std::to_string(::getpid()) + "_" + std::to_string(counter++);
   const std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") +
                           std::string(OHMDEM_POST_EXE) + " " + args + " 2>'" + err_file + "'";
@@ -55,58 +60,6 @@ Outcome post(const std::string &args, const std::string &cwd = "")
   EXPECT_EQ(r.err.find("Sanitizer"), std::string::npos) << args << "\n" << r.err;
   EXPECT_EQ(r.err.find("runtime error:"), std::string::npos) << args << "\n" << r.err;
   return r;
-}
-
-// A fresh directory for one test.
-std::string fresh_dir(const std::string &name)
-{
-  const fs::path d = fs::path(OHMDEM_POST_TEST_TMP) / "collect" / name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d.string();
-}
-
-// A run folder as our decks write it: signal.txt ("# time R n_masked", 100 kHz) and run.json.
-// R is a level with a pulse while n_masked > 0 (every `period` samples, `width` long) and a
-// deterministic ripple; `nan_row` >= 0 puts a NaN there.
-void make_run(const std::string &dir, const std::string &json, int n = 2000, int period = 40,
-              int width = 4, double level = 1.39, int nan_row = -1)
-{
-  fs::create_directories(dir);
-  std::ofstream s(dir + "/signal.txt");
-  s << "# time R n_masked\n";
-  char buf[128];
-  for (int i = 0; i < n; ++i) {
-    const int masked = i % period < width ? 1 : 0;
-    const double r = level * (1 + 0.08 * masked) + 1e-3 * std::sin(0.37 * i);
-    if (i == nan_row)
-      std::snprintf(buf, sizeof buf, "%.9g nan %d\n", i * 1e-5, masked);
-    else
-      std::snprintf(buf, sizeof buf, "%.9g %.12g %d\n", i * 1e-5, r, masked);
-    s << buf;
-  }
-  if (!json.empty()) std::ofstream(dir + "/run.json") << json << "\n";
-}
-
-// The study-like layout used by several tests: three runs with differing keys, a folder
-// without run.json, a container folder.
-std::string make_sweep(const std::string &name)
-{
-  const std::string root = fresh_dir(name);
-  make_run(root + "/fixed_2",
-           R"({"defect": "inner", "size_deg": 2, "load": "fixed", "t_sliding_end": 0.002,
-               "F": 320, "area": "greenwood, exact", "tags": [1, 2], "note": null})",
-           2000, 40, 6);
-  make_run(root + "/fixed_10",
-           R"({"defect": "inner", "size_deg": 10, "load": "fixed", "t_sliding_end": 0.002,
-               "F": 320})",
-           2000, 40, 12, 1.4);
-  make_run(root + "/force_1", R"({"defect": "outer", "size_deg": 1, "load": "force",
-           "depth": 1e-4, "resumed": true})",
-           2000, 50, 3);
-  make_run(root + "/no_metadata", "");
-  fs::create_directories(root + "/figures");
-  return root;
 }
 
 // Splits a CSV line (a quoted comma splits too: used on lines without one, or from the end).

@@ -15,6 +15,7 @@
 #include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_constants.h"
 #include "test_util.h"
 
@@ -146,7 +147,7 @@ TEST(OrdersCli, ConstantSpeedFromRunOptionsAndMatVariables)
 TEST(OrdersCli, SpectrogramPng)
 {
   if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not found";
-  const std::string png = std::string(OHMDEM_POST_TEST_TMP) + "/spectrogram.png";
+  const std::string png = ohmdem::test::temp_dir().string() + "/spectrogram.png";
   std::remove(png.c_str());
   const CliRun r = run("plot --kind spectrogram " + run_up_file() +
                        " --column x --bearing 6205 --fmax 1500 --output " + png);

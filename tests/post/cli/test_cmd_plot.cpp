@@ -13,6 +13,7 @@
 #include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -67,7 +68,7 @@ TEST(Cli, FailedPlotLeavesNoFile)
   std::string text = "# time R\n";
   for (int i = 0; i < 256; ++i) text += std::to_string(i * 1e-3) + " 0\n";
   const std::string sig = test::write_temp("zero_signal.txt", text);
-  const std::string png = std::string(OHMDEM_POST_TEST_TMP) + "/failed.png";
+  const std::string png = ohmdem::test::temp_dir().string() + "/failed.png";
   std::remove(png.c_str());
   const CliRun r = run("plot --kind spectrum " + sig + " --logy --output " + png);
   EXPECT_EQ(r.status, 1);
@@ -79,7 +80,7 @@ TEST(Cli, FailedPlotLeavesNoFile)
   EXPECT_EQ(run("plot --kind spectrum " + sig + " --logy --output " + png).status, 1);
   EXPECT_EQ(test::slurp(png), "old figure");
   // and nothing else stays in the folder (the temporary image is removed)
-  const CliRun ls = shell(std::string("ls -a ") + OHMDEM_POST_TEST_TMP);
+  const CliRun ls = shell("ls -a " + ohmdem::test::temp_dir().string());
   EXPECT_EQ(ls.out.find("failed.png.tmp"), std::string::npos) << ls.out;
 }
 

@@ -14,6 +14,7 @@
 #include "cli_run.h"
 #include "io/json.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -37,7 +38,7 @@ std::string csv_rows(const std::string &out)
 // read twice or only partly gives other numbers.
 std::string big_signal()
 {
-  const std::string path = std::string(OHMDEM_POST_TEST_TMP) + "/stdin_signal.txt";
+  const std::string path = ohmdem::test::temp_dir().string() + "/stdin_signal.txt";
   std::ofstream out(path);
   out << "# time R\n";
   char buf[64];
@@ -69,7 +70,7 @@ TEST(Cli, StandardInputPipeAndFifoReadLikeTheFile)
   const CliRun named = run("stats --format csv - < " + sig);
   EXPECT_NE(named.out.find("# source: standard input"), std::string::npos) << named.out;
   // a FIFO (named pipe): the writer runs in the background
-  const std::string fifo = std::string(OHMDEM_POST_TEST_TMP) + "/signal.fifo";
+  const std::string fifo = ohmdem::test::temp_dir().string() + "/signal.fifo";
   std::remove(fifo.c_str());
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const CliRun f =

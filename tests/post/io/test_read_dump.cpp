@@ -19,21 +19,10 @@
 namespace ohmdem::post {
 namespace {
 
+using test::expect_error;
+
 using test::data;
 using test::write_temp;
-
-// Expects an Error whose message contains `part`.
-template <class F>
-void expect_error(F f, const std::string &part)
-{
-  try {
-    f();
-    ADD_FAILURE() << "no error, expected one containing '" << part << "'";
-  } catch (const Error &e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
-        << "message: " << e.what() << "\nexpected to contain: " << part;
-  }
-}
 
 // An independent per-frame aggregation of a dump column (plain stream parsing).
 std::vector<std::pair<long, std::vector<double>>> frames(const std::string &path,

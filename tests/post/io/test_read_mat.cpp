@@ -14,6 +14,7 @@
 #include "dsp/stats.h"
 #include "io/load_signal.h"
 #include "io/read_mat.h"
+#include "temp_dir.h"
 #include "test_constants.h"
 #include "test_util.h"
 
@@ -86,7 +87,7 @@ TEST(Mat, LoadSignalDetectsMatAndTakesTheRateFromAVariable)
 TEST(Mat, ReadsHdf5BasedV73)
 {
   // Debian's libmatio is built with HDF5: write a v7.3 file with it and read it back
-  const std::string path = std::string(OHMDEM_POST_TEST_TMP) + "/v73.mat";
+  const std::string path = ohmdem::test::temp_dir().string() + "/v73.mat";
   std::remove(path.c_str());
   mat_t *f = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT73);
   if (!f) GTEST_SKIP() << "this libmatio cannot write MAT v7.3 (built without HDF5)";
