@@ -107,6 +107,17 @@ def test_regime(r):
     check(np.all(sig["lambda_min"][s] < 1), f"lambda < 1 (max {sig['lambda_min'][s].max():.2f})")
     check(np.all(np.abs(sig["Zphase"][s]) < 1e-3), f"phase near 0: |max| {np.abs(sig['Zphase'][s]).max():.2e}")
     check(np.all(sig["Rb"][s] >= sig["R"][s] * (1 - 1e-12)), "Rb >= the dry R")
+    # A radial load: the balls outside the load zone touch one race only and couple to the
+    # other through their gap (a capacitor in series): every output finite, still capacitive,
+    # Cb below the isotropic run's (a gap of tens of micrometres holds less than a film of one).
+    out, _ = r.run("radial", lubricant="VG68", load="radial", tend=TEND, dt=DT, nout=50)
+    rad = read_signal(out)
+    s = steady(rad)
+    check(np.all(rad["n_contacts_race"][s] < 26), "radial: some balls touch one race only")
+    check(all(np.all(np.isfinite(rad[c][s])) for c in LUB_COLUMNS), "radial: finite outputs")
+    check(np.all(np.abs(rad["Zphase"][s] + math.pi / 2) < 0.01), "radial: capacitive")
+    iso, _ = r.run("iso", lubricant="VG68", tend=TEND, dt=DT, nout=50)
+    check(np.all(rad["Cb"][s] < read_signal(iso)["Cb"][s]), "radial: Cb below the isotropic run's")
 
 
 def test_mpi(r):

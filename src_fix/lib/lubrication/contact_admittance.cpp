@@ -3,6 +3,7 @@
 #include "lubrication/contact_admittance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -39,10 +40,18 @@ double hertz_mean_permittivity(double eps_r, double p0)
 
 double gap_capacitance(const GapGeometry &g, double eps_r)
 {
+  // cos^2 of the midpoints, once per process (evaluated for every contact at every step).
+  static const std::array<double, kQuarter> cos2 = [] {
+    std::array<double, kQuarter> t{};
+    for (int i = 0; i < kQuarter; ++i) {
+      const double c = std::cos((i + 0.5) * (0.5 * kPi / kQuarter));
+      t[i] = c * c;
+    }
+    return t;
+  }();
   double sum = 0.0;
   for (int i = 0; i < kQuarter; ++i) {
-    const double phi = (i + 0.5) * (0.5 * kPi / kQuarter);
-    const double c2 = std::cos(phi) * std::cos(phi), s2 = 1.0 - c2;
+    const double c2 = cos2[i], s2 = 1.0 - c2;
     const double s_in2 = g.a > 0.0 && g.b > 0.0
                              ? 1.0 / (2.0 * g.rx * c2 / (g.b * g.b) + 2.0 * g.ry * s2 / (g.a * g.a))
                              : 0.0;
