@@ -120,6 +120,28 @@ def test_regime(r):
     check(np.all(rad["Cb"][s] < read_signal(iso)["Cb"][s]), "radial: Cb below the isotropic run's")
 
 
+def test_exponents(r):
+    # d ln h_min / d ln u and d ln h_min / d ln Q measured from runs at three speeds and three
+    # loads, against the formula's 0.68 and -0.073. Each run's own loads and speeds are used
+    # (the centrifugal force moves the outer load with speed): the speed exponent is the slope
+    # of ln(h Q^0.073) against ln u, the load exponent that of ln(h / u^0.68) against ln Q.
+    def point(name, omega, F):
+        out, _ = r.run(name, lubricant="VG68", omega=omega, F=F, tend=0.02, dt=DT, nout=10)
+        sig = read_signal(out)
+        s = sig["time"] >= 0.018
+        wc = sig["omega_balls"][s].mean()
+        return (sig["hmin_outer"][s].mean(), wc * REXT, sig["fn_outer_max"][s].mean())
+    speeds = [point(f"w{w}", w, 1000.0) for w in (300.0, 500.0, 800.0)]
+    loads = [point(f"F{F:g}", 500.0, F) for F in (250.0, 500.0, 1000.0)]
+    h, u, q = (np.array(c) for c in zip(*speeds))
+    slope_u = np.polyfit(np.log(u), np.log(h * q**0.073), 1)[0]
+    h, u, q = (np.array(c) for c in zip(*loads))
+    slope_q = np.polyfit(np.log(q), np.log(h / u**0.68), 1)[0]
+    print(f"     d ln h/d ln u = {slope_u:.5f}, d ln h/d ln Q = {slope_q:.5f} (outer race)")
+    check(abs(slope_u - 0.68) < 2e-3, "speed exponent of h_min from the runs: 0.68")
+    check(abs(slope_q + 0.073) < 2e-3, "load exponent of h_min from the runs: -0.073")
+
+
 def test_mpi(r):
     one, _ = r.run("mpi_1", lubricant="VG68", tend=0.003, dt=DT, nout=10)
     two, _ = r.run("mpi_2", lubricant="VG68", tend=0.003, dt=DT, nout=10, nprocs=2)
@@ -138,7 +160,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix=f"ohmdem_lub_{a.test}_", dir=keep) as wd:
         r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
         {"paper_point": test_paper_point, "none_unchanged": test_none_unchanged,
-         "regime": test_regime, "mpi": test_mpi}[a.test](r)
+         "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi}[a.test](r)
     finish()
 
 
