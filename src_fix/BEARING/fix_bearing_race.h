@@ -61,6 +61,14 @@ class FixBearingRace : public FixBearingBody {
     y = cy_;
   }
   double angle() const { return angle_; }
+  // Velocity (m/s) of the ring's material at the point (px, py) on this step: its rotation
+  // about its centre plus the centre's velocity (the lubricated contact's entrainment speed).
+  void surface_velocity(double px, double py, double &vx, double &vy) const
+  {
+    const double w = target_omega(time_);
+    vx = vcx_ - w * (py - cy_);
+    vy = vcy_ + w * (px - cx_);
+  }
   ohmdem::BearingSurface surface() const override;
   int race_type() const { return settings_.race_type; }
 

@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "BEARING/fix_bearing_race.h"
@@ -26,12 +28,15 @@
 #include "error.h"
 #include "fix_property_global.h"
 #include "group.h"
+#include "input.h"
+#include "lubrication/lubricant.h"
 #include "memory.h"
 #include "modify.h"
 #include "network/conduction_network.h"
 #include "support/args.h"
 #include "support/require_si.h"
 #include "update.h"
+#include "variable.h"
 
 using namespace LAMMPS_NS;
 
@@ -51,14 +56,14 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   scalar_flag = 1;
   extscalar = 0;
   vector_flag = 1;
-  size_vector = kVectorSize;
+  size_vector = lube_.on() ? kVectorSize + LubricatedResult::kSize : kVectorSize;
   extvector = 0;
   peratom_flag = 1;
   size_peratom_cols = 0;
   local_flag = 1;  // per-contact rows (contact_flow_array.h)
   size_local_cols = ohmdem::ContactFlow::kColumns;
   size_local_rows = 0;
-  vector = new double[kVectorSize];  // LIGGGHTS' Compute deletes it
+  vector = new double[size_vector];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
   array_local = nullptr;  // owned by local_
   contacts_ = std::make_unique<ContactSet>(
@@ -66,6 +71,39 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
       pair_mode_ != 0);
   context_.contacts = contacts_.get();
   exports_ = std::make_unique<NetworkExports>(lmp, netlist_, vtk_, every_);
+  if (lube_.on()) {
+    try {
+      lubricated_ = std::make_unique<LubricatedBearing>(lmp, lube_);
+    } catch (const ohmdem::lubrication::LubricantError &e) {
+      const std::string msg =
+          std::string("compute network/resistance: keyword 'lubricant': ") + e.what();
+      error->all(FLERR, msg.c_str());
+    }
+  }
+  if (lube_keyword_) define_lubricant_variables();
+}
+
+// With the keyword lubricant, what ran, for the deck (its signal columns and run.json):
+// string variables lubricant_on (0 or 1) and, with a lubricant, lubricant_file,
+// lubricant_eta0 (Pa s at the temperature), lubricant_alpha (1/Pa), lubricant_eps_r.
+void ComputeNetworkResistance::define_lubricant_variables()
+{
+  char buf[64];
+  auto define = [&](const char *name, const std::string &value) {
+    std::string words[3] = {name, "string", value};
+    char *argv[3] = {words[0].data(), words[1].data(), words[2].data()};
+    input->variable->set(3, argv);
+  };
+  define("lubricant_on", lubricated_ ? "1" : "0");
+  if (!lubricated_) return;
+  const ohmdem::lubrication::LubricantState &s = lubricated_->state();
+  define("lubricant_file", lubricated_->path());
+  for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
+                                    {"lubricant_alpha", s.alpha},
+                                    {"lubricant_eps_r", s.eps_r}}) {
+    std::snprintf(buf, sizeof buf, "%.9g", value);
+    define(name, buf);
+  }
 }
 
 ComputeNetworkResistance::~ComputeNetworkResistance()
@@ -132,9 +170,32 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       every_ = a.integer(kw, "a whole number of steps N >= 1", 1, std::numeric_limits<int>::max());
     } else if (kw == "closedform" || kw == "closed_form") {
       closed_form_ = a.yes_no(kw);
+    } else if (kw == "lubricant") {
+      lube_.lubricant = a.word(kw, "a lubricant name of inputs/lubricants, a file, or none");
+      lube_keyword_ = true;
+    } else if (kw == "temperature") {
+      lube_.temperature = a.number(kw, "the oil temperature (C)");
+    } else if (kw == "roughness") {
+      lube_.roughness = a.positive(kw, "the composite RMS roughness sigma > 0 (m)");
+    } else if (kw == "fexc") {
+      lube_.fexc = a.positive(kw, "the excitation frequency > 0 (Hz)");
+    } else if (kw == "wetted") {
+      lube_.wetted = a.positive(kw, "the wetted radius around a contact > 0 (m)");
     } else {
-      a.unknown(kw.c_str(), "current high low area model solver pair netlist vtk every closedform");
+      a.unknown(kw.c_str(),
+                "current high low area model solver pair netlist vtk every closedform "
+                "lubricant temperature roughness fexc wetted");
     }
+  }
+  // Read only with a lubricant (so that a deck passes them whatever it runs, as fix
+  // bearing/defect ignores the keywords its kind does not use); required then.
+  if (lube_.on()) {
+    if (!(lube_.roughness > 0.0))
+      a.fail("roughness", "a value with a lubricant: the keyword is required", "nothing");
+    if (!(lube_.fexc > 0.0))
+      a.fail("fexc", "a value with a lubricant: the keyword is required", "nothing");
+    if (!(lube_.wetted > 0.0))
+      a.fail("wetted", "a value with a lubricant: the keyword is required", "nothing");
   }
   if (!have_current) a.fail("current", "a value: the keyword is required", "nothing");
   if (!have_high)
@@ -183,6 +244,13 @@ void ComputeNetworkResistance::init()
   resolve("high", context_.high);
   resolve("low", context_.low);
   read_conductivities();
+  if (lubricated_) {
+    if (!context_.races_are_electrodes())
+      error->all(FLERR,
+                 "compute network/resistance: keyword 'lubricant' needs both electrodes to be "
+                 "races (high race ID low race ID): the lubricated closed form is a bearing's");
+    lubricated_->init(context_);
+  }
   choose_paths();
   evaluated_step_ = -1;
   exports_->check_files();
@@ -250,6 +318,7 @@ void ComputeNetworkResistance::evaluate()
     last_path_ = network_path_;
   }
   report(r);
+  if (lubricated_) lube_result_ = lubricated_->evaluate(context_);
   if (last_path_ == gathered_.get() && comm->me == 0)
     exports_->write(*gathered_, *contacts_, context_.current);
 }
@@ -305,6 +374,12 @@ void ComputeNetworkResistance::compute_vector()
   invoked_vector = update->ntimestep;
   evaluate();
   std::copy(result_, result_ + kVectorSize, vector);
+  if (lubricated_) {
+    const LubricatedResult &l = lube_result_;
+    const double extra[LubricatedResult::kSize] = {
+        l.z_abs, l.z_phase, l.c_parallel, l.r_parallel, l.hmin_inner, l.hmin_outer, l.lambda_min};
+    std::copy(extra, extra + LubricatedResult::kSize, vector + kVectorSize);
+  }
 }
 
 void ComputeNetworkResistance::compute_peratom()

@@ -18,6 +18,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include <memory>
 #include <string>
 
+#include "ELECTRIC/lubricated_bearing.h"
 #include "ELECTRIC/resistance_context.h"
 #include "compute.h"
 
@@ -72,6 +73,13 @@ class ComputeNetworkResistance : public Compute {
   ResistancePath *network_path_ = nullptr;               // gathered or distributed, this run
   ResistancePath *last_path_ = nullptr;                  // the path of the last evaluation
   std::unique_ptr<ContactFlowArray> local_;              // the local array
+  // Keyword lubricant (lubricated_bearing.h): null with `lubricant none`, and then nothing of
+  // it runs and the vector keeps its 8 values.
+  LubricationSettings lube_;
+  bool lube_keyword_ = false;  // the keyword was given (even as none): define the variables
+  std::unique_ptr<LubricatedBearing> lubricated_;
+  LubricatedResult lube_result_;
+  void define_lubricant_variables();
 
   bigint evaluated_step_ = -1;
   double result_[8] = {0, 0, 0, 0, 0, 0, 0, 0};

@@ -41,6 +41,7 @@ KERNEL_ARROWS = {
     "conduction": {"conduction", "network", "contact", "common"},
     "writers": {"writers", "common"},
     "catalog": {"catalog"},
+    "lubrication": {"lubrication", "common"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]', re.M)
 

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The admittance Y = G + j omega C of a lubricated ball-race contact and of a bearing's
+// closed form (each ball its two contacts in series, the balls in parallel). Plain C++;
+// equations and sources in doc/lubricated_contact.md.
+#ifndef OHMDEM_LUBRICATION_CONTACT_ADMITTANCE_H
+#define OHMDEM_LUBRICATION_CONTACT_ADMITTANCE_H
+
+#include <complex>
+
+#include "lubrication/ehl_film.h"
+
+namespace ohmdem::lubrication {
+
+constexpr double kEpsilon0 = 8.8541878128e-12;  // F/m (CODATA 2018)
+
+// Clausius-Mossotti, (eps - 1)/(eps + 2) proportional to density, with the Dowson-Higginson
+// density rho/rho0 = 1 + 0.6 p / (1 + 1.7 p) (p in GPa). p in Pa, >= 0.
+double permittivity_at_pressure(double eps_r, double p);
+// The mean of that permittivity over a Hertz ellipse of peak pressure p0 (Pa):
+// 2 * int_0^1 eps(p0 t) t dt (p = p0 sqrt(1 - r^2) over the normalized ellipse), by
+// 8-point Gauss-Legendre.
+double hertz_mean_permittivity(double eps_r, double p0);
+
+// The capacitance of an oil-filled gap h(x, y) = h0 + x^2/(2 rx) + y^2/(2 ry) (x rolling, y
+// across), between the ellipse x^2/b^2 + y^2/a^2 = 1 (excluded; a = b = 0: nothing excluded)
+// and the wetted circle x^2 + y^2 = r_wet^2: eps0 eps_r int dA / h. In the scaled polar
+// coordinates x = sqrt(2 rx) s cos(phi), y = sqrt(2 ry) s sin(phi) the radial integral is a
+// logarithm: eps0 eps_r sqrt(rx ry) int_0^{2 pi} ln((h0 + s_out^2)/(h0 + s_in^2)) dphi, the
+// angle by the midpoint rule (spectrally accurate for this smooth periodic integrand).
+struct GapGeometry {
+  double h0 = 0;  // gap at the centre (m), > 0
+  double rx = 0, ry = 0;
+  double a = 0, b = 0;  // excluded ellipse: a across, b along the rolling direction (m)
+  double r_wet = 0;     // wetted radius (m)
+};
+double gap_capacitance(const GapGeometry &g, double eps_r);
+
+// Fraction of the Hertz area in metallic contact at film parameter lambda: Gaussian
+// composite heights z ~ N(0, sigma) against a film h_min, the area where |z| > h_min,
+// erfc(lambda / sqrt 2): 1 at lambda = 0 (the dry contact), 0.32 at 1, 0.0027 at 3.
+double metallic_fraction(double lambda);
+
+// One ball-race contact.
+struct ContactInput {
+  FilmInput film;          // Hamrock-Dowson inputs (load, mean entrainment speed, ...)
+  double a = 0, b = 0;     // Hertz semi-axes (m): a across, b along the rolling direction
+  double sigma = 0;        // composite RMS roughness (m), > 0
+  double r_wet = 0;        // wetted radius around the contact (m)
+  double eps_r = 0;        // at the temperature, atmospheric pressure
+  double resistivity = 0;  // of the oil (ohm m)
+  double g_dry = 0;        // metallic conductance of the whole Hertz area (S)
+};
+
+struct ContactAdmittance {
+  Film film;
+  double lambda = 0;
+  double metallic = 0;  // metallic fraction of the Hertz area
+  double c_hertz = 0;   // film capacitance of the Hertz zone (F), over its non-metallic part
+  double c_outer = 0;   // oil-filled gap around it out to r_wet (F)
+  double g = 0;         // metallic + leakage conductance (S)
+  double capacitance() const { return c_hertz + c_outer; }
+  std::complex<double> y(double omega) const { return {g, omega * capacitance()}; }
+};
+
+// G = f g_dry + (1 - f) pi a b / (rho_oil h_c), C = (1 - f) eps0 eps_mean pi a b / h_c + the
+// gap outside the ellipse with h0 = max(h_c, sigma). Without entrainment (h_c = 0) the contact
+// is dry: f = 1, G = g_dry.
+ContactAdmittance contact_admittance(const ContactInput &in);
+
+// A ball that does not touch a race: the capacitance of its gap to it (h0 >= sigma).
+double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,
+                            double sigma);
+
+// y1 y2 / (y1 + y2); 0 when both are 0.
+std::complex<double> series(std::complex<double> y1, std::complex<double> y2);
+
+// The bearing's impedance from its admittance Y at omega > 0.
+struct Impedance {
+  double z_abs = 0;       // |Z| (ohm)
+  double z_phase = 0;     // arg Z (rad), -pi/2 for a capacitor
+  double c_parallel = 0;  // Im Y / omega (F)
+  double r_parallel = 0;  // 1 / Re Y (ohm), +inf without conduction
+};
+Impedance impedance(std::complex<double> y, double omega);
+
+}  // namespace ohmdem::lubrication
+
+#endif
