@@ -50,7 +50,7 @@ std::string make_run(const std::string &name, const std::string &kind, std::size
   spec.kind = kind;
   spec.snr_db = 20;
   spec.duration = 0.15;
-  const auto sig = test::defect_signal(bearing_preset("6208"), spec);
+  const auto sig = test::defect_signal(bearing_preset("machado2014"), spec);
   std::ofstream out(dir + "/signal.txt");
   out << "# time omega_cage n_contacts_race R\n";
   char buf[128];

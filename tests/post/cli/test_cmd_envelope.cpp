@@ -50,7 +50,7 @@ std::string make_run_dir(const std::string &name, const std::string &kind)
   spec.kind = kind;
   spec.snr_db = 20;
   spec.duration = 0.15;
-  const auto sig = test::defect_signal(bearing_preset("6208"), spec);
+  const auto sig = test::defect_signal(bearing_preset("machado2014"), spec);
   std::ofstream out(dir + "/signal.txt");
   out << "# time omega_cage fn_inner_mean fn_outer_mean n_contacts_race R n_masked\n";
   char buf[256];
@@ -94,7 +94,7 @@ TEST(Cli, EnvelopeKurtogramAndFrequencies)
             std::string::npos)
       << fb.out;
   EXPECT_NE(fb.out.find("\n2xBPFI,"), std::string::npos);
-  const CliRun f = run("frequencies --bearing 6208 --omega 500 --format json");
+  const CliRun f = run("frequencies --bearing machado2014 --omega 500 --format json");
   ASSERT_EQ(f.status, 0);
   const Json fj = Json::parse(f.out, "frequencies output");
   EXPECT_NEAR(fj.find("bpfi_hz")->number(), 624.8, 0.05);
