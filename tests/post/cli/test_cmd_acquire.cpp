@@ -64,7 +64,7 @@ std::string make_run(const std::string &name, const std::string &kind, std::size
   }
   *rows = 5000 + sig.signal.size();
   std::ofstream(dir + "/run.json")
-      << "{\"bearing\":\"6208\",\"omega_inner\":500.0,\"dt\":1e-6,\"defect\":\"" << kind
+      << "{\"bearing\":\"machado2014\",\"omega_inner\":500.0,\"dt\":1e-6,\"defect\":\"" << kind
       << "\",\"t_sliding_end\":0.005}\n";
   return dir;
 }
