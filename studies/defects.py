@@ -147,7 +147,7 @@ def main():
     os.makedirs(os.path.join(out, "fig15"), exist_ok=True)
     partitions = int(os.environ.get("NP", "1"))
     simulate(out, a.tend, partitions)
-    report(out, [float(s) for s in SIZES], FROM, common.Bearing("6208").nb)
+    report(out, [float(s) for s in SIZES], FROM, common.Bearing("machado2014").nb)
     figures(out)
     print(f"study written: {out}/study.md")
 

@@ -30,7 +30,7 @@ import subprocess
 
 import common
 
-BEARING = common.Bearing("6208")  # the deck's default bearing, from its catalog file
+BEARING = common.Bearing("machado2014")  # the deck's default bearing, from its catalog file
 SHAFT_HZ = 500 / (2 * math.pi)     # the study's inner ring speed, 500 rad/s
 CURRENT = common.deck_defaults()["I"]  # A, the deck's injected current: the instrument reads V = I R
 SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer

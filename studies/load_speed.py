@@ -21,9 +21,9 @@ import sys
 
 import common
 
-# The bearing from its catalog file (inputs/bearings/6208: Table 1 of the paper) and the deck's
+# The bearing from its catalog file (inputs/bearings/machado2014: Table 1 of the paper) and the deck's
 # material defaults (in.bearing).
-BEARING = common.Bearing("6208")
+BEARING = common.Bearing("machado2014")
 NB, DB, DEXT, DINN = BEARING.nb, BEARING.db, BEARING.dext, BEARING.dinn
 RC_INN, RC_EXT = BEARING.rcinn, BEARING.rcext
 _DECK = common.deck_defaults()

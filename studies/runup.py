@@ -66,7 +66,7 @@ def main():
                 "--output", os.path.join(out, "orders.csv"), sig], who="runup")
     common.post_to(os.path.join(out, "diagnose.json"), ["diagnose", "--format", "json", sig],
                    who="runup")
-    analyse(out, common.Bearing("6208"))
+    analyse(out, common.Bearing("machado2014"))
 
 
 if __name__ == "__main__":
