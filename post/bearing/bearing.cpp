@@ -39,7 +39,7 @@ DefectFactors complete_factors(DefectFactors f)
   return f;
 }
 
-DefectFactors parse_factors(const std::string &text, const std::string &setting)
+DefectFactors parse_factors(const std::string &text)
 {
   std::vector<double> v;
   std::size_t start = 0;
@@ -49,22 +49,23 @@ DefectFactors parse_factors(const std::string &text, const std::string &setting)
     char *end = nullptr;
     const double x = std::strtod(token.c_str(), &end);
     if (token.empty() || *end || !std::isfinite(x) || !(x > 0))
-      throw Error("option " + setting +
-                  " expects BPFO,BPFI,BSF,FTF (or BPFO,BPFI): positive multiples of the shaft "
-                  "frequency, got '" +
-                  text + "'");
+      throw SettingError(
+          "option {bearing.factors} expects BPFO,BPFI,BSF,FTF (or BPFO,BPFI): positive "
+          "multiples of the shaft frequency, got '" +
+          text + "'");
     v.push_back(x);
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
   if (v.size() != 2 && v.size() != 4)
-    throw Error("option " + setting +
-                " expects 4 numbers BPFO,BPFI,BSF,FTF (or 2: BPFO,BPFI), got " +
-                std::to_string(v.size()));
+    throw SettingError(
+        "option {bearing.factors} expects 4 numbers BPFO,BPFI,BSF,FTF (or 2: BPFO,BPFI), got " +
+        std::to_string(v.size()));
   DefectFactors f{v[0], v[1], v.size() == 4 ? v[2] : 0, v.size() == 4 ? v[3] : 0};
   if (!(f.bpfi > f.bpfo))
-    throw Error("option " + setting + ": BPFI must exceed BPFO (a rotating inner ring), got '" +
-                text + "'");
+    throw SettingError(
+        "option {bearing.factors}: BPFI must exceed BPFO (a rotating inner ring), got '" + text +
+        "'");
   return complete_factors(f);
 }
 
@@ -119,7 +120,8 @@ void validate(const BearingGeometry &g)
     const DefectFactors &f = *g.factors;
     for (double x : {f.bpfo, f.bpfi, f.bsf, f.ftf})
       if (!(x > 0) || !std::isfinite(x))
-        throw Error("defect-frequency factors --factors must be positive multiples of fr");
+        throw SettingError(
+            "defect-frequency factors {bearing.factors} must be positive multiples of fr");
     if (!(g.db > 0 && g.dp > 0)) return;  // factors only, or a partial ball set
   }
   if (g.nb < 1) throw Error("ball count --nb must be a positive integer");

@@ -28,9 +28,9 @@ struct BearingGeometry {
   std::optional<DefectFactors> factors;
 };
 
-// Factors from "BPFO,BPFI,BSF,FTF" (the setting `setting`, e.g. --factors); BSF and FTF may
-// be left out ("BPFO,BPFI"): they follow from BPFO and BPFI (Z = BPFO + BPFI). Throws Error.
-DefectFactors parse_factors(const std::string &text, const std::string &setting);
+// The setting {bearing.factors}, "BPFO,BPFI,BSF,FTF"; BSF and FTF may be left out
+// ("BPFO,BPFI"): they follow from BPFO and BPFI (Z = BPFO + BPFI). Throws SettingError.
+DefectFactors parse_factors(const std::string &text);
 // BSF and FTF of factors that give BPFO and BPFI only (zero contact angle folded into d/D).
 DefectFactors complete_factors(DefectFactors f);
 

@@ -196,7 +196,7 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     c.geometry_source = "command line";
   }
   if (a.has("--factors")) {
-    g.factors = parse_factors(a.get("--factors"), "--factors");
+    g.factors = parse_factors(a.get("--factors"));
     if (!have) g.name = "factors";
     if (g.nb == 0) g.nb = static_cast<int>(std::lround(g.factors->bpfo + g.factors->bpfi));
     if (have && g.name.find(" (modified)") == std::string::npos) g.name += " (modified)";

@@ -8,6 +8,7 @@ namespace ohmdem::post::cli {
 const SettingFlags &setting_flags()
 {
   static const SettingFlags flags = {
+      {"bearing.factors", "--factors"},  // BearingGeometry::factors (bearing/bearing.h)
       // InputOptions (io/load_signal.h), its readers, RunMetadata (io/run_metadata.h)
       {"input.rate", "--rate"},
       {"input.rate_variable", "--rate-variable"},

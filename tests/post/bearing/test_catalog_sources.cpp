@@ -64,7 +64,7 @@ TEST(CatalogSources, EveryEntryGivesTheMultiplesItsDataSetPublishesWithin0p1Perc
 
 TEST(CatalogSources, FactorsGiveTheFrequenciesAndWinOverGeometry)
 {
-  const DefectFactors f = parse_factors("3.5848,5.4152,2.3572,0.39828", "--factors");
+  const DefectFactors f = parse_factors("3.5848,5.4152,2.3572,0.39828");
   BearingGeometry g;
   g.name = "factors";
   g.nb = 9;
@@ -75,11 +75,11 @@ TEST(CatalogSources, FactorsGiveTheFrequenciesAndWinOverGeometry)
   EXPECT_DOUBLE_EQ(d.bsf, 2.3572 * 29.95);
   EXPECT_DOUBLE_EQ(d.ftf, 0.39828 * 29.95);
   // two factors: BSF and FTF from BPFO and BPFI, as the geometry would give them
-  const DefectFactors two = parse_factors("3.5848,5.4152", "--factors");
+  const DefectFactors two = parse_factors("3.5848,5.4152");
   EXPECT_NEAR(two.ftf, 0.39831, 1e-5);
   EXPECT_NEAR(two.bsf, 2.3567, 1e-4);
   for (const char *bad : {"", "1,2,3", "3.58;5.41", "5.4,3.5", "a,b", "3.5,5.4,-1,0.4", "3.5,5.4,"})
-    EXPECT_THROW(parse_factors(bad, "--factors"), Error) << bad;
+    EXPECT_THROW(parse_factors(bad), SettingError) << bad;
 }
 
 bool present(const std::string &path)
