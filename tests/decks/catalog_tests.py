@@ -302,9 +302,10 @@ def test_injection(r):
 
 # The published kinematic orders of the sourced bearings simulated below (multiples of fr):
 # MFPT's NiceBearing.m (E. Bechhoefer 2009; ../shared/data/bearing-real-mfpt/README.md) gives
-# BPFI 4.75502; for the Paderborn IBU/MTK 6203 (8 balls of 6.75 mm on 29.05 mm, the KAt fact
-# sheets) Harris' formula gives Z/2 (1 + Dw/Dpw) = 4 (1 + 6.75/29.05) = 4.92943.
-SOURCED_BPFI = {"MFPT_NICE": 4.75502, "6203_IBU-MTK": 4.929432}
+# BPFI 4.75502; for the Paderborn 6203s (the KAt fact sheets: 8 balls of 6.75 mm on 29.05 mm,
+# IBU/MTK, and on 28.55 mm, FAG) Harris' formula gives Z/2 (1 + Dw/Dpw) = 4 (1 + 6.75/29.05) =
+# 4.92943 and 4 (1 + 6.75/28.55) = 4.94571.
+SOURCED_BPFI = {"MFPT_NICE": 4.75502, "6203_IBU-MTK": 4.929432, "6203_FAG": 4.945709}
 
 
 def test_sourced(r):
