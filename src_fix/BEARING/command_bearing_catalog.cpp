@@ -100,6 +100,8 @@ void BearingCatalog::command(int narg, char **arg)
   if (comm->me == 0) {
     cat::CatalogEntry entry;
     if (name != "custom") message = read_entry(dir, name, entry);
+    // the entry that runs, for run.json's "bearing" (first: an entry line cannot shadow it)
+    variables.emplace_back("@entry", name == "custom" ? "custom" : entry.name);
     Variables given;
     for (const char *v : {"Nb", "Db", "Dext", "Dinn", "Dpw"})
       if (const char *value = input->variable->retrieve(const_cast<char *>(v)))
@@ -122,8 +124,6 @@ void BearingCatalog::command(int narg, char **arg)
                " (the default of the name " + name +
                "; others: " + cat::joined_names(entry.others) + ")\n";
     }
-    // the entry that runs, for run.json's "bearing"
-    variables.emplace_back("@entry", name == "custom" ? "custom" : entry.name);
   }
   broadcast(message, variables);
   if (!message.empty()) fail(message);
