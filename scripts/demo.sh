@@ -12,7 +12,7 @@ out=$(realpath -m "${1:-demo-output}")
 mkdir -p "$out"
 post=build/ohmdem-post
 
-run() {  # run NAME [-var ...]: 0.12 s of the 6208 at 500 rad/s, F = 320 N
+run() {  # run NAME [-var ...]: 0.12 s of the paper's bearing (machado2014) at 500 rad/s, F = 320 N
   local name=$1; shift
   mkdir -p "$out/$name"
   echo "== $name: build/ohmdem -in inputs/bearing_6208/in.bearing -var tend 0.12 $*"

@@ -79,10 +79,12 @@ class Bearing:
     """A catalog entry (doc/bearing_catalog.md), read from its file: Nb, Db, Dext, Dinn, and
     the groove radii Rcext, Rcinn (the deck's defaults when the entry omits them)."""
 
-    def __init__(self, name="6208", catalog=None):
+    def __init__(self, name="machado2014", catalog=None):
         self.name = name
         self.path = os.path.join(catalog or CATALOG, name)
         v = index_variables(self.path)
+        if "Dpw" in v and "Nb" in v and "Db" in v and "Dext" not in v:  # the deck's races
+            v["Dext"], v["Dinn"] = v["Dpw"] + v["Db"], v["Dpw"] - v["Db"]
         try:
             self.nb, self.db, self.dext, self.dinn = v["Nb"], v["Db"], v["Dext"], v["Dinn"]
         except KeyError as e:
@@ -224,10 +226,10 @@ def main(argv):
     if argv == ["--shell"]:
         sys.stdout.write(shell_settings())
     elif len(argv) == 2 and argv[0] == "--cage-speed":
-        print(repr(Bearing("6208").cage_speed(float(argv[1]))))
+        print(repr(Bearing().cage_speed(float(argv[1]))))
     elif len(argv) == 2 and argv[0] == "--bearing" and argv[1] in (
             "nb", "db", "dext", "dinn", "pitch"):
-        print(getattr(Bearing("6208"), argv[1]))
+        print(getattr(Bearing(), argv[1]))
     else:
         sys.exit("usage: common.py --shell | --cage-speed OMEGA | --bearing nb|db|dext|dinn|pitch")
 

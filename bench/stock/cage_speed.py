@@ -22,7 +22,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "studies"))
-import common  # noqa: E402  (the catalog's 6208)
+import common  # noqa: E402  (the catalog's machado2014, the paper's bearing)
 
 
 def read_columns(path):
@@ -55,7 +55,7 @@ def read_columns(path):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('file')
-    ap.add_argument('--theory', type=float, default=common.Bearing('6208').cage_speed(500.0))
+    ap.add_argument('--theory', type=float, default=common.Bearing('machado2014').cage_speed(500.0))
     ap.add_argument('--tol', type=float, default=0.01)
     ap.add_argument('--window', type=int, default=10)
     a = ap.parse_args()

@@ -4,6 +4,7 @@
 #ifndef OHMDEM_POST_BEARING_H
 #define OHMDEM_POST_BEARING_H
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,19 +12,35 @@
 
 namespace ohmdem::post {
 
+// A maker's defect-frequency factors: BPFO, BPFI, BSF, FTF as multiples of the shaft frequency.
+struct DefectFactors {
+  double bpfo = 0, bpfi = 0, bsf = 0, ftf = 0;
+};
+
+// A bearing as far as its source publishes it: the ball set (nb, db, dp), or factors, or both
+// (then the factors give the frequencies). db = dp = 0: not published (factors only).
 struct BearingGeometry {
   std::string name;              // catalog name or "custom"
   int nb = 0;                    // number of balls
   double db = 0;                 // ball diameter (m)
   double dp = 0;                 // pitch diameter (m)
   double contact_angle_deg = 0;  // contact angle beta (degrees)
+  std::optional<DefectFactors> factors;
 };
+
+// The setting {bearing.factors}, "BPFO,BPFI,BSF,FTF"; BSF and FTF may be left out
+// ("BPFO,BPFI"): they follow from BPFO and BPFI (Z = BPFO + BPFI). Throws SettingError.
+DefectFactors parse_factors(const std::string &text);
+// BSF and FTF of factors that give BPFO and BPFI only (zero contact angle folded into d/D).
+DefectFactors complete_factors(DefectFactors f);
 
 // One file of the bearing catalog (inputs/bearings, doc/bearing_catalog.md), read by
 // src_fix/lib/catalog, the reader the engine's command bearing_catalog uses too. The pitch
 // diameter is (Dext + Dinn)/2, as in the deck.
 struct CatalogEntry : catalog::CatalogEntry {
+  // Throws Error when the entry gives neither a whole ball set nor factors (what is missing).
   BearingGeometry geometry() const;
+  BearingGeometry partial() const;  // what the entry gives, unchecked (to complete with --dp)
 };
 
 // The catalog folder: $OHMDEM_CATALOG if set and not empty, else the installed catalog

@@ -233,6 +233,10 @@ SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeo
     e.method = "not applicable";
     return e;
   }
+  if (!(g.db > 0 && g.dp > 0)) {  // factors only: no race radius to turn a width into a size
+    e.method = "needs the ball and pitch diameters (the bearing gives factors only)";
+    return e;
+  }
   const double f = d.frequency_hz;
   const PulseTrain p = detect_pulses(s.x, s.rate);
   // pulses repeat at the matched frequency (at twice a matched BSF for a ball)

@@ -12,13 +12,14 @@ namespace ohmdem::post::cli {
 int run_frequencies(const std::vector<std::string> &argv)
 {
   Args a("frequencies",
-         "--bearing NAME [--catalog DIR] | --nb N --db M --dp M [--beta DEG]  "
+         "--bearing NAME [--catalog DIR] | --nb N --db M --dp M [--beta DEG] | --factors LIST  "
          "--rpm RPM | --shaft-hz HZ | --omega RAD/S",
          "Kinematic frequencies of a bearing with a rotating inner ring and a fixed outer ring\n"
          "(Harris): FTF = fr/2 (1 - d/D cos b), BPFO = Nb FTF, BPFI = Nb fr/2 (1 + d/D cos b),\n"
          "BSF = D/(2d) fr (1 - (d/D cos b)^2); a ball defect strikes the races at 2 BSF.\n"
          "--bearing takes a name of the bearing catalog (doc/bearing_catalog.md); the pitch\n"
-         "diameter of a catalog bearing is (Dext + Dinn)/2, as in the deck.");
+         "diameter of a catalog bearing is Dpw or (Dext + Dinn)/2, as in the deck. --factors\n"
+         "BPFO,BPFI,BSF,FTF: the maker's multiples of fr, for a bearing in no catalog.");
   add_bearing_options(a);
   a.option("--harmonics", "N", "also list harmonics 2..N of each frequency (1..50)", "1");
   a.option("--metadata", "FILE", "read bearing and speed from a run.json");
@@ -29,7 +30,8 @@ int run_frequencies(const std::vector<std::string> &argv)
   const RunMetadata meta =
       a.has("--metadata") ? read_run_metadata(a.get("--metadata")) : RunMetadata{};
   const BearingChoice bc = bearing_choice(a, meta);
-  if (!bc.geometry) throw Error("frequencies: give a bearing (--bearing NAME or --nb --db --dp)");
+  if (!bc.geometry)
+    throw Error("frequencies: give a bearing (--bearing NAME, --nb --db --dp, or --factors)");
   if (!bc.fr) throw Error("frequencies: give the shaft speed (--rpm, --shaft-hz or --omega)");
   const int harmonics = harmonics_option(a, 1);
   const BearingGeometry &g = *bc.geometry;

@@ -141,6 +141,9 @@ void add_bearing_options(Args &a)
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");
   a.option("--beta", "DEG", "contact angle (degrees)");
+  a.option("--factors", "LIST",
+           "BPFO,BPFI,BSF,FTF (or BPFO,BPFI): the maker's defect frequencies as multiples of "
+           "the shaft frequency, for a bearing in no catalog (they win over the geometry)");
   a.option("--rpm", "RPM", "shaft speed (rev/min)");
   a.option("--shaft-hz", "HZ", "shaft frequency (Hz); --fr is the same");
   a.option("--fr", "HZ", "shaft frequency (Hz), as in MATLAB's bearing tools");
@@ -154,9 +157,10 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
   BearingGeometry g;
   bool have = false;
   const std::string catalog = a.has("--catalog") ? a.get("--catalog") : default_catalog_dir();
+  const bool completed = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has("--factors");
   if (a.has("--bearing")) {
     const CatalogEntry e = catalog_entry(catalog, a.get("--bearing"));
-    g = e.geometry();
+    g = completed ? e.partial() : e.geometry();  // --dp may complete an entry without one
     have = true;
     c.geometry_source = e.path;
   } else if (meta.bearing && *meta.bearing != "custom" && !(meta.nb && meta.db && meta.dp)) {
@@ -188,6 +192,14 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     if (a.has("--dp")) g.dp = a.number("--dp");
     if (a.has("--beta")) g.contact_angle_deg = a.number("--beta");
     if (have) g.name += " (modified)";
+    have = true;
+    c.geometry_source = "command line";
+  }
+  if (a.has("--factors")) {
+    g.factors = parse_factors(a.get("--factors"));
+    if (!have) g.name = "factors";
+    if (g.nb == 0) g.nb = static_cast<int>(std::lround(g.factors->bpfo + g.factors->bpfi));
+    if (have && g.name.find(" (modified)") == std::string::npos) g.name += " (modified)";
     have = true;
     c.geometry_source = "command line";
   }

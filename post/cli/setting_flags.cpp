@@ -8,6 +8,7 @@ namespace ohmdem::post::cli {
 const SettingFlags &setting_flags()
 {
   static const SettingFlags flags = {
+      {"bearing.factors", "--factors"},  // BearingGeometry::factors (bearing/bearing.h)
       // InputOptions (io/load_signal.h), its readers, RunMetadata (io/run_metadata.h)
       {"input.rate", "--rate"},
       {"input.rate_variable", "--rate-variable"},
@@ -45,6 +46,7 @@ const SettingFlags &setting_flags()
       {"geometry.dp", "--dp"},
       {"geometry.contact_angle_deg", "--beta"},
       {"catalog.dir", "--catalog"},
+      {"catalog.name", "--bearing"},
       // find_run_folders (io/run_folders.h)
       {"runs.recursive", "--recursive"},
       // row selection (io/table_select.h), output form (report/report.h)

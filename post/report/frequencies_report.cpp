@@ -19,6 +19,11 @@ Result frequencies_result(const BearingGeometry &g, const std::string &geometry_
       {"contact angle (deg)", format_number(g.contact_angle_deg)},
       {"shaft frequency (Hz)", format_number(f.fr, 10)},
   };
+  if (g.factors)  // the maker's multiples give the lines; a diameter of 0 is not published
+    r.meta.emplace_back("factors (x fr)", "BPFO " + format_number(g.factors->bpfo) + ", BPFI " +
+                                              format_number(g.factors->bpfi) + ", BSF " +
+                                              format_number(g.factors->bsf) + ", FTF " +
+                                              format_number(g.factors->ftf));
   r.table.columns = {"name", "harmonic", "frequency_Hz", "order_x_fr", "formula"};
   r.table.table_digits = 7;
   for (const DefectLine &line : defect_lines())

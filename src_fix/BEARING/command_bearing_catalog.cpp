@@ -10,8 +10,11 @@
    Defines, as `include` of the entry did, an index variable for every line of
    the entry (Nb, Db, Dext, Dinn, Rcext, Rcinn: a value given with -var wins),
    and PREFIX + each name with the entry's own value, so that the deck can tell
-   whether -var changed the geometry. NAME = custom: no file, the PREFIX
-   variables are -1. Rank 0 reads the file, every rank defines the variables.
+   whether -var changed the geometry, and PREFIX + entry = the entry's name (an
+   alias resolved). An entry without a pitch diameter or ball set that the
+   simulation needs is refused, naming it (-var Dpw: races Dpw +- Db). NAME =
+   custom: no file, the PREFIX copies are -1. Rank 0 reads the file, every rank
+   defines the variables.
 ------------------------------------------------------------------------- */
 
 #include "BEARING/command_bearing_catalog.h"
@@ -36,9 +39,8 @@ namespace {
 const char *const kStyle = "bearing_catalog";
 const char *const kGeometry[] = {"Nb", "Db", "Dext", "Dinn", "Rcext", "Rcinn"};
 
-// The entry NAME of DIR as variables, or the error message for the deck's user.
-std::string read_entry(const std::string &dir, const std::string &name,
-                       std::vector<std::pair<std::string, std::string>> &variables)
+// The entry NAME of DIR (an alias resolved), or the error message for the deck's user.
+std::string read_entry(const std::string &dir, const std::string &name, cat::CatalogEntry &entry)
 {
   std::vector<std::string> names;
   std::string folder_error;
@@ -61,7 +63,7 @@ std::string read_entry(const std::string &dir, const std::string &name,
            ". Known bearings: " + cat::joined_names(names) +
            "; or -var bearing custom with -var Nb, Db, Dext, Dinn (and optionally Rcext, Rcinn)";
   try {
-    variables = cat::read_catalog_file(dir + "/" + name, name).variables;
+    entry = cat::read_entry(dir, name);
   } catch (const cat::CatalogError &e) {
     return e.what();
   }
@@ -90,25 +92,47 @@ void BearingCatalog::command(int narg, char **arg)
   }
   if (dir == "auto") dir = cat::default_catalog_dir();
 
-  std::string message;
+  // Rank 0 reads the entry and decides what to define; every rank defines the same. Each
+  // variable travels as "=NAME" (the entry line: NAME and its copy), "+NAME" (derived: NAME
+  // only), "@NAME" (a copy only, PREFIX + NAME).
+  std::string message, line;
   Variables variables;
-  if (name == "custom") {
-    for (const char *v : kGeometry) variables.emplace_back(v, "");
-  } else {
-    if (comm->me == 0) message = read_entry(dir, name, variables);
-    broadcast(message, variables);
-    if (!message.empty()) fail(message);
+  if (comm->me == 0) {
+    cat::CatalogEntry entry;
+    if (name != "custom") message = read_entry(dir, name, entry);
+    // the entry that runs, for run.json's "bearing" (first: an entry line cannot shadow it)
+    variables.emplace_back("@entry", name == "custom" ? "custom" : entry.name);
+    Variables given;
+    for (const char *v : {"Nb", "Db", "Dext", "Dinn", "Dpw"})
+      if (const char *value = input->variable->retrieve(const_cast<char *>(v)))
+        given.emplace_back(v, value);
+    if (message.empty()) {
+      const cat::DeckGeometry deck =
+          cat::deck_geometry_of(name == "custom" ? nullptr : &entry, given);
+      message = deck.error;
+      for (const auto &[var, value] : deck.define) variables.emplace_back("+" + var, value);
+      for (const auto &[var, value] : deck.copies) variables.emplace_back("@" + var, value);
+    }
+    if (name == "custom") {
+      for (const char *v : kGeometry) variables.emplace_back(std::string("@") + v, "-1");
+      line = "bearing_catalog: bearing custom (dimensions from -var)\n";
+    } else if (message.empty()) {
+      for (const auto &[var, value] : entry.variables) variables.emplace_back("=" + var, value);
+      line = "bearing_catalog: bearing " + name + " from " + entry.path + "\n";
+      if (entry.name != name)
+        line = "bearing_catalog: bearing " + name + " = " + entry.name + " from " + entry.path +
+               " (the default of the name " + name +
+               "; others: " + cat::joined_names(entry.others) + ")\n";
+    }
   }
-
+  broadcast(message, variables);
+  if (!message.empty()) fail(message);
   for (const auto &[var, value] : variables) {
-    if (name != "custom") define_index(var, value);
-    // custom: no entry; -1 never equals a dimension, so the run is "custom" in run.json
-    define_index(prefix + var, name == "custom" ? "-1" : value);
+    const std::string v = var.substr(1);
+    if (var[0] != '@') define_index(v, value);
+    if (var[0] != '+') define_index(prefix + v, value);
   }
   if (comm->me == 0) {
-    const std::string line =
-        name == "custom" ? "bearing_catalog: bearing custom (dimensions from -var)\n"
-                         : "bearing_catalog: bearing " + name + " from " + dir + "/" + name + "\n";
     if (screen) std::fputs(line.c_str(), screen);
     if (logfile) std::fputs(line.c_str(), logfile);
   }

@@ -152,7 +152,7 @@ def stribeck_factor(nb):
 
 
 def test_radial(r):
-    for name, fr_load in ((CWRU, 1000.0), ("6208", 2000.0)):
+    for name, fr_load in ((CWRU, 1000.0), ("machado2014", 2000.0)):
         # The outer ring is pushed along -y: its top part meets the balls there (ball 1 at 90°).
         out, meta = r.run(f"radial_{name}", bearing=name, load="radial", F=fr_load, omega=0.0,
                           phase=90.0, tend=0.004, nout=10)
@@ -225,13 +225,14 @@ def test_custom(r):
     c, mc = r.run("override", bearing=CWRU, tend=0.002, nout=10, Rcinn=0.0042)
     check(mc["bearing"] == "custom" and mc["catalog_name"] == CWRU and mc["rc_inn"] == 0.0042,
           f"-var Rcinn 0.0042 on {CWRU}: run.json bearing {mc['bearing']!r}, rc_inn {mc['rc_inn']}")
-    # The default stays the paper's 6208 with its Table 1 values and the deck's former defaults.
+    # The default stays the paper's bearing (machado2014, their model of an SKF 6208) with its
+    # Table 1 values and the deck's former defaults.
     d, md = r.run("default", tend=0.0001)
-    want = {"bearing": "6208", "nb": 13, "db": 0.0126, "dext": 0.0732, "dinn": 0.048,
+    want = {"bearing": "machado2014", "catalog_name": "machado2014", "nb": 13, "db": 0.0126, "dext": 0.0732, "dinn": 0.048,
             "rc_ext": 0.00665, "rc_inn": 0.00655, "F": 320, "ring_mass": 0.15,
             "cage_mass": 0.008, "cage_clearance": 1e-4, "ring_damping": 6000}
     bad = {k: md.get(k) for k, v in want.items() if md.get(k) != v}
-    check(not bad, f"default run: the paper's 6208, F = 320 N, ring 0.15 kg and 6000 N s/m, "
+    check(not bad, f"default run: the paper's bearing machado2014, F = 320 N, ring 0.15 kg and 6000 N s/m, "
           f"cage 8 g, 0.1 mm play (differences: {bad})")
 
 
@@ -266,7 +267,7 @@ def test_places(r):
     if len(outputs) != len(places):
         return
     meta = json.load(open(os.path.join(outputs[0], "run.json")))
-    check(meta["bearing"] == "6208" and meta["nb"] == 13, f"the default bearing ran: "
+    check(meta["bearing"] == "machado2014" and meta["nb"] == 13, f"the default bearing ran: "
           f"{meta['bearing']} with {meta['nb']} balls")
     same = all(open(os.path.join(o, f), "rb").read() == open(os.path.join(outputs[0], f),
                                                              "rb").read()
@@ -299,6 +300,59 @@ def test_injection(r):
     check(not made, f"no file created by the names ({made or 'none'})")
 
 
+# The published kinematic orders of the sourced bearings simulated below (multiples of fr):
+# MFPT's NiceBearing.m (E. Bechhoefer 2009; ../shared/data/bearing-real-mfpt/README.md) gives
+# BPFI 4.75502; for the Paderborn 6203s (the KAt fact sheets: 8 balls of 6.75 mm on 29.05 mm,
+# IBU/MTK, and on 28.55 mm, FAG) Harris' formula gives Z/2 (1 + Dw/Dpw) = 4 (1 + 6.75/29.05) =
+# 4.92943 and 4 (1 + 6.75/28.55) = 4.94571.
+SOURCED_BPFI = {"MFPT_NICE": 4.75502, "6203_IBU-MTK": 4.929432, "6203_FAG": 4.945709}
+
+
+def test_sourced(r):
+    # An inner-race pit on the sourced bearings of two other rigs passes the balls at their
+    # BPFI. MFPT's shaft ran at 25 Hz, Paderborn's at 1500 rpm (also 25 Hz). Their balls weigh
+    # 0.4-0.6 of the CWRU 6205's: dt 3e-6 s (CWRU's 5e-6 s scaled by about Db^1.25; a choice).
+    omega = 25 * 2 * math.pi
+    for name, bpfi in SOURCED_BPFI.items():
+        out, meta = r.run(f"sourced_{name}", bearing=name, omega=repr(omega), dt=3e-6, tend=0.16,
+                          defect="inner", size=1.0)
+        check(meta["bearing"] == name and meta["catalog_name"] == name,
+              f"{name}: run.json bearing {meta['bearing']!r}, catalog_name {meta['catalog_name']!r}")
+        sig = read_signal(out)
+        t_roll = rolling_from(sig, meta)
+        check(t_roll is not None and t_roll < 0.04, f"{name}: rolling from t = {t_roll} s")
+        if t_roll is None:
+            continue
+        f, n = pulse_rate(sig, t_roll + 0.005)
+        ref = bpfi * 25
+        check(f is not None and abs(f / ref - 1) < 5e-3,
+              f"{name}: BPFI from {n} defect passes {f:.4f} Hz = {f / 25:.5f} fr vs "
+              f"{bpfi} fr ({f / ref - 1:+.3%})")
+    # A name several makers use runs its default entry, and run.json says which.
+    out, meta = r.run("alias_6203", bearing="6203", tend=1e-4, dt=3e-6)
+    check(meta["bearing"] == "6203-2RS_JEM" and meta["catalog_name"] == "6203",
+          f"-var bearing 6203: run.json bearing {meta['bearing']!r}, catalog_name "
+          f"{meta['catalog_name']!r}")
+    # -var Dpw completes an entry that lacks the pitch diameter; the run is then custom.
+    out, meta = r.run("kg_dpw", bearing="6204_KG", Dpw=0.0335, tend=1e-4, dt=3e-6)
+    check(meta["bearing"] == "custom" and abs(meta["dp"] - 0.0335) < 1e-12
+          and abs(meta["dext"] - 0.0411) < 1e-12,
+          f"6204_KG with -var Dpw 0.0335: {meta['bearing']}, dp {meta['dp']}, dext {meta['dext']}")
+    # Entries without what the simulation needs are refused, naming it and how to give it.
+    for name, want in (("6204_KG", "-var Dpw M (pitch diameter"),
+                       ("6201_NTN", "-var Nb N (number of balls; its factors give BPFO + BPFI = 7)"),
+                       ("6208", "has no sourced geometry in the catalog: use machado2014 or 6208_KG")):
+        res = subprocess.run([r.exe, "-in", r.deck, "-log", "none", "-var", "out",
+                              os.path.join(r.workdir, "refused"), "-var", "tend", "1e-5",
+                              "-var", "bearing", name], cwd=r.workdir, env=deck_env(),
+                             capture_output=True)
+        # bytes: an aborting MPI may write a partial line
+        text = (res.stdout + res.stderr).decode(errors="replace")
+        check(res.returncode != 0 and f"ERROR: bearing '{name}'" in text and want in text,
+              f"-var bearing {name} refused naming {want!r}" + ("" if want in text else
+                                                                 "\n" + text[-1500:]))
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
@@ -317,6 +371,7 @@ def main():
             "custom": lambda: test_custom(r),
             "places": lambda: test_places(r),
             "injection": lambda: test_injection(r),
+            "sourced": lambda: test_sourced(r),
         }[a.test]()
     finish()
 

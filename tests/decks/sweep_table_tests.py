@@ -143,19 +143,19 @@ def test_slurm(ctx):
 
 
 def test_reset(ctx):
-    """One partition, two cases in turn: the second (the 6208, the deck's default bearing) must
+    """One partition, two cases in turn: the second (machado2014, the deck's default bearing) must
     not keep what the first (the 6205) set - its balls, and F, whose default scales with them."""
     table = os.path.join(ctx.wd, "bearings.csv")
-    open(table, "w").write("# two bearings in turn\nbearing\n6205\n6208\n")
+    open(table, "w").write("# two bearings in turn\nbearing\n6205\nmachado2014\n")
     root = os.path.join(ctx.wd, "bearings")
     rc, out = ctx.sweep(root, table, 1)
     rows = ctx.collect(root)
-    b5, b8 = rows.get("bearing_6205", {}), rows.get("bearing_6208", {})
-    # The 6208 (inputs/bearings/6208): 13 balls, F default 320 N; the 6205: 9 balls.
+    b5, b8 = rows.get("bearing_6205", {}), rows.get("bearing_machado2014", {})
+    # machado2014 (the paper's bearing): 13 balls, F default 320 N; the 6205: 9 balls.
     check(rc == 0 and b5.get("nb") == "9" and b8.get("nb") == "13",
           f"bearing column: 9 then 13 balls ({b5.get('nb')}, {b8.get('nb')})")
     check(b8.get("F") and float(b8["F"]) == 320.0 and float(b5["F"]) != 320.0,
-          f"the second case's F default is the 6208's 320 N, not the 6205's "
+          f"the second case's F default is machado2014's 320 N, not the 6205's "
           f"({b5.get('F')}, {b8.get('F')})")
 
 

@@ -54,9 +54,9 @@ def test_bearing(r):
         catalog=os.path.join(r.src, "inputs", "bearings"))
     folder = os.path.join(out, "vtk")
     pvd = check_series(folder, r"network\.(\d+)\.vtk", [0, 100, 200, 300], dt, "bearing")
-    # The deck's dimensions: the catalog entry it ran (inputs/bearings/6208).
+    # The deck's dimensions: the catalog entry it ran (inputs/bearings/machado2014).
     cat = dict(re.findall(r"variable\s+(\w+)\s+index\s+(\S+)",
-                          open(os.path.join(r.src, "inputs", "bearings", "6208")).read()))
+                          open(os.path.join(r.src, "inputs", "bearings", "machado2014")).read()))
     dext, dinn = float(cat["Dext"]), float(cat["Dinn"])
     dp = 0.5 * (dext + dinn)
     geometry = sorted({files[2] for files in pvd.values() if len(files) > 2})

@@ -49,7 +49,7 @@ for f in signal.txt run.json; do
   cmp -s "$work/run_own/$f" "$work/run_share/$f" && cmp -s "$work/run_own/$f" run_any/$f ||
     { echo "ERROR: $f differs between the three places"; exit 1; }
 done
-grep -q "bearing_catalog: bearing 6208 from $(realpath "$share/bearings")/6208" run_any.log ||
+grep -q "bearing_catalog: bearing machado2014 from $(realpath "$share/bearings")/machado2014" run_any.log ||
   { echo "ERROR: the installed ohmdem did not read the installed catalog"; exit 1; }
 
 # 2. from anywhere, the catalog named by OHMDEM_CATALOG; a sweep case (resume 1) calls the

@@ -41,7 +41,7 @@ std::string make_run_dir(const std::string &name, const std::string &kind)
   spec.kind = kind;
   spec.snr_db = 20;
   spec.duration = 0.15;
-  const auto sig = defect_signal(bearing_preset("6208"), spec);
+  const auto sig = defect_signal(bearing_preset("machado2014"), spec);
   std::ofstream out(dir + "/signal.txt");
   out << "# time omega_cage fn_inner_mean fn_outer_mean n_contacts_race R n_masked\n";
   char buf[256];

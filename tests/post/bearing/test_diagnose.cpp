@@ -19,7 +19,7 @@ using ohmdem::test::kPi;
 DiagnoseOptions options_6208(double omega = 500)
 {
   DiagnoseOptions o;
-  o.geometry = bearing_preset("6208");
+  o.geometry = bearing_preset("machado2014");
   o.fr = omega / (2 * kPi);
   return o;
 }
@@ -33,7 +33,7 @@ test::DefectSignal make(const std::string &kind, double size_deg = 1.0, double s
   spec.snr_db = snr_db;
   spec.seed = seed;
   spec.slip = slip;
-  return test::defect_signal(bearing_preset("6208"), spec);
+  return test::defect_signal(bearing_preset("machado2014"), spec);
 }
 
 TEST(Diagnose, IdentifiesEachDefectKindOnClean6208Signals)
@@ -104,7 +104,7 @@ TEST(Diagnose, HealthySignalsAreNone)
   // a noise-free constant level
   test::DefectSpec spec;
   spec.kind = "none";
-  const auto flat = test::defect_signal(bearing_preset("6208"), spec);
+  const auto flat = test::defect_signal(bearing_preset("machado2014"), spec);
   EXPECT_EQ(diagnose(flat.signal, options_6208()).defect, "none");
 }
 

@@ -37,7 +37,7 @@ std::string make_run(const std::string &name, const std::string &kind, std::size
   spec.kind = kind;
   spec.snr_db = 20;
   spec.duration = 0.15;
-  const auto sig = test::defect_signal(bearing_preset("6208"), spec);
+  const auto sig = test::defect_signal(bearing_preset("machado2014"), spec);
   std::ofstream out(dir + "/signal.txt");
   out << "# time omega_cage n_contacts_race R\n";
   char buf[128];
@@ -51,7 +51,7 @@ std::string make_run(const std::string &name, const std::string &kind, std::size
   }
   *rows = 5000 + sig.signal.size();
   std::ofstream(dir + "/run.json")
-      << "{\"bearing\":\"6208\",\"omega_inner\":500.0,\"dt\":1e-6,\"defect\":\"" << kind
+      << "{\"bearing\":\"machado2014\",\"omega_inner\":500.0,\"dt\":1e-6,\"defect\":\"" << kind
       << "\",\"t_sliding_end\":0.005}\n";
   return dir;
 }

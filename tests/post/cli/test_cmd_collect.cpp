@@ -336,7 +336,7 @@ TEST(Collect, DiagnosisColumnsEqualDiagnose)
     spec.kind = kind;
     spec.snr_db = 20;
     spec.duration = 0.08;
-    const auto sig = test::defect_signal(bearing_preset("6208"), spec);
+    const auto sig = test::defect_signal(bearing_preset("machado2014"), spec);
     std::ofstream out(dir + "/signal.txt");
     out << "# time R n_masked\n";
     char buf[128];
@@ -349,7 +349,7 @@ TEST(Collect, DiagnosisColumnsEqualDiagnose)
                     sig.signal.x[i] > 1.39 * 1.04 ? 1 : 0);
       out << buf;
     }
-    std::ofstream(dir + "/run.json") << R"({"bearing": "6208", "omega_inner": 500, "defect": ")"
+    std::ofstream(dir + "/run.json") << R"({"bearing": "machado2014", "omega_inner": 500, "defect": ")"
                                      << kind << R"(", "size_deg": 1, "t_sliding_end": 0.002})"
                                      << "\n";
   }

@@ -47,7 +47,7 @@ TEST(Cli, EnvelopeKurtogramAndFrequencies)
             std::string::npos)
       << fb.out;
   EXPECT_NE(fb.out.find("\n2xBPFI,"), std::string::npos);
-  const CliRun f = run("frequencies --bearing 6208 --omega 500 --format json");
+  const CliRun f = run("frequencies --bearing machado2014 --omega 500 --format json");
   ASSERT_EQ(f.status, 0);
   const Json fj = Json::parse(f.out, "frequencies output");
   EXPECT_NEAR(fj.find("bpfi_hz")->number(), 624.8, 0.05);

@@ -203,7 +203,7 @@ TEST(Detect, NoiseAloneIsNone)
   // diagnose on white noise (the 6208 at 500 rad/s, 1 MHz): nothing identified, nothing
   // detected
   DiagnoseOptions o;
-  o.geometry = bearing_preset("6208");
+  o.geometry = bearing_preset("machado2014");
   o.fr = 500 / (2 * kPi);
   for (int seed : {21, 22, 23}) {
     Signal s;
@@ -246,7 +246,7 @@ TEST(Detect, ImpulsesNoFamilyExplainsAreUnidentified)
   s.rate = rate;
   s.x = x;
   DiagnoseOptions o;
-  o.geometry = bearing_preset("6208");
+  o.geometry = bearing_preset("machado2014");
   o.fr = 500 / (2 * kPi);
   const Diagnosis d = diagnose(s, o);
   std::printf(
@@ -289,7 +289,7 @@ TEST(Detect, DeterministicRecordsAreJudgedAgainstTheBaseline)
   // A noiseless resistance record (the simulator's kind: a level and a shaft-synchronous
   // ripple) has no noise floor: the Gaussian tests do not apply. Against itself it is healthy;
   // a rectangle train of a small defect on it is detected by the baseline tests.
-  const BearingGeometry g = bearing_preset("6208");
+  const BearingGeometry g = bearing_preset("machado2014");
   test::DefectSpec healthy;
   healthy.kind = "none";
   auto h = test::defect_signal(g, healthy);
@@ -325,7 +325,7 @@ TEST(Detect, LinesTheBaselineHasTooIdentifyNothing)
   // A radially loaded healthy bearing has a ball-pass (BPFO) comb of its own: its stiffness
   // varies as the balls pass through the load zone. Against a baseline with that comb, the
   // same record is healthy, and an outer defect is identified by what it adds to the comb.
-  const BearingGeometry g = bearing_preset("6208");
+  const BearingGeometry g = bearing_preset("machado2014");
   const double fr = 500 / (2 * kPi);
   const DefectFrequencies k = defect_frequencies(g, fr);
   auto with_comb = [&](std::uint64_t seed, double comb_amplitude) {
@@ -519,7 +519,7 @@ TEST(Detect, CommandLineReportsDetection)
   const std::string noise =
       write_samples("detect_noise.txt", gaussian_record(100000, 0, stream(31)));
   const std::string base = write_samples("detect_base.txt", gaussian_record(100000, 0, stream(32)));
-  const std::string opts = " --rate 1e6 --bearing 6208 --omega 500 --no-size";
+  const std::string opts = " --rate 1e6 --bearing machado2014 --omega 500 --no-size";
 
   CliRun r = test::run("diagnose " + bursts + opts + " --format json");
   ASSERT_EQ(r.status, 0) << r.out;
@@ -577,7 +577,7 @@ TEST(Detect, BadInput)
   Signal b = s;
   b.rate = 5e5;
   DiagnoseOptions d;
-  d.geometry = bearing_preset("6208");
+  d.geometry = bearing_preset("machado2014");
   d.fr = 80;
   d.baseline = &b;
   EXPECT_THROW(diagnose(s, d), Error);  // rates differ
