@@ -75,7 +75,7 @@ TEST(PlotFigures, SpectrogramFaultLinesFollowTheSpeedWhenKnown)
   p.fmin = 0;
   p.fmax = 1e6;
   p.harmonics = 2;
-  p.orders = defect_frequencies({"custom", 9, 0.01, 0.05, 0}, 1.0);
+  p.orders = defect_frequencies({"custom", 9, 0.01, 0.05, 0, std::nullopt}, 1.0);
   const Figure none = spectrogram_figure(sg, p);  // no speed: the image alone
   EXPECT_TRUE(none.series.empty());
   EXPECT_EQ(none.image.zlabel, "amplitude (dB re 1 ohm)");
