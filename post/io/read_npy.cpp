@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
