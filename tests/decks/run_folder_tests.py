@@ -17,6 +17,7 @@ newcomer's first hour; doc/command_deck_files.md).
 Usage: run_folder_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import argparse
+import json
 import os
 import signal
 import subprocess
@@ -47,6 +48,13 @@ def test_nested(a, work):
           f"nested: no -var out: out/bearing made, exit {r.returncode}")
     check(not os.path.exists(os.path.join(work, "results/healthy/.ohmdem.lock")),
           "nested: the lock is removed after the run")
+    # the version of --version in run.json and in the log
+    version = subprocess.run([a.exe, "--version"], capture_output=True, text=True).stdout.split()[1]
+    with open(os.path.join(work, "results/healthy/run.json")) as f:
+        meta = json.load(f)
+    check(meta.get("ohmdem_version") == version, f"nested: run.json ohmdem_version "
+          f"{meta.get('ohmdem_version')} = --version {version}")
+    check(f"ohmdem {version}" in r.stdout, "nested: the screen and log name the version")
 
 
 def test_lock(a, work):
