@@ -11,6 +11,7 @@ newcomer's first hour; doc/command_deck_files.md).
   restart_cut   a restart file cut at 8..200 bytes and in its atoms stops with one message
                 naming the file (exit 1, at once: read_restart alone loops on a cut header);
                 the whole file still continues
+  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding)
   long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
                 message (exit 1), not an abort inside LIGGGHTS (exit 134)
 
@@ -111,9 +112,33 @@ def test_long_path(a, work):
               f"long_path: {label}: a message naming out (exit {r.returncode})")
 
 
+def test_sliding(a, work):
+    """run.json's t_sliding_end follows the bearing: after the measured end of sliding (the
+    ball set's speed within 0.1 % of its rolling value for good), and within twice it; the
+    6208's stays 0.015 s."""
+    import numpy as np
+    r = run(deck(a, "-var", "out", "s6208", "-var", "tend", "1e-5"), work)
+    with open(os.path.join(work, "s6208", "run.json")) as f:
+        check(json.load(f)["t_sliding_end"] == 0.015, "sliding: the 6208's t_sliding_end 0.015")
+    r = run(deck(a, "-var", "out", "s6203", "-var", "bearing", "6203", "-var", "tend", "0.012",
+                 "-screen", "none"), work)
+    with open(os.path.join(work, "s6203", "run.json")) as f:
+        t_json = json.load(f)["t_sliding_end"]
+    path = os.path.join(work, "s6203", "signal.txt")
+    with open(path) as f:
+        names = f.readline().lstrip("#").split()
+    sig = np.loadtxt(path)
+    w, t = sig[:, names.index("omega_balls")], sig[:, names.index("time")]
+    rolling = np.median(w[t > 0.007])
+    t_meas = t[np.nonzero(abs(w - rolling) > 1e-3 * rolling)[0][-1]]
+    check(r.returncode == 0 and t_meas < t_json < 2 * t_meas,
+          f"sliding: the 6203 slides until {t_meas:.4f} s; t_sliding_end {t_json:.4f} s after it "
+          f"and within twice it")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("test", choices=["nested", "lock", "restart_cut", "long_path"])
+    p.add_argument("test", choices=["nested", "lock", "restart_cut", "long_path", "sliding"])
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
     a = p.parse_args()
