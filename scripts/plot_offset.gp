@@ -20,7 +20,8 @@ stats sig using (inwin(column(c_time)) ? column(c_y) : NaN) nooutput name "Y"
 y0 = Y_mean
 # Variations below 1e-9 of the value are round-off of the solve, not physics: said in the title.
 rel = (Y_max - Y_min) / abs(y0)
-floor = rel < 1e-9 ? sprintf("\nnumerical floor: peak to peak %.2g of %s0, round-off, no event", rel, ycol) : ""
+floor = rel < 1e-9 ? sprintf("\nnumerical floor: peak to peak %.2g of %s0, round-off, no event", rel, ycol) \
+                   : sprintf("\npeak to peak %.2g of %s0", rel, ycol)
 if (exists("tablefile")) { set table tablefile }
 set title sprintf("%s: %s - %s0 over %g..%g s (%s0 = %.9g; peak to peak %.3g %s)", name, ycol, \
                   ycol, t0, t1, ycol, y0, (Y_max - Y_min) * yscale, yunit) . floor noenhanced
