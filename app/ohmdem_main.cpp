@@ -11,17 +11,30 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <string>
 
+#include "comm.h"
 #include "input.h"
 #include "lammps.h"
 #include "run_status.h"
 #include "signal_handling.h"
+#include "variable.h"
 
 using LAMMPS_NS::LAMMPS;
 namespace SignalHandler = LAMMPS_NS::SignalHandler;
 
+namespace ohmdem {
+const char *version();  // app/ohmdem_version.cpp
+}
+
 int main(int argc, char **argv)
 {
+  // --version: ours and the engine's, before MPI (LIGGGHTS refuses the flag).
+  if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
+    std::printf("ohmdem %s (on LIGGGHTS 3.8: its version is the first line of a run's log)\n",
+                ohmdem::version());
+    return 0;
+  }
   // Line-buffered screen output: an error written just before an abort reaches a redirected
   // stdout (see also MPI_Abort in run_status.cpp).
   std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
@@ -41,6 +54,16 @@ int main(int argc, char **argv)
   {
     LAMMPS lammps(argc, argv, MPI_COMM_WORLD);
     ohmdem::record_failure_at_exit(&lammps);
+    // The version in the log and as the deck variable ohmdem_version (run.json records it).
+    {
+      std::string words[3] = {"ohmdem_version", "string", ohmdem::version()};
+      char *set[3] = {words[0].data(), words[1].data(), words[2].data()};
+      lammps.input->variable->set(3, set);
+      if (lammps.comm->me == 0) {
+        if (lammps.screen) std::fprintf(lammps.screen, "ohmdem %s\n", ohmdem::version());
+        if (lammps.logfile) std::fprintf(lammps.logfile, "ohmdem %s\n", ohmdem::version());
+      }
+    }
     lammps.input->file();
     if (SignalHandler::request_quit) end = ohmdem::RunEnd::Interrupted;
     ohmdem::record_unfinished_run(&lammps, end);

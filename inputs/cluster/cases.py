@@ -268,7 +268,8 @@ def cmd_sweep_init(a):
     # case; the others read __unset__ here, and sweep-common writes the cases' includes that
     # reset them before each case.
     out += [f"variable {n} index {UNSET}" for n in probe]
-    out.append(f"shell /usr/bin/python3 {os.path.abspath(__file__)} sweep-common {a.root} "
+    # deck_files exec: the values reach cases.py as arguments, never a shell
+    out.append(f"deck_files exec /usr/bin/python3 {os.path.abspath(__file__)} sweep-common v_root "
                + " ".join(f"{n}=${{{n}}}" for n in probe))
     write_atomic(a.lmp, "\n".join(out) + "\n")
 
@@ -277,7 +278,7 @@ def cmd_sweep_common(a):
     """After the probe: the deck variables still __unset__ are the ones each case resets. Writes
     ROOT/.sweep_case_K.lmp for every case K (1-based): delete those variables (the previous
     case's values; the deck's defaults come back), set the row's, the folder `out`, the label
-    and the defect size. All at once: a LIGGGHTS shell command costs a process start."""
+    and the defect size. All at once: a helper program costs a process start."""
     unset = []
     for i, tok in enumerate(a.pairs):
         m = re.match(r"([A-Za-z_][A-Za-z0-9_]*)=(.*)\Z", tok)

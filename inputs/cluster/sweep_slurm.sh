@@ -55,6 +55,8 @@ else  # the sizes as a one-column table
   $CASES_PY grid "size=$(echo $SIZES | tr ' ' ',')" --output "$TABLE"
 fi
 K=${2:-1}
+# K reaches bash arithmetic below, which would run a $(...) inside an array index: digits only.
+[[ $K =~ ^[1-9][0-9]*$ ]] || fail "K (cases per task) must be a whole number >= 1, got '$K'"
 ncases=$($CASES_PY check "$TABLE" --deck "$DECK/in.bearing" --catalog "$OHMDEM_CATALOG")
 ntasks=$($CASES_PY tasks "$TABLE" "$K")
 

@@ -38,9 +38,11 @@ DefectFactors complete_factors(DefectFactors f);
 // src_fix/lib/catalog, the reader the engine's command bearing_catalog uses too. The pitch
 // diameter is (Dext + Dinn)/2, as in the deck.
 struct CatalogEntry : catalog::CatalogEntry {
-  // Throws Error when the entry gives neither a whole ball set nor factors (what is missing).
+  // Throws SettingError when the entry gives neither a whole ball set nor factors (what is
+  // missing).
   BearingGeometry geometry() const;
-  BearingGeometry partial() const;  // what the entry gives, unchecked (to complete with --dp)
+  // What the entry gives, unchecked (to complete with {geometry.dp}).
+  BearingGeometry partial() const;
 };
 
 // The catalog folder: $OHMDEM_CATALOG if set and not empty, else the installed catalog

@@ -52,7 +52,8 @@ void usage(std::ostream &out)
     n.resize(13, ' ');
     out << "  " << n << c.summary << "\n";
   }
-  out << "\n'ohmdem-post <command> --help' describes a command's options.\n";
+  out << "\n'ohmdem-post <command> --help' (or 'ohmdem-post help <command>') describes a "
+         "command's options.\n";
 }
 
 }  // namespace
@@ -64,7 +65,13 @@ int dispatch(int argc, char **argv)
     std::cerr << "ERROR: no command given\n";
     return 2;
   }
-  const std::string name = argv[1];
+  std::string name = argv[1];
+  // help COMMAND: as COMMAND --help
+  std::vector<std::string> rest(argv + 2, argv + argc);
+  if (name == "help" && argc == 3) {
+    name = argv[2];
+    rest = {"--help"};
+  }
   if (name == "--help" || name == "-h" || name == "help") {
     usage(std::cout);
     return 0;
@@ -76,7 +83,7 @@ int dispatch(int argc, char **argv)
   for (const auto &c : commands()) {
     if (name != c.name) continue;
     try {
-      return c.run(std::vector<std::string>(argv + 2, argv + argc));
+      return c.run(rest);
     } catch (const Error &e) {
       std::cerr << "ERROR: " << user_message(e) << "\n";
     } catch (const std::bad_alloc &) {

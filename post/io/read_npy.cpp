@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -132,7 +133,12 @@ class HeaderParser {
     const std::size_t start = i_;
     while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
     if (i_ == start) fail("a shape entry is not a whole number");
-    return std::stoull(s_.substr(start, i_ - start));
+    // More digits than 2^64 holds is no file's shape (stoull would throw out_of_range).
+    const std::string digits = s_.substr(start, i_ - start);
+    errno = 0;
+    const unsigned long long v = std::strtoull(digits.c_str(), nullptr, 10);
+    if (errno == ERANGE) fail("a shape entry (" + digits.substr(0, 24) + ") is beyond 2^64");
+    return v;
   }
   void type(const std::string &t, Field &f) const
   {
@@ -232,6 +238,12 @@ Layout read_layout(std::ifstream &in, const std::string &path)
     throw Error(path + ": .npy format version " + std::to_string(major) +
                 " is not supported (1-3 are)");
   }
+  // The header's length against the file before allocating it (a lying length is no reason
+  // to allocate gigabytes).
+  const std::uint64_t size = std::filesystem::file_size(path);
+  if (len > size - std::min(size, prefix))
+    throw Error(path + ": truncated .npy header: its length field says " + std::to_string(len) +
+                " bytes, the file holds " + std::to_string(size) + " in all");
   std::string text(len, '\0');
   if (!in.read(text.data(), static_cast<std::streamsize>(len)))
     throw Error(path + ": truncated .npy header");
@@ -275,6 +287,13 @@ ColumnTable read_npy(const std::string &path, const TableOptions &opt)
     rows = l.shape[0];
     cols = l.shape.size() == 2 ? l.shape[1] : 1;
     if (cols == 0) throw Error(path + ": an array without columns");
+    // A row must fit in the file before the columns are made (a shape of 1e18 columns).
+    const std::uint64_t size = std::filesystem::file_size(path);
+    const std::uint64_t data = size - std::min(size, l.data_offset);
+    const std::uint64_t limit = rows > 0 ? data / l.fields[0].bytes : std::uint64_t(1) << 20;
+    if (cols > limit)
+      throw Error(path + ": the header's shape gives " + std::to_string(cols) +
+                  " columns, more than the file's " + std::to_string(data) + " data bytes hold");
     for (std::uint64_t c = 1; c <= cols; ++c) t.names.push_back(std::to_string(c));
   }
   t.init_columns(cols);

@@ -165,6 +165,16 @@ void FixBearingDefect::init()
 void FixBearingDefect::setup(int)
 {
   if (kind_ == Kind::Inner || kind_ == Kind::Outer) {
+    // An arc longer than the race is no zone (the ball would never leave it): refused as an
+    // angular size of 360 degrees or more is.
+    const double circumference = 2.0 * ohmdem::kPi * race_->surface().radius;
+    if (arc_ > 0.0 && arc_ >= circumference) {
+      const std::string msg =
+          "fix bearing/defect: keyword 'arc' expects the arc length of a race zone, in (0, " +
+          number_text(circumference) + ") m (the circumference of this race, radius " +
+          number_text(race_->surface().radius) + " m), got " + number_text(arc_);
+      error->all(FLERR, msg.c_str());
+    }
     // Legal but odd: a race zone wider than the ball spacing holds two balls at times.
     const bigint balls = group->count(igroup);
     const double spacing = balls > 0 ? 2.0 * ohmdem::kPi / static_cast<double>(balls) : 0.0;
@@ -197,6 +207,13 @@ void FixBearingDefect::setup(int)
     error->all(FLERR, msg.c_str());
   }
   ball_radius_ = all[1];
+  if (arc_ > 0.0 && arc_ >= ohmdem::kPi * ball_radius_) {
+    const std::string msg =
+        "fix bearing/defect: keyword 'arc' expects the arc length of a ball zone, in (0, " +
+        number_text(ohmdem::kPi * ball_radius_) + ") m (half the ball's circumference), got " +
+        number_text(arc_);
+    error->all(FLERR, msg.c_str());
+  }
 }
 
 // The ball's surface turns with it: integrate its spin (2D: about z only).

@@ -118,4 +118,41 @@ TEST(Npy, ClearErrors)
             std::string::npos);
 }
 
+// Headers that lie about the file (hand-made: numpy writes none of them): a 4 GB header length,
+// a shape of 1e20 rows, a shape of 1e18 columns. Each is refused by name before anything the
+// header claims is allocated (the ASan build would catch an allocation of gigabytes).
+TEST(Npy, LyingHeadersRefusedBeforeAllocating)
+{
+  auto file = [](const std::string &name, const std::string &dict, std::uint32_t len_field) {
+    std::string s("\x93NUMPY\x02\x00", 8);
+    for (int b = 0; b < 4; ++b) s += static_cast<char>((len_field >> (8 * b)) & 0xff);
+    s += dict;
+    s += std::string(64, '\0');  // some data bytes
+    return test::write_temp(name, s);
+  };
+  const std::string good = "{'descr': '<f8', 'fortran_order': False, 'shape': (8,), }\n";
+  EXPECT_NE(error_of([&] {
+              read_npy(file("len4g.npy", good, 0xffffffffu));
+            }).find("its length field says 4294967295 bytes"),
+            std::string::npos);
+  const std::string rows =
+      "{'descr': '<f8', 'fortran_order': False, 'shape': (100000000000000000000,), }\n";
+  EXPECT_NE(error_of([&] {
+              read_npy(file("shape1e20.npy", rows, static_cast<std::uint32_t>(rows.size())));
+            }).find("beyond 2^64"),
+            std::string::npos);
+  const std::string cols =
+      "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 1000000000000000000), }\n";
+  EXPECT_NE(error_of([&] {
+              read_npy(file("cols1e18.npy", cols, static_cast<std::uint32_t>(cols.size())));
+            }).find("more than the file's"),
+            std::string::npos);
+  const std::string many =
+      "{'descr': '<f8', 'fortran_order': False, 'shape': (1000000000000,), }\n";
+  EXPECT_NE(error_of([&] {
+              read_npy(file("rows1e12.npy", many, static_cast<std::uint32_t>(many.size())));
+            }).find("truncated: the header counts 1000000000000 rows"),
+            std::string::npos);
+}
+
 }  // namespace ohmdem::post

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+/* ----------------------------------------------------------------------
+   ohmdem - command deck_files: the files and helper programs of a deck
+   without a shell (doc/command_deck_files.md).
+------------------------------------------------------------------------- */
+
+#ifdef COMMAND_CLASS
+
+// clang-format off
+CommandStyle(deck_files,DeckFiles)
+// clang-format on
+
+#else
+
+#ifndef LMP_DECK_FILES_COMMAND_H
+#define LMP_DECK_FILES_COMMAND_H
+
+#include <string>
+#include <vector>
+
+#include "pointers.h"
+
+namespace LAMMPS_NS {
+
+class DeckFiles : protected Pointers {
+ public:
+  explicit DeckFiles(LAMMPS *lmp);
+  void command(int narg, char **arg);
+
+ private:
+  // WORD, or the whole value of the variable V when WORD is v_V.
+  std::string value_of(const char *word);
+  // Process 0's answer ("" or an error message) on every process; an error stops the run.
+  void finish(std::string message);
+  std::string run_program(const std::vector<std::string> &argv);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

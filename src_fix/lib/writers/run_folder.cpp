@@ -1,0 +1,271 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The files around a run, without a shell (run_folder.h).
+#include "writers/run_folder.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace ohmdem {
+
+namespace {
+
+std::string why(int err)
+{
+  return std::strerror(err);
+}
+
+}  // namespace
+
+std::string check_folder_path(const std::string &path)
+{
+  if (path.empty()) return "the folder name is empty";
+  if (path.size() + kRunFileNameRoom >= PATH_MAX)
+    return "the path '" + path.substr(0, 60) + "...' has " + std::to_string(path.size()) +
+           " characters: a folder of a run takes at most " +
+           std::to_string(PATH_MAX - kRunFileNameRoom - 1) +
+           " (PATH_MAX = " + std::to_string(PATH_MAX) + ", less room for the file names)";
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    std::size_t end = path.find('/', start);
+    if (end == std::string::npos) end = path.size();
+    if (end - start > NAME_MAX)
+      return "the path '" + path.substr(0, 60) + "...' has a component of " +
+             std::to_string(end - start) + " characters ('" + path.substr(start, 20) +
+             "...'): a file name takes at most NAME_MAX = " + std::to_string(NAME_MAX);
+    start = end + 1;
+  }
+  return "";
+}
+
+std::string make_folders(const std::string &path)
+{
+  const std::string bad = check_folder_path(path);
+  if (!bad.empty()) return "cannot create the folder: " + bad;
+  // Each prefix ending before a '/', then the whole path.
+  for (std::size_t pos = 1; pos <= path.size(); ++pos) {
+    if (pos < path.size() && path[pos] != '/') continue;
+    const std::string part = path.substr(0, pos);
+    if (::mkdir(part.c_str(), 0777) == 0) continue;
+    const int err = errno;
+    struct stat st {};
+    if (err == EEXIST && ::stat(part.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) continue;
+    if (err == EEXIST)
+      return "cannot create the folder " + path + ": " + part + " exists and is not a folder";
+    return "cannot create the folder " + path + ": " + part + ": " + why(err);
+  }
+  return "";
+}
+
+std::string copy_file(const std::string &from, const std::string &to)
+{
+  std::ifstream in(from, std::ios::binary);
+  if (!in) return "cannot read " + from + ": " + why(errno);
+  const std::string tmp = to + ".tmp" + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) return "cannot write " + tmp + ": " + why(errno);
+    out << in.rdbuf();
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      return "cannot write " + tmp + " (a full disk?)";
+    }
+  }
+  if (std::rename(tmp.c_str(), to.c_str()) != 0) {
+    const int err = errno;
+    std::remove(tmp.c_str());
+    return "cannot replace " + to + ": " + why(err);
+  }
+  return "";
+}
+
+namespace {
+
+// The header of LIGGGHTS 3.8's write_restart: flag (int), then the value; flags 0..48 in
+// order, -1 ends it. The kinds of the values (read_restart.cpp's enum, checked on a file the
+// deck wrote, tests/lib/writers/test_run_folder.cpp).
+enum Kind { kText, kInt, kBig, kDouble };
+Kind header_kind(int flag)
+{
+  if (flag == 0 || flag == 4 || flag == 22) return kText;  // version, units, atom style
+  if (flag == 5 || flag == 23 || flag == 25 || flag == 28 || flag == 31 || flag == 34)
+    return kBig;                   // step, atoms, bonds, angles, dihedrals, impropers
+  if (flag >= 37) return kDouble;  // box bounds, special factors, tilts
+  return kInt;
+}
+constexpr int kLastHeaderFlag = 48;
+
+struct Bytes {
+  const std::string &data;
+  std::size_t pos = 0;
+  bool take(void *to, std::size_t n)
+  {
+    if (data.size() - pos < n) return false;
+    std::memcpy(to, data.data() + pos, n);
+    pos += n;
+    return true;
+  }
+};
+
+// Where each per-process chunk of atoms starts, walking back from the end: a chunk is an int
+// N, then N doubles, each atom's values starting with their count. "" when the file ends in
+// exactly NCHUNKS chunks holding NATOMS atoms, after byte FROM.
+std::string check_atom_chunks(const std::string &data, std::size_t from, int nchunks,
+                              long long natoms)
+{
+  std::size_t end = data.size();
+  long long atoms = 0;
+  for (int c = 0; c < nchunks; ++c) {
+    // The longest chunk first (an empty one, N = 0, only when nothing longer fits): a short
+    // false match inside the doubles is then never taken for the chunk.
+    bool found = false;
+    const std::size_t longest = (end - from) < 4 ? 0 : (end - from - 4) / 8;
+    for (std::size_t k = 0; k <= longest && !found && end - from >= 4; ++k) {
+      const std::size_t n = longest - k;
+      const std::size_t start = end - 4 - 8 * n;
+      int stored = -1;
+      std::memcpy(&stored, data.data() + start, 4);
+      if (stored < 0 || static_cast<std::size_t>(stored) != n) continue;
+      // The atoms inside: each count a whole number >= 1 that ends inside the chunk.
+      long long count = 0;
+      std::size_t m = 0;
+      bool whole = true;
+      while (m < n && whole) {
+        double size = 0;
+        std::memcpy(&size, data.data() + start + 4 + 8 * m, 8);
+        whole = size >= 1 && size <= static_cast<double>(n - m) &&
+                size == static_cast<double>(static_cast<std::size_t>(size));
+        if (whole) m += static_cast<std::size_t>(size), ++count;
+      }
+      if (!whole || m != n) continue;
+      found = true;
+      atoms += count;
+      end = start;
+    }
+    if (!found) return "its atoms are cut (no whole section of atoms ends the file)";
+  }
+  if (atoms != natoms)
+    return "it holds " + std::to_string(atoms) + " atoms, its header says " +
+           std::to_string(natoms);
+  return "";
+}
+
+}  // namespace
+
+std::string check_restart_file(const std::string &path)
+{
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return "no file " + path + " (" + why(errno) + ")";
+  if (!S_ISREG(st.st_mode)) return path + " is not a file";
+  if (st.st_size > (1LL << 28))  // larger files: LIGGGHTS reads them as they are
+    return "";
+  std::ifstream in(path, std::ios::binary);
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bad = "the restart file " + path + " (" + std::to_string(data.size()) +
+                          " bytes) is damaged or not a LIGGGHTS restart file: ";
+  Bytes b{data};
+  int flag = 0, expected = 0, nprocs = 0;
+  long long natoms = -1;
+  for (;; ++expected) {
+    if (!b.take(&flag, 4)) return bad + "its header is cut";
+    if (flag == -1 && expected == kLastHeaderFlag + 1) break;
+    if (flag != expected)
+      return bad + "header entry " + std::to_string(expected) + " has the flag " +
+             std::to_string(flag);
+    const Kind kind = header_kind(flag);
+    if (kind == kText) {
+      int n = 0;
+      if (!b.take(&n, 4) || n < 1 || n > 4096 || data.size() - b.pos < static_cast<std::size_t>(n))
+        return bad + "its header is cut";
+      if (flag == 0 && data.compare(b.pos, 16, "Version LIGGGHTS") != 0)
+        return bad + "it does not start with a LIGGGHTS version";
+      b.pos += static_cast<std::size_t>(n);
+    } else {
+      long long value = 0;
+      double real = 0;
+      int small = 0;
+      const bool ok = kind == kInt   ? b.take(&small, 4)
+                      : kind == kBig ? b.take(&value, 8)
+                                     : b.take(&real, 8);
+      if (!ok) return bad + "its header is cut";
+      if (flag == 7) nprocs = small;
+      if (flag == 23) natoms = value;
+    }
+  }
+  if (nprocs < 1 || natoms < 0) return bad + "its header gives no processes or atoms";
+  const std::string atoms = check_atom_chunks(data, b.pos, nprocs, natoms);
+  if (!atoms.empty()) return bad + atoms;
+  return "";
+}
+
+std::string lock_path(const std::string &folder)
+{
+  return folder + "/.ohmdem.lock";
+}
+
+LockAnswer lock_folder(const std::string &folder, long pid, const std::string &host,
+                       const std::function<bool(long)> &alive)
+{
+  const std::string file = lock_path(folder);
+  const std::string mine = "pid " + std::to_string(pid) + " host " + host + "\n";
+  LockAnswer answer;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+    if (fd >= 0) {
+      const bool ok = ::write(fd, mine.data(), mine.size()) == static_cast<ssize_t>(mine.size());
+      ::close(fd);
+      if (!ok) answer.error = "cannot write the lock " + file;
+      return answer;
+    }
+    if (errno != EEXIST) {
+      answer.error = "cannot create the lock " + file + ": " + why(errno);
+      return answer;
+    }
+    std::ifstream in(file);
+    std::string word_pid, word_host, holder_host;
+    long holder = -1;
+    in >> word_pid >> holder >> word_host >> holder_host;
+    const bool readable = word_pid == "pid" && word_host == "host" && holder > 0;
+    if (readable && holder == pid && holder_host == host) return answer;  // ours already
+    if (readable && holder_host != host) {
+      answer.error = "the output folder " + folder + " is in use by the run of pid " +
+                     std::to_string(holder) + " on host " + holder_host + " (" + file +
+                     "); give another -var out, or remove " + file + " when that run has ended";
+      return answer;
+    }
+    if (readable && alive(holder)) {
+      answer.error = "the output folder " + folder + " is in use by the live run of pid " +
+                     std::to_string(holder) + " on this host (" + host + ", " + file +
+                     "): give another -var out, or wait for that run to end";
+      return answer;
+    }
+    // Stale (its process has ended) or unreadable (cut while written): replace it.
+    answer.note = "removed the stale lock " + file +
+                  (readable ? " of pid " + std::to_string(holder) + ", which no longer runs"
+                            : " (unreadable)");
+    std::remove(file.c_str());
+  }
+  answer.error = "cannot take the lock " + file + ": another run took it at the same time";
+  return answer;
+}
+
+void unlock_folder(const std::string &folder, long pid, const std::string &host)
+{
+  const std::string file = lock_path(folder);
+  std::ifstream in(file);
+  std::string word_pid, word_host, holder_host;
+  long holder = -1;
+  in >> word_pid >> holder >> word_host >> holder_host;
+  if (holder == pid && holder_host == host) std::remove(file.c_str());
+}
+
+}  // namespace ohmdem

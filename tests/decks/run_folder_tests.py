@@ -1,0 +1,151 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The output folder and the restart file of the bearing deck (issue: nothing lost, a
+newcomer's first hour; doc/command_deck_files.md).
+
+  nested        -var out results/healthy in a folder where results/ does not exist (a fresh
+                clone), and the deck with no -var at all (out/bearing): made with the parents
+  lock          a second run into the folder of a live run stops (exit 1) naming the holder's
+                pid; after the holder is killed (SIGKILL) its lock is stale: the next run
+                replaces it with a warning and finishes
+  restart_cut   a restart file cut at 8..200 bytes and in its atoms stops with one message
+                naming the file (exit 1, at once: read_restart alone loops on a cut header);
+                the whole file still continues
+  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding)
+  long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
+                message (exit 1), not an abort inside LIGGGHTS (exit 134)
+
+Usage: run_folder_tests.py TEST --exe OHMDEM --src SOURCE_DIR
+"""
+import argparse
+import json
+import os
+import signal
+import subprocess
+import tempfile
+import time
+
+from deck_checks import check, finish
+
+
+def deck(a, *var):
+    return [a.exe, "-in", os.path.join(a.src, "inputs", "bearing_6208", "in.bearing"),
+            "-log", "none"] + list(var)
+
+
+def run(cmd, work, timeout=120):
+    return subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          text=True, errors="replace", timeout=timeout)
+
+
+def test_nested(a, work):
+    r = run(deck(a, "-var", "out", "results/healthy", "-var", "tend", "1e-5"), work)
+    check(r.returncode == 0 and os.path.isfile(os.path.join(work, "results/healthy/signal.txt")),
+          f"nested: -var out results/healthy: exit {r.returncode}")
+    bare = os.path.join(work, "bare")
+    os.makedirs(bare)
+    r = run(deck(a, "-var", "tend", "1e-5"), bare)  # tend only to keep it short
+    check(r.returncode == 0 and os.path.isfile(os.path.join(bare, "out/bearing/run.json")),
+          f"nested: no -var out: out/bearing made, exit {r.returncode}")
+    check(not os.path.exists(os.path.join(work, "results/healthy/.ohmdem.lock")),
+          "nested: the lock is removed after the run")
+    # the version of --version in run.json and in the log
+    version = subprocess.run([a.exe, "--version"], capture_output=True, text=True).stdout.split()[1]
+    with open(os.path.join(work, "results/healthy/run.json")) as f:
+        meta = json.load(f)
+    check(meta.get("ohmdem_version") == version, f"nested: run.json ohmdem_version "
+          f"{meta.get('ohmdem_version')} = --version {version}")
+    check(f"ohmdem {version}" in r.stdout, "nested: the screen and log name the version")
+
+
+def test_lock(a, work):
+    holder = subprocess.Popen(deck(a, "-var", "out", "shared", "-var", "tend", "5",
+                                   "-screen", "none"), cwd=work)
+    try:
+        lock = os.path.join(work, "shared", ".ohmdem.lock")
+        for _ in range(200):
+            if os.path.exists(lock):
+                break
+            time.sleep(0.05)
+        check(os.path.exists(lock), "lock: the live run holds shared/.ohmdem.lock")
+        r = run(deck(a, "-var", "out", "shared", "-var", "tend", "1e-5"), work)
+        check(r.returncode == 1 and f"in use by the live run of pid {holder.pid}" in r.stdout,
+              f"lock: a second run refused, naming pid {holder.pid} (exit {r.returncode}): "
+              f"{[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
+    finally:
+        holder.send_signal(signal.SIGKILL)
+        holder.wait()
+    r = run(deck(a, "-var", "out", "shared", "-var", "tend", "1e-5"), work)
+    check(r.returncode == 0 and "stale lock" in r.stdout,
+          f"lock: after SIGKILL the stale lock is replaced with a warning (exit {r.returncode})")
+
+
+def test_restart_cut(a, work):
+    first = os.path.join(work, "first")
+    r = run([a.exe, "-in", os.path.join(a.src, "tests", "decks", "in.restart_first"),
+             "-var", "bearing_deck", os.path.join(a.src, "inputs", "bearing_6208", "in.bearing"),
+             "-var", "here", os.path.join(a.src, "inputs", "bearing_6208"),
+             "-var", "out", first, "-var", "tend", "2e-5", "-screen", "none"], work)
+    whole = open(os.path.join(first, "half.restart"), "rb").read()
+    check(r.returncode == 0 and len(whole) > 1000, f"restart_cut: a restart of {len(whole)} bytes")
+    for n in (8, 9, 64, 100, 150, 200, len(whole) // 2, len(whole) - 8):
+        cut = os.path.join(work, f"cut_{n}.restart")
+        with open(cut, "wb") as f:
+            f.write(whole[:n])
+        t0 = time.time()
+        r = run(deck(a, "-var", "out", f"r{n}", "-var", "start", "restart",
+                     "-var", "restart_file", cut, "-var", "tend", "4e-5"), work, timeout=60)
+        errors = [l for l in r.stdout.splitlines() if "ERROR" in l]
+        check(r.returncode == 1 and len(errors) == 1 and cut in errors[0]
+              and time.time() - t0 < 30 and len(r.stdout) < 20000,
+              f"restart_cut: {n} bytes: one message naming the file (exit {r.returncode}): "
+              f"{errors[:2]}")
+    r = run(deck(a, "-var", "out", "whole", "-var", "start", "restart", "-var", "restart_file",
+                 os.path.join(first, "half.restart"), "-var", "tend", "4e-5"), work)
+    check(r.returncode == 0, f"restart_cut: the whole file continues (exit {r.returncode})")
+
+
+def test_long_path(a, work):
+    for label, out in (("PATH_MAX", "d/" * 2100), ("NAME_MAX", "x" * 300)):
+        r = run(deck(a, "-var", "out", out, "-var", "tend", "1e-5"), work)
+        check(r.returncode == 1 and "deck variable out" in r.stdout and label in r.stdout,
+              f"long_path: {label}: a message naming out (exit {r.returncode})")
+
+
+def test_sliding(a, work):
+    """run.json's t_sliding_end follows the bearing: after the measured end of sliding (the
+    ball set's speed within 0.1 % of its rolling value for good), and within twice it; the
+    6208's stays 0.015 s."""
+    import numpy as np
+    r = run(deck(a, "-var", "out", "s6208", "-var", "tend", "1e-5"), work)
+    with open(os.path.join(work, "s6208", "run.json")) as f:
+        check(json.load(f)["t_sliding_end"] == 0.015, "sliding: the 6208's t_sliding_end 0.015")
+    r = run(deck(a, "-var", "out", "s6203", "-var", "bearing", "6203", "-var", "tend", "0.012",
+                 "-screen", "none"), work)
+    with open(os.path.join(work, "s6203", "run.json")) as f:
+        t_json = json.load(f)["t_sliding_end"]
+    path = os.path.join(work, "s6203", "signal.txt")
+    with open(path) as f:
+        names = f.readline().lstrip("#").split()
+    sig = np.loadtxt(path)
+    w, t = sig[:, names.index("omega_balls")], sig[:, names.index("time")]
+    rolling = np.median(w[t > 0.007])
+    t_meas = t[np.nonzero(abs(w - rolling) > 1e-3 * rolling)[0][-1]]
+    check(r.returncode == 0 and t_meas < t_json < 2 * t_meas,
+          f"sliding: the 6203 slides until {t_meas:.4f} s; t_sliding_end {t_json:.4f} s after it "
+          f"and within twice it")
+
+
+def main():
+    p = argparse.ArgumentParser()
+    p.add_argument("test", choices=["nested", "lock", "restart_cut", "long_path", "sliding"])
+    p.add_argument("--exe", required=True)
+    p.add_argument("--src", required=True)
+    a = p.parse_args()
+    with tempfile.TemporaryDirectory(prefix=f"runfolder_{a.test}_") as work:
+        globals()[f"test_{a.test}"](a, work)
+    finish()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The files around a run without a shell (src_fix/lib/writers/run_folder.*): folders with their
+// parents and their length limits, the lock of an output folder, the restart file check on a
+// file built here in LIGGGHTS 3.8's write_restart layout (header flags 0..48, then -1; the atoms
+// as chunks of an int N and N doubles, each atom's values starting with their count).
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include <climits>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "temp_dir.h"
+#include "writers/run_folder.h"
+
+using ohmdem::test::temp_path;
+
+namespace {
+
+bool is_dir(const std::string &p)
+{
+  struct stat st {};
+  return ::stat(p.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+template <class T>
+void put(std::string &s, T v)
+{
+  s.append(reinterpret_cast<const char *>(&v), sizeof v);
+}
+void put_text(std::string &s, const std::string &t)
+{
+  put<int>(s, static_cast<int>(t.size() + 1));
+  s.append(t.c_str(), t.size() + 1);
+}
+
+// A restart file of NATOMS atoms of 5 values each, in one chunk.
+std::string restart_bytes(int natoms)
+{
+  std::string s;
+  for (int flag = 0; flag <= 48; ++flag) {
+    put<int>(s, flag);
+    if (flag == 0)
+      put_text(s, "Version LIGGGHTS-PUBLIC 3.8.0");
+    else if (flag == 4)
+      put_text(s, "si");
+    else if (flag == 22)
+      put_text(s, "sphere");
+    else if (flag == 5 || flag == 23 || flag == 25 || flag == 28 || flag == 31 || flag == 34)
+      put<std::int64_t>(s, flag == 23 ? natoms : 0);
+    else if (flag >= 37)
+      put<double>(s, 0.5);
+    else
+      put<int>(s, 1);  // nprocs (flag 7) = 1 and every other int
+  }
+  put<int>(s, -1);
+  s += std::string(40, '\0');  // groups, types, fixes: not checked
+  put<int>(s, natoms * 5);
+  for (int a = 0; a < natoms; ++a)
+    for (int v = 0; v < 5; ++v) put<double>(s, v == 0 ? 5.0 : 0.25 * a);
+  return s;
+}
+
+std::string write(const std::string &name, const std::string &bytes)
+{
+  const std::string path = temp_path(name);
+  std::ofstream(path, std::ios::binary) << bytes;
+  return path;
+}
+
+}  // namespace
+
+TEST(RunFolder, MakesParentsAndAcceptsExisting)
+{
+  const std::string path = temp_path("a") + "/b/c";
+  EXPECT_EQ(ohmdem::make_folders(path), "");
+  EXPECT_TRUE(is_dir(path));
+  EXPECT_EQ(ohmdem::make_folders(path), "");
+  EXPECT_EQ(ohmdem::make_folders(path + "/"), "");
+}
+
+TEST(RunFolder, RefusesAFileInTheWay)
+{
+  const std::string file = write("plain_file", "x");
+  const std::string msg = ohmdem::make_folders(file + "/sub");
+  EXPECT_NE(msg.find("is not a folder"), std::string::npos) << msg;
+}
+
+TEST(RunFolder, RefusesLongPathsBeforeTheSystemDoes)
+{
+  const std::string msg = ohmdem::make_folders(temp_path("") + std::string(PATH_MAX, 'x'));
+  EXPECT_NE(msg.find("PATH_MAX"), std::string::npos) << msg;
+  const std::string comp = ohmdem::make_folders(temp_path(std::string(300, 'y')));
+  EXPECT_NE(comp.find("NAME_MAX"), std::string::npos) << comp;
+  EXPECT_NE(ohmdem::make_folders(""), "");
+}
+
+TEST(RunFolder, CopiesWhole)
+{
+  const std::string from = write("copy_from", std::string("abc\0def", 7));
+  ASSERT_EQ(ohmdem::copy_file(from, temp_path("copy_to")), "");
+  std::ifstream in(temp_path("copy_to"), std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), {}), std::string("abc\0def", 7));
+  EXPECT_NE(ohmdem::copy_file(temp_path("none"), temp_path("x")), "");
+}
+
+TEST(RunFolder, LockRefusesALiveHolderAndReplacesAStaleOne)
+{
+  const std::string dir = temp_path("locked");
+  ASSERT_EQ(ohmdem::make_folders(dir), "");
+  auto alive = [](long pid) { return pid == 111; };
+  EXPECT_EQ(ohmdem::lock_folder(dir, 111, "h1", alive).error, "");
+  EXPECT_EQ(ohmdem::lock_folder(dir, 111, "h1", alive).error, "");  // ours again
+  const auto busy = ohmdem::lock_folder(dir, 222, "h1", alive);
+  EXPECT_NE(busy.error.find("live run of pid 111"), std::string::npos) << busy.error;
+  const auto remote = ohmdem::lock_folder(dir, 222, "h2", alive);
+  EXPECT_NE(remote.error.find("on host h1"), std::string::npos) << remote.error;
+  ohmdem::unlock_folder(dir, 222, "h1");  // not its lock: kept
+  EXPECT_NE(ohmdem::lock_folder(dir, 222, "h1", alive).error, "");
+  // The holder ended without unlocking (SIGKILL): stale, replaced.
+  auto none_alive = [](long) { return false; };
+  const auto stale = ohmdem::lock_folder(dir, 222, "h1", none_alive);
+  EXPECT_EQ(stale.error, "");
+  EXPECT_NE(stale.note.find("stale"), std::string::npos);
+  ohmdem::unlock_folder(dir, 222, "h1");
+  EXPECT_EQ(ohmdem::lock_folder(dir, 333, "h1", alive).note, "");  // no lock left
+}
+
+TEST(RunFolder, RestartCheckAcceptsAWholeFile)
+{
+  EXPECT_EQ(ohmdem::check_restart_file(write("whole.restart", restart_bytes(13))), "");
+}
+
+TEST(RunFolder, RestartCheckRefusesEveryCut)
+{
+  const std::string whole = restart_bytes(13);
+  // every length from 0 to the whole file less one byte
+  for (std::size_t n = 0; n < whole.size(); n += (n < 300 ? 1 : 7)) {
+    const std::string msg = ohmdem::check_restart_file(write("cut.restart", whole.substr(0, n)));
+    EXPECT_NE(msg.find("cut.restart"), std::string::npos) << "length " << n << ": " << msg;
+  }
+  EXPECT_NE(ohmdem::check_restart_file(write("cut1.restart", whole.substr(0, whole.size() - 1))),
+            "");
+}
+
+TEST(RunFolder, RestartCheckRefusesOtherFiles)
+{
+  EXPECT_NE(ohmdem::check_restart_file(temp_path("missing.restart")).find("no file"),
+            std::string::npos);
+  EXPECT_NE(ohmdem::check_restart_file(temp_path("")), "");  // a folder
+  std::string other = restart_bytes(13);
+  std::memcpy(&other[8], "Version LAMMPS  ", 16);
+  EXPECT_NE(ohmdem::check_restart_file(write("other.restart", other)).find("LIGGGHTS version"),
+            std::string::npos);
+  // the header's atom count differs from the atoms the file holds
+  std::string fewer = restart_bytes(13);
+  const std::string twelve = restart_bytes(12);
+  EXPECT_EQ(fewer.size() - twelve.size(), 40u);
+  std::string liar = twelve;
+  const std::size_t at = liar.find(std::string("\x17\0\0\0", 4));
+  ASSERT_NE(at, std::string::npos);
+  const std::int64_t thirteen = 13;
+  std::memcpy(&liar[at + 4], &thirteen, 8);
+  EXPECT_NE(ohmdem::check_restart_file(write("liar.restart", liar)).find("12 atoms"),
+            std::string::npos);
+}
