@@ -48,6 +48,9 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--baseline", "FILE",
            "healthy reference record (same input options and sampling rate; its run.json is "
            "not read)");
+  a.option("--baseline-rate", "HZ",
+           "sampling rate of a --baseline without time stamps when it is not the record's: "
+           "refused if it differs (resample it first with acquire)");
   a.flag("--no-size", "skip the defect size estimate");
   a.flag("--keep-sliding",
          "analyse the sliding phase too (default: start at t_sliding_end "
@@ -84,9 +87,20 @@ int run_diagnose(const std::vector<std::string> &argv)
     InputOptions io = input_options(a);
     io.files = {a.get("--baseline")};
     io.min_samples = 256;
+    if (a.has("--baseline-rate"))
+      io.rate = a.number_in("--baseline-rate", 0, Range::above(0), "a rate", "Hz");
     if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
       io.from = *meta.t_sliding_end;
     base = load_named(io, meta);
+    // a healthy record at another rate would be compared line by line at wrong frequencies:
+    // refused, never resampled silently
+    if (std::fabs(base.rate / s.rate - 1) > 1e-9)
+      throw Error("diagnose: --baseline " + io.files[0] + " is sampled at " +
+                  format_number(base.rate, 10) + " Hz, the record at " + format_number(s.rate, 10) +
+                  " Hz: a baseline must have the record's rate; resample it first (ohmdem-post "
+                  "acquire BASELINE --input-rate " +
+                  format_number(base.rate, 10) + " --lowpass F --rate " +
+                  format_number(s.rate, 10) + " --output FILE)");
     o.baseline = &base;
   }
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
@@ -114,7 +128,9 @@ int run_diagnose(const std::vector<std::string> &argv)
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
-  if (o.baseline) m.emplace_back("baseline", a.get("--baseline"));
+  if (o.baseline)
+    m.emplace_back("baseline", a.get("--baseline") + " (at " + format_number(o.baseline->rate, 10) +
+                                   " Hz, the record's rate)");
   if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
     m.emplace_back("band kurtosis significant",
                    std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +

@@ -155,5 +155,40 @@ TEST(RealData, DiagnoseEveryMeasuredRecordAndPrint)
   }
 }
 
+TEST(RealData, BaselineAtAnotherRateIsRefused)
+{
+  // Issue 25 item 4: sig08 (healthy, 48 kHz) as the baseline of sig11 (12 kHz). Read with the
+  // record's --rate it was taken silently at 12 kHz (its lines at a quarter of their
+  // frequencies); given its own rate it is refused with the remedy, and once taken to 12 kHz by
+  // acquire it is accepted and the metadata says at which rate.
+  const std::string dir = ohmdem::test::cwru_dir();
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
+  const std::string opts = " --rate 12000 --bearing 6205 --rpm 1796 --no-size";
+  CliRun r = run("diagnose " + dir + "/sig11.txt" + opts + " --baseline " + dir +
+                 "/sig08.txt --baseline-rate 48000");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("sampled at 48000 Hz, the record at 12000 Hz: a baseline must have the "
+                       "record's rate; resample it first (ohmdem-post acquire"),
+            std::string::npos)
+      << r.out;
+  const std::string base12 = std::string(OHMDEM_POST_TEST_TMP) + "/sig08_12k.txt";
+  r = run("acquire " + dir + "/sig08.txt --input-rate 48000 --lowpass 5000 --rate 12000 --output " +
+          base12);
+  ASSERT_EQ(r.status, 0) << r.out;
+  // the record's input options read the baseline too: one value per line, as sig11.txt
+  const std::string base12_x = base12 + ".x";
+  {
+    std::ifstream in(base12);
+    std::ofstream out(base12_x);
+    std::string line, t, x;
+    while (std::getline(in, line))
+      if (!line.empty() && line[0] != '#' && (std::istringstream(line) >> t >> x)) out << x << "\n";
+  }
+  r = run("diagnose " + dir + "/sig11.txt" + opts + " --baseline " + base12_x +
+          " --baseline-rate 12000");
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("(at 12000 Hz, the record's rate)"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace ohmdem::post
