@@ -118,6 +118,16 @@ int run_diagnose(const std::vector<std::string> &argv)
   m.emplace_back(
       "shaft frequency (Hz)",
       format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  // issue 25: the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
+  // a percent or two), and the shaft and mains lines no family could claim
+  m.emplace_back("shaft frequency from the spectrum (Hz)",
+                 d.shaft_estimated
+                     ? format_number(d.shaft_hz_estimated, 8) + " (" +
+                           format_number(100 * (d.shaft_hz_estimated / o.fr - 1), 3) +
+                           " % from the given one; " + std::to_string(d.shaft_lines_masked) +
+                           " shaft and mains lines masked)"
+                     : "no shaft comb stands out (" + std::to_string(d.shaft_lines_masked) +
+                           " shaft and mains lines masked)");
   if (in_orders)
     m.emplace_back("domain", "orders: speed varies by " +
                                  format_number(100 * sa->speed.variation, 3) +

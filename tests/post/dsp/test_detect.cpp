@@ -500,7 +500,9 @@ TEST(Detect, KurtogramTreatsTheEndJumpAsBandSkDoes)
           << channel;
       // the top band itself, as the test sees it: near zero (Gaussian), no longer a maximum
       for (const auto &c : kg.cells)
-        if (c.hi == 24000 && c.bands == 24) EXPECT_LT(c.kurtosis, 0.5) << channel;
+        if (c.hi == 24000 && c.bands == 24) {
+          EXPECT_LT(c.kurtosis, 0.5) << channel;
+        }
     }
   }
 }
