@@ -423,6 +423,13 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
                format_number(best->score, 3) + ") cannot be told from shaft harmonics";
     d.warnings.push_back("ambiguous: " + d.reason);
   }
+  if (d.shaft_estimated) {
+    d.shaft_source = "shaft comb";
+  } else if (d.defect == "inner" || d.defect == "outer") {
+    d.shaft_estimated = true;
+    d.shaft_hz_estimated = d.frequency_hz * k.fr / best->nominal_hz;
+    d.shaft_source = d.label + " comb";
+  }
   d.detected = d.defect != "none";
   if (opt.estimate_size) d.size = estimate_size(s, d, opt.geometry);
   return d;

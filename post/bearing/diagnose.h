@@ -97,8 +97,11 @@ struct Diagnosis {
   // The shaft frequency from the spectrum's shaft harmonics (shaft_lines.h; the spectrum whose
   // shaft comb is stronger) when they stand out, else the given one; the lines masked (both
   // spectra) so that no defect comb claims them.
+  // Without a shaft comb, an identified race family gives it (matched / kinematic order: race
+  // defects barely slip); shaft_source says which: "shaft comb" or "BPFI comb", "BPFO comb".
   bool shaft_estimated = false;
   double shaft_hz_estimated = 0;
+  std::string shaft_source;
   std::size_t shaft_lines_masked = 0;
   std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
 };

@@ -124,8 +124,8 @@ int run_diagnose(const std::vector<std::string> &argv)
                  d.shaft_estimated
                      ? format_number(d.shaft_hz_estimated, 8) + " (" +
                            format_number(100 * (d.shaft_hz_estimated / o.fr - 1), 3) +
-                           " % from the given one; " + std::to_string(d.shaft_lines_masked) +
-                           " shaft and mains lines masked)"
+                           " % from the given one, from the " + d.shaft_source + "; " +
+                           std::to_string(d.shaft_lines_masked) + " shaft and mains lines masked)"
                      : "no shaft comb stands out (" + std::to_string(d.shaft_lines_masked) +
                            " shaft and mains lines masked)");
   if (in_orders)

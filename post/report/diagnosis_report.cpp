@@ -126,6 +126,8 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("band_kurtosis_significant",
         std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
   j.set("shaft_hz", c.options.fr);
+  j.set("shaft_hz_from_spectrum", d.shaft_estimated ? Json(d.shaft_hz_estimated) : Json());
+  j.set("shaft_hz_source", d.shaft_estimated ? Json(d.shaft_source) : Json());
   j.set("domain", c.in_orders ? "orders" : "time");
   j.set("bearing", c.options.geometry.name);
   if (c.run_defect) j.set("run_defect", *c.run_defect);
