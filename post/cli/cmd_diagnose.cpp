@@ -28,9 +28,11 @@ int run_diagnose(const std::vector<std::string> &argv)
       "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
       "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
       "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
-      "may be off by --tolerance (slip). The defect is the family scoring >= --min-score\n"
-      "(inner, outer, ball, cage), else 'unidentified' if detection fired (a fault of unknown\n"
-      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
+      "may be off by --tolerance (slip); shaft and mains lines are masked (the shaft frequency\n"
+      "is estimated from them). The defect is the family scoring >= --min-score (inner, outer,\n"
+      "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
+      "harmonic, else 'unidentified' if detection fired (a fault of unknown type), else\n"
+      "'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
       "estimated from the pulse widths of a level signal such as R(t).\n"
       "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
