@@ -423,6 +423,15 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
                format_number(best->score, 3) + ") cannot be told from shaft harmonics";
     d.warnings.push_back("ambiguous: " + d.reason);
   }
+  // A cage verdict: FTF lines are also the modulation of a ball defect's 2 BSF comb (a ball
+  // defect is weaker and less periodic than a race's): with any ball comb above chance, say so.
+  if (d.defect == "cage" && d.families[2].score > 0) {
+    d.candidate = "ball";
+    d.reason =
+        "possible ball defect: FTF lines are also the cage modulation of a ball defect "
+        "(ball comb " +
+        d.families[2].label + " score " + format_number(d.families[2].score, 3) + ")";
+  }
   if (d.shaft_estimated) {
     d.shaft_source = "shaft comb";
   } else if (d.defect == "inner" || d.defect == "outer") {

@@ -77,7 +77,9 @@ struct Diagnosis {
   std::string defect = "none";
   // "ambiguous" (issue 25): the best family scored but its fundamental lies within the
   // tolerance of a shaft harmonic (2 BSF = 3.988 fr for the CWRU fan-end 6203), where its comb
-  // cannot be told from the machine's shaft lines; candidate names it and reason says why
+  // cannot be told from the machine's shaft lines; candidate names it and reason says why.
+  // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
+  // defect, the reason says so).
   std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;

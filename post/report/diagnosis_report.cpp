@@ -71,7 +71,7 @@ const FamilyScore *chosen_family(const Diagnosis &d)
 {
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
-    if (f.defect == d.defect || f.defect == d.candidate) chosen = &f;
+    if (f.defect == d.defect || (d.defect == "ambiguous" && f.defect == d.candidate)) chosen = &f;
   return chosen;
 }
 

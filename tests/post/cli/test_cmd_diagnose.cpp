@@ -218,6 +218,25 @@ TEST(RealData, ShaftSpeedFromTheSpectrumOfMfptRecords)
     }
 }
 
+TEST(RealData, CageVerdictSaysPossibleBallDefect)
+{
+  // Issue 25 item 2: sig11 (drive end; kurtosis 2.98, FTF lines, a weak ball comb) read `cage`
+  // with nothing more; FTF lines are also the cage modulation of a ball defect, which is
+  // weaker and less periodic than a race's: the verdict now says so.
+  const std::string dir = ohmdem::test::cwru_dir();
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
+  const CliRun r = run("diagnose " + dir +
+                       "/sig11.mat --variable DE_time --rate 12000 --rpm-variable RPM --bearing "
+                       "6205-2RS_JEM --no-size --format json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json j = Json::parse(r.out.substr(r.out.find('{')), "sig11");
+  EXPECT_EQ(j.find("defect")->string(), "cage");
+  ASSERT_TRUE(j.find("candidate"));
+  EXPECT_EQ(j.find("candidate")->string(), "ball");
+  EXPECT_EQ(j.find("reason")->string().rfind("possible ball defect", 0), 0u);
+  EXPECT_EQ(j.find("fundamental")->string(), "FTF");
+}
+
 TEST(RealData, BaselineAtAnotherRateIsRefused)
 {
   // Issue 25 item 4: sig08 (healthy, 48 kHz) as the baseline of sig11 (12 kHz). Read with the
