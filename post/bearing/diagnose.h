@@ -79,7 +79,8 @@ struct Diagnosis {
   // tolerance of a shaft harmonic (2 BSF = 3.988 fr for the CWRU fan-end 6203), where its comb
   // cannot be told from the machine's shaft lines; candidate names it and reason says why.
   // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
-  // defect, the reason says so).
+  // defect, the reason says so). With "none"/"unidentified": the race family whose comb was not
+  // taken because the record holds no pulse (kurtosis < 2.5: a smooth load-zone modulation).
   std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;
