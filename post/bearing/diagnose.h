@@ -53,6 +53,9 @@ struct FamilyScore {
   // above the baseline's spectrum at the same frequency; NaN without a baseline.
   double baseline_excess = std::numeric_limits<double>::quiet_NaN();
   std::string spectrum;  // which spectrum gave the score
+  // n when the kinematic fundamental is within half the tolerance of the shaft harmonic n fr
+  // (n >= 1; the comb search could slide onto it), else 0: the family can only be `ambiguous`
+  int shaft_order = 0;
   // harmonics scored: DiagnoseOptions::harmonics, fewer when the comb (and its decoys, up to 1.3 x)
   // would pass Nyquist; 0 when even the fundamental does (the family cannot be seen at this rate)
   int harmonics = 0;
@@ -72,6 +75,13 @@ struct Diagnosis {
   // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
   // detection stage fired (a fault of unknown type); else "none"
   std::string defect = "none";
+  // "ambiguous" (issue 25): the best family scored but its fundamental lies within the
+  // tolerance of a shaft harmonic (2 BSF = 3.988 fr for the CWRU fan-end 6203), where its comb
+  // cannot be told from the machine's shaft lines; candidate names it and reason says why.
+  // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
+  // defect, the reason says so). With "none"/"unidentified": the race family whose comb was not
+  // taken because the record holds no pulse (kurtosis < 2.5: a smooth load-zone modulation).
+  std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;
   double score = 0;
@@ -87,6 +97,15 @@ struct Diagnosis {
   double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
   bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
   SizeEstimate size;
+  // The shaft frequency from the spectrum's shaft harmonics (shaft_lines.h; the spectrum whose
+  // shaft comb is stronger) when they stand out, else the given one; the lines masked (both
+  // spectra) so that no defect comb claims them.
+  // Without a shaft comb, an identified race family gives it (matched / kinematic order: race
+  // defects barely slip); shaft_source says which: "shaft comb" or "BPFI comb", "BPFO comb".
+  bool shaft_estimated = false;
+  double shaft_hz_estimated = 0;
+  std::string shaft_source;
+  std::size_t shaft_lines_masked = 0;
   std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
 };
 

@@ -39,9 +39,11 @@ int run_diagnose(const std::vector<std::string> &argv)
       "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
       "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
       "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
-      "may be off by --tolerance (slip). The defect is the family scoring >= --min-score\n"
-      "(inner, outer, ball, cage), else 'unidentified' if detection fired (a fault of unknown\n"
-      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
+      "may be off by --tolerance (slip); shaft and mains lines are masked (the shaft frequency\n"
+      "is estimated from them). The defect is the family scoring >= --min-score (inner, outer,\n"
+      "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
+      "harmonic, else 'unidentified' if detection fired (a fault of unknown type), else\n"
+      "'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
       "estimated from the pulse widths of a level signal such as R(t).\n"
       "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
@@ -59,6 +61,9 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--baseline", "FILE",
            "healthy reference record (same input options and sampling rate; its run.json is "
            "not read)");
+  a.option("--baseline-rate", "HZ",
+           "sampling rate of a --baseline without time stamps when it is not the record's: "
+           "refused if it differs (resample it first with acquire)");
   a.flag("--no-size", "skip the defect size estimate");
   a.flag("--keep-sliding",
          "analyse the sliding phase too (default: start at t_sliding_end "
@@ -95,9 +100,20 @@ int run_diagnose(const std::vector<std::string> &argv)
     InputOptions io = input_options(a);
     io.files = {a.get("--baseline")};
     io.min_samples = 256;
+    if (a.has("--baseline-rate"))
+      io.rate = a.number_in("--baseline-rate", 0, Range::above(0), "a rate", "Hz");
     if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
       io.from = *meta.t_sliding_end;
     base = load_named(io, meta);
+    // a healthy record at another rate would be compared line by line at wrong frequencies:
+    // refused, never resampled silently
+    if (std::fabs(base.rate / s.rate - 1) > 1e-9)
+      throw Error("diagnose: --baseline " + io.files[0] + " is sampled at " +
+                  format_number(base.rate, 10) + " Hz, the record at " + format_number(s.rate, 10) +
+                  " Hz: a baseline must have the record's rate; resample it first (ohmdem-post "
+                  "acquire BASELINE --input-rate " +
+                  format_number(base.rate, 10) + " --lowpass F --rate " +
+                  format_number(s.rate, 10) + " --output FILE)");
     o.baseline = &base;
   }
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
@@ -116,6 +132,16 @@ int run_diagnose(const std::vector<std::string> &argv)
   m.emplace_back(
       "shaft frequency (Hz)",
       format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  // issue 25: the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
+  // a percent or two), and the shaft and mains lines no family could claim
+  m.emplace_back("shaft frequency from the spectrum (Hz)",
+                 d.shaft_estimated
+                     ? format_number(d.shaft_hz_estimated, 8) + " (" +
+                           format_number(100 * (d.shaft_hz_estimated / o.fr - 1), 3) +
+                           " % from the given one, from the " + d.shaft_source + "; " +
+                           std::to_string(d.shaft_lines_masked) + " shaft and mains lines masked)"
+                     : "no shaft comb stands out (" + std::to_string(d.shaft_lines_masked) +
+                           " shaft and mains lines masked)");
   if (in_orders)
     m.emplace_back("domain", "orders: speed varies by " +
                                  format_number(100 * sa->speed.variation, 3) +
@@ -126,7 +152,9 @@ int run_diagnose(const std::vector<std::string> &argv)
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
-  if (o.baseline) m.emplace_back("baseline", a.get("--baseline"));
+  if (o.baseline)
+    m.emplace_back("baseline", a.get("--baseline") + " (at " + format_number(o.baseline->rate, 10) +
+                                   " Hz, the record's rate)");
   if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
     m.emplace_back("band kurtosis significant",
                    std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +

@@ -95,21 +95,10 @@ struct BandKurtosis {
 BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
 {
   BandKurtosis b;
-  // The transform sees the record as periodic: the jump between its end and its start leaks
-  // into every band as an impulse at the edges, large where the spectrum falls steeply (red
-  // noise, strong shaft lines). The line through the means of the first and last 1/32 of the
-  // record removes the low-frequency part of the jump, and the envelope's
-  // samples within those end zones, where the rest of it rings, are left out.
-  const std::size_t n = x.size(), L = std::max<std::size_t>(1, n / 32);
-  double m0 = 0, m1 = 0;
-  for (std::size_t i = 0; i < L; ++i) {
-    m0 += x[i] / static_cast<double>(L);
-    m1 += x[n - L + i] / static_cast<double>(L);
-  }
-  std::vector<double> y = x;
-  const double slope = (m1 - m0) / static_cast<double>(n - L),
-               mid = (static_cast<double>(L) - 1) / 2;
-  for (std::size_t i = 0; i < n; ++i) y[i] -= m0 + slope * (static_cast<double>(i) - mid);
+  // the end jump treated as the kurtogram treats it (envelope.h): the band the kurtogram
+  // chose is judged on the statistic it was chosen by
+  const std::size_t n = x.size();
+  const std::vector<double> y = end_jump_removed(x);
   std::vector<Complex> X;
   rfft(y.data(), n, X);
   const double df = rate / static_cast<double>(n);
@@ -120,7 +109,7 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
   std::vector<Complex> full(X.begin() + static_cast<long>(k1),
                             X.begin() + static_cast<long>(k2) + 1);
   cfft(full, +1);
-  const std::size_t guard = (full.size() + 31) / 32;
+  const std::size_t guard = end_guard(full.size());
   const std::vector<Complex> c(full.begin() + static_cast<long>(guard),
                                full.end() - static_cast<long>(guard));
   double s2 = 0, s4 = 0;

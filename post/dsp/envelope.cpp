@@ -122,16 +122,27 @@ double sk_threshold(std::size_t m, double alpha)
   return mean + sd * std::max(wh, cf);
 }
 
+std::vector<double> end_jump_removed(const std::vector<double> &x)
+{
+  const std::size_t n = x.size(), L = std::max<std::size_t>(1, n / 32);
+  double m0 = 0, m1 = 0;
+  for (std::size_t i = 0; i < L; ++i) {
+    m0 += x[i] / static_cast<double>(L);
+    m1 += x[n - L + i] / static_cast<double>(L);
+  }
+  std::vector<double> y = x;
+  const double slope = (m1 - m0) / static_cast<double>(n - L),
+               mid = (static_cast<double>(L) - 1) / 2;
+  for (std::size_t i = 0; i < n; ++i) y[i] -= m0 + slope * (static_cast<double>(i) - mid);
+  return y;
+}
+
 Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
                     double fmin, double alpha)
 {
   const std::size_t n = x.size();
   if (n < 64) throw Error("a kurtogram needs at least 64 samples, got " + std::to_string(n));
-  std::vector<double> y = x;
-  double mean = 0;
-  for (double v : y) mean += v;
-  mean /= static_cast<double>(n);
-  for (double &v : y) v -= mean;
+  std::vector<double> y = end_jump_removed(x);
   std::vector<Complex> X;
   rfft(y.data(), n, X);
   std::vector<double>().swap(y);
@@ -161,15 +172,16 @@ Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, do
       if (k2 < k1 + 7) continue;
       c.assign(X.begin() + static_cast<long>(k1), X.begin() + static_cast<long>(k2) + 1);
       cfft(c, +1);
+      const std::size_t guard = end_guard(c.size());
       double s2 = 0, s4 = 0;
-      for (const Complex &v : c) {
-        const double p = std::norm(v);
+      for (std::size_t j = guard; j + guard < c.size(); ++j) {
+        const double p = std::norm(c[j]);
         s2 += p;
         s4 += p * p;
       }
-      const double m = static_cast<double>(c.size());
-      KurtogramCell cell{nbands, lo, hi, s2 > 0 ? (s4 / m) / ((s2 / m) * (s2 / m)) - 2 : 0,
-                         c.size()};
+      const std::size_t kept = c.size() - 2 * guard;
+      const double m = static_cast<double>(kept);
+      KurtogramCell cell{nbands, lo, hi, s2 > 0 ? (s4 / m) / ((s2 / m) * (s2 / m)) - 2 : 0, kept};
       kg.cells.push_back(cell);
       if (cell.kurtosis > kg.best.kurtosis) kg.best = cell;
     }

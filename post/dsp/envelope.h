@@ -19,11 +19,25 @@ struct Band {
 // c2c transform. The full band [0, fs/2] reproduces |scipy.signal.hilbert(x)|.
 std::vector<double> envelope(const std::vector<double> &x, double rate, Band band);
 
+// The end-zone treatment shared by the kurtogram and the band_sk detection test. A transform
+// sees the record as periodic: the jump between its end and its start leaks into every band as
+// an impulse at the edges, large where the spectrum falls steeply (red noise, strong shaft
+// lines) and dominant in a nearly empty band (just below Nyquist at 48 kHz). The line through
+// the means of the first and last 1/32 of the record removes the low-frequency part of the jump
+// (end_jump_removed), and the complex envelope's end_guard(m) samples at each end, where the
+// rest of it rings, are left out of the statistic.
+std::vector<double> end_jump_removed(const std::vector<double> &x);
+inline std::size_t end_guard(std::size_t m)
+{
+  return (m + 31) / 32;
+}
+
 struct KurtogramCell {
   int bands = 0;  // number of equal bands the level splits [0, fs/2] into
   double lo = 0, hi = 0;
-  double kurtosis = 0;      // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
-  std::size_t samples = 0;  // M, samples of the complex envelope (= FFT bins in the band)
+  double kurtosis = 0;  // spectral kurtosis E|c|^4 / (E|c|^2)^2 - 2 of the complex envelope c
+  // M, samples of the complex envelope kept (FFT bins in the band less 2 end_guard)
+  std::size_t samples = 0;
 };
 
 struct Kurtogram {
@@ -52,7 +66,9 @@ double sk_threshold(std::size_t m, double alpha);
 // Levels split [0, fs/2] into 1, 2, 3, 4, 6, 8, 12, ... bands (the 1/3-binary tree of Antoni's
 // fast kurtogram) with ideal FFT-domain filters; the complex envelope of a band is the inverse
 // transform of its bins shifted to baseband. Stops at 2^max_level bands or when a band would be
-// narrower than min_bandwidth (Hz). Bands entirely below fmin (Hz) are skipped.
+// narrower than min_bandwidth (Hz). Bands entirely below fmin (Hz) are skipped. The record's
+// end jump is treated as by band_sk (end_jump_removed, end_guard): a band's kurtosis is the
+// value the detection test computes for it.
 Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
                     double fmin = 0, double alpha = 0.01);
 

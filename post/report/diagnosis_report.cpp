@@ -71,7 +71,7 @@ const FamilyScore *chosen_family(const Diagnosis &d)
 {
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
-    if (f.defect == d.defect) chosen = &f;
+    if (f.defect == d.defect || (d.defect == "ambiguous" && f.defect == d.candidate)) chosen = &f;
   return chosen;
 }
 
@@ -82,6 +82,10 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   const FamilyScore *chosen = chosen_family(d);
   Json j = Json::object();
   j.set("defect", d.defect);
+  if (!d.candidate.empty()) {
+    j.set("candidate", d.candidate);
+    j.set("reason", d.reason);
+  }
   j.set("detected", d.detected);
   j.set("detection", detection_json(d.detection, c.options.false_alarm));
   j.set("score", d.score);
@@ -122,6 +126,8 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("band_kurtosis_significant",
         std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
   j.set("shaft_hz", c.options.fr);
+  j.set("shaft_hz_from_spectrum", d.shaft_estimated ? Json(d.shaft_hz_estimated) : Json());
+  j.set("shaft_hz_source", d.shaft_estimated ? Json(d.shaft_source) : Json());
   j.set("domain", c.in_orders ? "orders" : "time");
   j.set("bearing", c.options.geometry.name);
   if (c.run_defect) j.set("run_defect", *c.run_defect);
@@ -169,6 +175,7 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
   std::vector<Block> b;
   auto line = [&b](const std::string &text) { b.push_back({text, std::nullopt}); };
   line("defect:        " + d.defect);
+  if (!d.candidate.empty()) line("candidate:     " + d.candidate + " (" + d.reason + ")");
   line("detected:      " + std::string(d.detected ? "yes" : "no") +
        (d.detection.fired ? " (fired: " + fired_list(d.detection) + ")"
         : d.detected      ? " (a family identified; no detection test fired)"

@@ -149,6 +149,9 @@ TEST(Diagnose, CageTrainIsCage)
   // shows no cage defect)
   const auto sig = make("cage", 1.0, 10, 5);
   const Diagnosis d = diagnose(sig.signal, options_6208());
+  std::printf("[ cage       ] %s: shaft %s %.4f Hz, %zu lines masked; cage score %.2f\n",
+              d.defect.c_str(), d.shaft_estimated ? "estimated" : "given", d.shaft_hz_estimated,
+              d.shaft_lines_masked, d.families[3].score);
   EXPECT_EQ(d.defect, "cage");
   EXPECT_NEAR(d.frequency_hz, sig.frequency, 0.005 * sig.frequency);
 }
