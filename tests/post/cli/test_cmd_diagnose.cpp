@@ -17,6 +17,7 @@
 #include "cwru.h"
 #include "io/json.h"
 #include "synth.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -206,7 +207,7 @@ TEST(RealData, BaselineAtAnotherRateIsRefused)
                        "record's rate; resample it first (ohmdem-post acquire"),
             std::string::npos)
       << r.out;
-  const std::string base12 = std::string(OHMDEM_POST_TEST_TMP) + "/sig08_12k.txt";
+  const std::string base12 = ohmdem::test::temp_path("sig08_12k.txt");
   r = run("acquire " + dir + "/sig08.txt --input-rate 48000 --lowpass 5000 --rate 12000 --output " +
           base12);
   ASSERT_EQ(r.status, 0) << r.out;
