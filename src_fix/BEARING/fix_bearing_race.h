@@ -51,6 +51,14 @@ class FixBearingRace : public FixBearingBody {
   // For the electrical computes: the contact of local atom i with this race, valid after
   // this step's forces.
   ohmdem::RaceContactView contact_of(int i) const { return ohmdem::RaceContactView(array_atom[i]); }
+  // How far the surface under that contact falls away (m): the recess of the defects' pits
+  // (inner, outer or ball) that this step's force used, 0 without defects. A query, so that no
+  // published column changes (the positions and surfaces are those of post_force).
+  double recess_of(int i) const
+  {
+    bool in_zone = false;
+    return defects_.empty() ? 0.0 : defect_recess(i, defect_surface_, in_zone);
+  }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return settings_.inner; }
   double groove() const { return settings_.groove; }  // groove radius (m)

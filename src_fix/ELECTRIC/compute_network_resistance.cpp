@@ -181,10 +181,14 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       lube_.fexc = a.positive(kw, "the excitation frequency > 0 (Hz)");
     } else if (kw == "wetted") {
       lube_.wetted = a.positive(kw, "the wetted radius around a contact > 0 (m)");
+    } else if (kw == "excitation") {
+      lube_.excitation = a.positive(kw, "the voltage amplitude across the bearing > 0 (V)");
+    } else if (kw == "breakdown") {
+      lube_.breakdown = a.non_negative(kw, "the film's breakdown field >= 0 (V/m; 0: none)");
     } else {
       a.unknown(kw.c_str(),
                 "current high low area model solver pair netlist vtk every closedform "
-                "lubricant temperature roughness fexc wetted");
+                "lubricant temperature roughness fexc wetted excitation breakdown");
     }
   }
   // Read only with a lubricant (so that a deck passes them whatever it runs, as fix

@@ -62,7 +62,10 @@ LubricatedBearing::LubricatedBearing(LAMMPS *lmp, const LubricationSettings &set
   state_ = lub::state_at(lub::read_lubricant_file(path_, name), settings.temperature);
 }
 
-void LubricatedBearing::init(const ResistanceContext &) { geometry_ready_ = false; }
+void LubricatedBearing::init(const ResistanceContext &)
+{
+  geometry_ready_ = false;
+}
 
 // At the first evaluation of a run: the races' contact geometry exists once they are set up.
 void LubricatedBearing::set_geometry(const ResistanceContext &context)
@@ -107,13 +110,14 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
       g_ball = dry_.conductance(atom->type[i], gamma, r, f0, f1, u, w);
     }
     std::complex<double> y[2];
+    lub::ContactAdmittance c[2];  // the loaded contacts (the film can break down)
     for (int s = 0; s < 2; ++s) {
       const FixBearingRace &race = *races[side_race[s]];
       const ohmdem::HertzContact &hertz = contacts.race_geometry(side_race[s]);
       const ohmdem::CurvatureSums sums = hertz.sums();
       const double rx = 1.0 / sums.A, ry = 1.0 / sums.B;
       if (!(view[s].fn() > 0.0)) {
-        const double gap = race_gap(x, r, race);
+        const double gap = race_gap(x, r, race) + race.recess_of(i);  // a pit: farther
         y[s] = {0.0, omega_exc * lub::idle_gap_capacitance(gap, rx, ry, settings_.wetted,
                                                            state_.eps_r, settings_.roughness)};
         continue;
@@ -136,11 +140,20 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
       in.eps_r = state_.eps_r;
       in.resistivity = state_.resistivity;
       in.g_dry = view[s].conducts() ? 2.0 * g_ball : 0.0;  // a defect zone: no metal
-      const lub::ContactAdmittance c = lub::contact_admittance(in);
-      y[s] = c.y(omega_exc);
+      in.recess = race.recess_of(i);                       // over a pit the gap grows
+      c[s] = lub::contact_admittance(in);
+      y[s] = c[s].y(omega_exc);
       const int k = race.is_inner() ? 0 : 1;
-      hmin[k] = std::min(hmin[k], c.film.minimum);
-      lambda_min = std::min(lambda_min, c.lambda);
+      hmin[k] = std::min(hmin[k], c[s].film.minimum);
+      lambda_min = std::min(lambda_min, c[s].lambda);
+    }
+    if (settings_.breakdown > 0.0) {  // both contacts judged under this step's unbroken voltages
+      const std::complex<double> y0[2] = {y[0], y[1]};
+      for (int s = 0; s < 2; ++s)
+        if (view[s].fn() > 0.0 &&
+            lub::film_breaks_down(lub::contact_voltage(y0[s], y0[1 - s], settings_.excitation),
+                                  c[s].gap, settings_.breakdown))
+          y[s] = lub::broken_down(c[s]).y(omega_exc);
     }
     const std::complex<double> ball = lub::series(y[0], y[1]);
     balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ball.real(), ball.imag()}});

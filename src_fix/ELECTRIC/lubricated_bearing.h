@@ -25,6 +25,8 @@ struct LubricationSettings {
   double roughness = -1.0;         // composite RMS roughness (m); required with a lubricant
   double fexc = -1.0;              // excitation frequency (Hz); required with a lubricant
   double wetted = -1.0;            // wetted radius around a contact (m); required
+  double excitation = 1.0;         // voltage amplitude across the bearing (V)
+  double breakdown = 0.0;          // breakdown field of the film (V/m); 0: no breakdown
   bool on() const { return lubricant != "none"; }
 };
 

@@ -72,18 +72,43 @@ ContactAdmittance contact_admittance(const ContactInput &in)
   ContactAdmittance c;
   c.film = hamrock_dowson(in.film);
   c.lambda = film_parameter(c.film.minimum, in.sigma);
-  c.metallic = metallic_fraction(c.lambda);
+  c.gap = c.film.minimum + in.recess;
+  c.g_dry = in.g_dry;
+  // Over a pit the surfaces are the film plus the recess apart (recess = 0: the film's lambda).
+  c.metallic = metallic_fraction(in.recess > 0.0 ? film_parameter(c.gap, in.sigma) : c.lambda);
   const double area = kPi * in.a * in.b;
   const double free = 1.0 - c.metallic;
+  const double h = c.film.central + in.recess;
   c.g = c.metallic * in.g_dry;
-  if (c.film.central > 0.0 && free > 0.0 && area > 0.0) {
+  if (h > 0.0 && free > 0.0 && area > 0.0) {
     const double p0 = 1.5 * in.film.load / area;  // Hertz peak pressure
-    c.c_hertz = free * kEpsilon0 * hertz_mean_permittivity(in.eps_r, p0) * area / c.film.central;
-    c.g += free * area / (in.resistivity * c.film.central);
+    c.c_hertz = free * kEpsilon0 * hertz_mean_permittivity(in.eps_r, p0) * area / h;
+    c.g += free * area / (in.resistivity * h);
   }
-  GapGeometry gap{std::max(c.film.central, in.sigma), in.film.rx, in.film.ry, in.a, in.b, in.r_wet};
+  GapGeometry gap{
+      std::max(c.film.central, in.sigma) + in.recess, in.film.rx, in.film.ry, in.a, in.b, in.r_wet};
   c.c_outer = gap_capacitance(gap, in.eps_r);
   return c;
+}
+
+double contact_voltage(std::complex<double> y_self, std::complex<double> y_other, double v)
+{
+  const std::complex<double> s = y_self + y_other;
+  return s == 0.0 ? 0.0 : v * std::abs(y_other / s);
+}
+
+bool film_breaks_down(double v, double h, double field)
+{
+  return field > 0.0 && v > field * h;
+}
+
+ContactAdmittance broken_down(const ContactAdmittance &c)
+{
+  ContactAdmittance b = c;
+  b.metallic = 1.0;
+  b.c_hertz = 0.0;
+  b.g = c.g_dry;
+  return b;
 }
 
 double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,

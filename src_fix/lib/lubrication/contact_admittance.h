@@ -49,6 +49,7 @@ struct ContactInput {
   double eps_r = 0;        // at the temperature, atmospheric pressure
   double resistivity = 0;  // of the oil (ohm m)
   double g_dry = 0;        // metallic conductance of the whole Hertz area (S)
+  double recess = 0;       // a pit under the contact: how far the surface falls away (m), >= 0
 };
 
 struct ContactAdmittance {
@@ -58,14 +59,29 @@ struct ContactAdmittance {
   double c_hertz = 0;   // film capacitance of the Hertz zone (F), over its non-metallic part
   double c_outer = 0;   // oil-filled gap around it out to r_wet (F)
   double g = 0;         // metallic + leakage conductance (S)
+  double gap = 0;       // smallest gap across the Hertz zone: h_min + recess (m)
+  double g_dry = 0;     // the metallic path the contact conducts through if its film breaks
   double capacitance() const { return c_hertz + c_outer; }
   std::complex<double> y(double omega) const { return {g, omega * capacitance()}; }
 };
 
-// G = f g_dry + (1 - f) pi a b / (rho_oil h_c), C = (1 - f) eps0 eps_mean pi a b / h_c + the
-// gap outside the ellipse with h0 = max(h_c, sigma). Without entrainment (h_c = 0) the contact
-// is dry: f = 1, G = g_dry.
+// G = f g_dry + (1 - f) pi a b / (rho_oil h), C = (1 - f) eps0 eps_mean pi a b / h + the gap
+// outside the ellipse with h0 = max(h_c, sigma) + recess, where h = h_c + recess and the
+// metallic fraction f is that of the gap, erfc((h_min + recess) / (sigma sqrt 2)); lambda stays
+// the film's. Without entrainment (h_c = 0) and without recess the contact is dry: f = 1,
+// G = g_dry. recess = 0 gives exactly the contact without a pit.
 ContactAdmittance contact_admittance(const ContactInput &in);
+
+// Film breakdown (doc/lubricated_contact.md "Film breakdown"). The voltage amplitude across a
+// contact of admittance y_self in series with y_other (the ball's other contact) under the
+// voltage amplitude v across the ball: v |y_other / (y_self + y_other)|.
+double contact_voltage(std::complex<double> y_self, std::complex<double> y_other, double v);
+// Whether a film of thickness h (m) breaks down under a voltage amplitude v (V) with the
+// breakdown field `field` (V/m): v > field h. field <= 0: never (breakdown off).
+bool film_breaks_down(double v, double h, double field);
+// The contact once its film broke down: its whole Hertz area conducts through the metallic path
+// (f = 1, G = g_dry, no Hertz-zone capacitance); the gap around it keeps its capacitance.
+ContactAdmittance broken_down(const ContactAdmittance &c);
 
 // A ball that does not touch a race: the capacitance of its gap to it (h0 >= sigma).
 double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,
