@@ -147,13 +147,9 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
       hmin[k] = std::min(hmin[k], c[s].film.minimum);
       lambda_min = std::min(lambda_min, c[s].lambda);
     }
-    if (settings_.breakdown > 0.0) {  // both contacts judged under this step's unbroken voltages
-      const std::complex<double> y0[2] = {y[0], y[1]};
-      for (int s = 0; s < 2; ++s)
-        if (view[s].fn() > 0.0 &&
-            lub::film_breaks_down(lub::contact_voltage(y0[s], y0[1 - s], settings_.excitation),
-                                  c[s].gap, settings_.breakdown))
-          y[s] = lub::broken_down(c[s]).y(omega_exc);
+    if (settings_.breakdown > 0.0) {  // the film of a contact under too high a voltage
+      const bool loaded[2] = {view[0].fn() > 0.0, view[1].fn() > 0.0};
+      lub::break_down_ball(y, c, loaded, settings_.excitation, settings_.breakdown, omega_exc);
     }
     const std::complex<double> ball = lub::series(y[0], y[1]);
     balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ball.real(), ball.imag()}});

@@ -111,6 +111,20 @@ ContactAdmittance broken_down(const ContactAdmittance &c)
   return b;
 }
 
+int break_down_ball(std::complex<double> y[2], const ContactAdmittance c[2], const bool loaded[2],
+                    double v, double field, double omega)
+{
+  bool broken[2] = {false, false};
+  for (int pass = 0; pass < 2; ++pass)
+    for (int s = 0; s < 2; ++s)
+      if (loaded[s] && !broken[s] &&
+          film_breaks_down(contact_voltage(y[s], y[1 - s], v), c[s].gap, field)) {
+        broken[s] = true;
+        y[s] = broken_down(c[s]).y(omega);
+      }
+  return broken[0] + broken[1];
+}
+
 double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,
                             double sigma)
 {

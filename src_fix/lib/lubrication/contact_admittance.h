@@ -82,6 +82,13 @@ bool film_breaks_down(double v, double h, double field);
 // The contact once its film broke down: its whole Hertz area conducts through the metallic path
 // (f = 1, G = g_dry, no Hertz-zone capacitance); the gap around it keeps its capacitance.
 ContactAdmittance broken_down(const ContactAdmittance &c);
+// A ball's two contacts in series (admittances y at omega; c and loaded: the contacts that
+// press, with their films) under the voltage amplitude v across the ball: each contact whose
+// voltage exceeds field * gap breaks down and y becomes broken_down's. A broken contact puts
+// the ball's voltage on the other, which is judged again (the fixed point: breaking one only
+// raises the other's voltage). Returns how many broke down.
+int break_down_ball(std::complex<double> y[2], const ContactAdmittance c[2], const bool loaded[2],
+                    double v, double field, double omega);
 
 // A ball that does not touch a race: the capacitance of its gap to it (h0 >= sigma).
 double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,

@@ -140,3 +140,28 @@ TEST(ContactDefects, BreakdownCriterion)
   EXPECT_EQ(b.c_hertz, 0.0);
   EXPECT_EQ(b.c_outer, c.c_outer);
 }
+
+TEST(ContactDefects, ABrokenContactPutsTheVoltageOnTheOther)
+{
+  // Two film capacitors of 10 and 30 pF, gaps of 1 um, 1 MV/m: each breaks above 1 V.
+  const double w = 2.0 * kPi * 1e4;
+  ContactAdmittance c[2];
+  c[0].c_hertz = 10e-12;
+  c[1].c_hertz = 30e-12;
+  for (ContactAdmittance &k : c) k.gap = 1e-6, k.g_dry = 10.0;
+  const bool loaded[2] = {true, true};
+  // 1.2 V: 0.9 and 0.3 V across them (V C_other / (C1 + C2)): nothing breaks.
+  std::complex<double> y[2] = {c[0].y(w), c[1].y(w)};
+  EXPECT_EQ(break_down_ball(y, c, loaded, 1.2, 1e6, w), 0);
+  EXPECT_EQ(y[0], c[0].y(w));
+  // 1.5 V: 1.125 V breaks the 10 pF film; the 30 pF one then carries almost all 1.5 V
+  // (10 S against j 1.9 uS) and breaks too, whichever order they are judged in.
+  EXPECT_EQ(break_down_ball(y, c, loaded, 1.5, 1e6, w), 2);
+  EXPECT_EQ(y[0], std::complex<double>(10.0, 0.0));
+  EXPECT_EQ(y[1], std::complex<double>(10.0, 0.0));
+  // A contact without a film (not pressed) never breaks down.
+  const bool one[2] = {true, false};
+  std::complex<double> z[2] = {c[0].y(w), c[1].y(w)};
+  EXPECT_EQ(break_down_ball(z, c, one, 1.5, 1e6, w), 1);
+  EXPECT_EQ(z[1], c[1].y(w));
+}
