@@ -117,7 +117,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
       const ohmdem::CurvatureSums sums = hertz.sums();
       const double rx = 1.0 / sums.A, ry = 1.0 / sums.B;
       if (!(view[s].fn() > 0.0)) {
-        const double gap = race_gap(x, r, race) + race.recess_of(i);  // a pit: farther
+        // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
+        const double gap = std::max(race_gap(x, r, race), 0.0) + race.recess_of(i);
         y[s] = {0.0, omega_exc * lub::idle_gap_capacitance(gap, rx, ry, settings_.wetted,
                                                            state_.eps_r, settings_.roughness)};
         continue;

@@ -50,7 +50,7 @@ def test_defect_inner(r, post):
     crossings = passes(sig, s)
     check(len(crossings) >= 30, f"the ball set crosses the pit many times: {len(crossings)}")
     # The deepest Cb of each crossing (the ball unloads and its inner gap widens), relative to
-    # the healthy bearing: measured 0.6 to 1.2 %.
+    # the healthy bearing: measured 0.96 to 1.55 %.
     dips = np.array([1 - sig["Cb"][p].min() / cb0 for p in crossings[:-1]])
     print(f"     Cb dip per crossing: {100 * dips.min():.3f} .. {100 * dips.max():.3f} % "
           f"(healthy Cb {cb0:.5e} F)")
