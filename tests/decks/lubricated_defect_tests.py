@@ -108,18 +108,20 @@ def test_breakdown(r, post):
     check(np.all(np.abs(sig["Rb"][s] / sig["R"][s] - 1) < 1e-9), "100 V: Rb = the dry R")
 
 
+TESTS = {"defect_inner": test_defect_inner, "defect_kinds": test_defect_kinds,
+         "breakdown": test_breakdown}
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("test")
-    p.add_argument("--exe", required=True)
-    p.add_argument("--post", required=True)
-    p.add_argument("--src", required=True)
+    p.add_argument("test", choices=sorted(TESTS))
+    for flag in ("--exe", "--post", "--src"):
+        p.add_argument(flag, required=True)
     a = p.parse_args()
-    keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
-    with tempfile.TemporaryDirectory(prefix=f"ohmdem_lubdef_{a.test}_", dir=keep) as wd:
-        r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
-        {"defect_inner": test_defect_inner, "defect_kinds": test_defect_kinds,
-         "breakdown": test_breakdown}[a.test](r, os.path.abspath(a.post))
+    work = os.environ.get("OHMDEM_KEEP_TEST_DIR")
+    with tempfile.TemporaryDirectory(prefix=f"ohmdem_lubdef_{a.test}_", dir=work) as wd:
+        TESTS[a.test](Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd),
+                      os.path.abspath(a.post))
     finish()
 
 
