@@ -7,6 +7,7 @@ the engine's lubricated code); breakdown is checked against the dry R of the sam
 Usage: lubricated_defect_tests.py TEST --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR
 """
 import argparse
+import json
 import math
 import os
 import subprocess
@@ -98,6 +99,11 @@ def test_breakdown(r, post):
     a = open(os.path.join(base, "signal.txt")).read()
     check(a == open(os.path.join(low, "signal.txt")).read(),
           "1 V under a 20 MV/m breakdown field: signal.txt identical to no breakdown")
+    meta = json.load(open(os.path.join(high, "run.json")))
+    check(meta.get("excitation") == 100 and meta.get("breakdown") == 2e7,
+          "run.json records excitation and breakdown when breakdown is on")
+    check("breakdown" not in json.load(open(os.path.join(base, "run.json"))),
+          "run.json without breakdown: as before")
     sig, b = read_signal(high), read_signal(base)
     s = sig["time"] >= T_STEADY
     check(np.all(np.abs(b["Zphase"][s] + math.pi / 2) < 0.01), "without breakdown: capacitive")
