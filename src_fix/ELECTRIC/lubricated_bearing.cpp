@@ -7,13 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <exception>
 #include <limits>
+#include <string>
 
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_set.h"
 #include "ELECTRIC/lubricated_network.h"
 #include "atom.h"
 #include "common/constants.h"
+#include "error.h"
 #include "lubrication/contact_admittance.h"
 
 using namespace LAMMPS_NS;
@@ -187,12 +190,18 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     balls_.push_back({contacts_[n - 2].tag, {ball.real(), ball.imag()}});
   }
   LubricatedResult out;
-  out.network = settings_.network;
   std::complex<double> y_bearing;
   if (settings_.network || gather) network_->gather(contacts_, world);
   if (settings_.network) {
     // Every process solves the same gathered system: the same Z bits everywhere.
-    const std::complex<double> z = network_->solve(context.current);
+    std::complex<double> z;
+    try {
+      z = network_->solve(context.current);
+    } catch (const std::exception &e) {  // every process solves the same system: all throw
+      error->all(
+          FLERR,
+          (std::string("compute network/resistance: the lubricated network: ") + e.what()).c_str());
+    }
     y_bearing = std::isinf(z.real()) ? std::complex<double>(0.0, 0.0) : 1.0 / z;
   } else {
     // Admittances added in tag order: the same Z with any number of processes.

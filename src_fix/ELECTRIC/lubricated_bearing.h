@@ -39,7 +39,6 @@ struct LubricatedResult {
   double hmin_inner = 0, hmin_outer = 0, lambda_min = 0;
   static constexpr int kSize = 7;
   std::complex<double> v_high{0.0, 0.0};  // the high electrode's phasor Z I (V)
-  bool network = false;                   // evaluated by the general network
 };
 
 // One ball-race contact of the step, on the process owning the ball.
