@@ -19,6 +19,7 @@
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_flow_array.h"
 #include "ELECTRIC/contact_set.h"
+#include "ELECTRIC/lubricated_network.h"
 #include "ELECTRIC/network_exports.h"
 #include "ELECTRIC/resistance_path_closed_form.h"
 #include "ELECTRIC/resistance_path_distributed.h"
@@ -61,7 +62,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   peratom_flag = 1;
   size_peratom_cols = 0;
   local_flag = 1;  // per-contact rows (contact_flow_array.h)
-  size_local_cols = ohmdem::ContactFlow::kColumns;
+  size_local_cols = ohmdem::ContactFlow::kColumns + (lube_.on() ? kLubricatedColumns : 0);
   size_local_rows = 0;
   vector = new double[size_vector];  // LIGGGHTS' Compute deletes it
   vector_atom = nullptr;
@@ -85,7 +86,8 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
 
 // With the keyword lubricant, what ran, for the deck (its signal columns and run.json):
 // string variables lubricant_on (0 or 1) and, with a lubricant, lubricant_file,
-// lubricant_eta0 (Pa s at the temperature), lubricant_alpha (1/Pa), lubricant_eps_r.
+// lubricant_path (closedform or network: how Z is evaluated), lubricant_eta0 (Pa s at the
+// temperature), lubricant_alpha (1/Pa), lubricant_eps_r.
 void ComputeNetworkResistance::define_lubricant_variables()
 {
   char buf[64];
@@ -98,6 +100,7 @@ void ComputeNetworkResistance::define_lubricant_variables()
   if (!lubricated_) return;
   const ohmdem::lubrication::LubricantState &s = lubricated_->state();
   define("lubricant_file", lubricated_->path());
+  define("lubricant_path", lube_.network ? "network" : "closedform");
   for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
                                     {"lubricant_alpha", s.alpha},
                                     {"lubricant_eps_r", s.eps_r}}) {
@@ -191,6 +194,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
                 "lubricant temperature roughness fexc wetted excitation breakdown");
     }
   }
+  lube_.network = !closed_form_;  // the lubricated impedance follows closedform too
   // Read only with a lubricant (so that a deck passes them whatever it runs, as fix
   // bearing/defect ignores the keywords its kind does not use); required then.
   if (lube_.on()) {
@@ -253,6 +257,10 @@ void ComputeNetworkResistance::init()
       error->all(FLERR,
                  "compute network/resistance: keyword 'lubricant' needs both electrodes to be "
                  "races (high race ID low race ID): the lubricated closed form is a bearing's");
+    if (contacts_->uses_pair())
+      error->all(FLERR,
+                 "compute network/resistance: keyword 'lubricant' needs pair no: particle-"
+                 "particle contacts in oil are not modelled (a bearing's balls do not touch)");
     lubricated_->init(context_);
   }
   choose_paths();
@@ -322,9 +330,16 @@ void ComputeNetworkResistance::evaluate()
     last_path_ = network_path_;
   }
   report(r);
-  if (lubricated_) lube_result_ = lubricated_->evaluate(context_);
-  if (last_path_ == gathered_.get() && comm->me == 0)
-    exports_->write(*gathered_, *contacts_, context_.current);
+  const bool due = exports_->due(update->ntimestep);
+  if (lubricated_) lube_result_ = lubricated_->evaluate(context_, due);
+  if (last_path_ == gathered_.get() && comm->me == 0) {
+    // With a lubricant the netlist is the AC one of the impedance (lubricated_network.h).
+    auto ac = [&](std::ostream &os) {
+      lubricated_->network().write_netlist(os, context_.current, lubricated_->omega());
+    };
+    exports_->write(*gathered_, *contacts_, context_.current,
+                    lubricated_ ? AcNetlistFn(ac) : AcNetlistFn());
+  }
 }
 
 void ComputeNetworkResistance::report(const PathResult &r)
@@ -401,7 +416,9 @@ void ComputeNetworkResistance::compute_local()
 {
   invoked_local = update->ntimestep;
   evaluate();
-  size_local_rows = local_->fill(*last_path_, context_);
+  size_local_rows = lubricated_ ? local_->fill(*last_path_, context_, &lubricated_->contacts(),
+                                               lube_result_.v_high)
+                                : local_->fill(*last_path_, context_);
   array_local = local_->rows();
 }
 

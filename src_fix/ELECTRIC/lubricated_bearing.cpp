@@ -7,12 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <exception>
 #include <limits>
+#include <string>
 
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_set.h"
+#include "ELECTRIC/lubricated_network.h"
 #include "atom.h"
 #include "common/constants.h"
+#include "error.h"
 #include "lubrication/contact_admittance.h"
 
 using namespace LAMMPS_NS;
@@ -55,7 +59,7 @@ double race_gap(const double *x, double r, const FixBearingRace &race)
 }  // namespace
 
 LubricatedBearing::LubricatedBearing(LAMMPS *lmp, const LubricationSettings &settings)
-    : Pointers(lmp), settings_(settings)
+    : Pointers(lmp), settings_(settings), network_(std::make_unique<LubricatedNetwork>())
 {
   path_ = lub::lubricant_path(settings.lubricant, lub::default_lubricant_dir());
   const std::string name = path_.substr(path_.rfind('/') + 1);
@@ -80,87 +84,155 @@ void LubricatedBearing::set_geometry(const ResistanceContext &context)
                                   context.gamma_type[races[low]->race_type()], context.gamma_type);
 }
 
-LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
+LubricatedBearing::~LubricatedBearing() = default;
+
+double LubricatedBearing::omega() const
+{
+  return 2.0 * ohmdem::kPi * settings_.fexc;
+}
+
+// The ball's dry (metallic) conductance between its two races, 0 when it touches none.
+double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context, int i)
+{
+  const auto &races = context.contacts->races();
+  const double *x = atom->x[i];
+  const double r = atom->radius[i], gamma = context.gamma_type[atom->type[i]];
+  const ohmdem::RaceContactView v0 = races[context.high.index]->contact_of(i);
+  const ohmdem::RaceContactView v1 = races[context.low.index]->contact_of(i);
+  if (!(gamma > 0.0) || !(v0.fn() > 0.0 || v1.fn() > 0.0)) return 0.0;
+  const double f0 = v0.fn() > 0.0 ? v0.fn() : v1.fn();
+  const double f1 = v1.fn() > 0.0 ? v1.fn() : v0.fn();
+  const ohmdem::RaceContactView &a = v0.fn() > 0.0 ? v0 : v1;
+  const ohmdem::RaceContactView &b = v1.fn() > 0.0 ? v1 : v0;
+  double u[3] = {a.point_x() - x[0], a.point_y() - x[1], 0.0};
+  double w[3] = {b.point_x() - x[0], b.point_y() - x[1], 0.0};
+  if (&a == &b) w[0] = -u[0], w[1] = -u[1];  // one race: a ball facing the other
+  return dry_.conductance(atom->type[i], gamma, r, f0, f1, u, w);
+}
+
+// The per-contact physics, one contact at a time: a pressed contact's film and admittance
+// (its metallic part is half the ball's dry path: 2 g_ball, the two in series give g_ball),
+// or the capacitance of the gap to a race the ball does not press.
+LubricatedContact LubricatedBearing::contact(const ResistanceContext &context, int i, int side,
+                                             double g_ball, lub::ContactAdmittance &film)
+{
+  ContactSet &contacts = *context.contacts;
+  const int k = side == 0 ? context.high.index : context.low.index;
+  const FixBearingRace &race = *contacts.races()[k];
+  const ohmdem::RaceContactView view = race.contact_of(i);
+  const double *x = atom->x[i], *v = atom->v[i];
+  const double r = atom->radius[i];
+  const ohmdem::HertzContact &hertz = contacts.race_geometry(k);
+  const ohmdem::CurvatureSums sums = hertz.sums();
+  const double rx = 1.0 / sums.A, ry = 1.0 / sums.B;
+  LubricatedContact out;
+  out.tag = static_cast<std::int64_t>(atom->tag[i]);
+  out.side = side;
+  if (!(view.fn() > 0.0)) {
+    // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
+    const double gap = std::max(race_gap(x, r, race), 0.0) + race.recess_of(i);
+    out.c =
+        lub::idle_gap_capacitance(gap, rx, ry, settings_.wetted, state_.eps_r, settings_.roughness);
+    out.y = {0.0, omega() * out.c};
+    out.h_central = out.h_min = gap;
+    out.lambda = gap / settings_.roughness;
+    return out;
+  }
+  const ohmdem::ContactEllipse e = hertz.ellipse(view.fn());
+  lub::ContactInput in;
+  in.film.load = view.fn();
+  in.film.speed = entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), race);
+  in.film.rx = rx;
+  in.film.ry = ry;
+  in.film.e_prime = 2.0 * hertz.E_eff();
+  in.film.eta = state_.eta;
+  in.film.alpha = state_.alpha;
+  in.film.k = e.a / e.b;
+  in.a = e.a;
+  in.b = e.b;
+  in.sigma = settings_.roughness;
+  in.r_wet = settings_.wetted;
+  in.eps_r = state_.eps_r;
+  in.resistivity = state_.resistivity;
+  in.g_dry = view.conducts() ? 2.0 * g_ball : 0.0;  // a defect zone: no metal
+  in.recess = race.recess_of(i);                    // over a pit the gap grows
+  film = lub::contact_admittance(in);
+  const lub::ContactAdmittance &c = film;
+  out.loaded = true;
+  out.y = c.y(omega());
+  out.h_central = c.film.central;
+  out.h_min = c.film.minimum;
+  out.lambda = c.lambda;
+  out.c = c.capacitance();
+  out.g = c.g;
+  return out;
+}
+
+void LubricatedBearing::break_down(LubricatedContact pair[2],
+                                   const lub::ContactAdmittance film[2]) const
+{
+  std::complex<double> y[2] = {pair[0].y, pair[1].y};
+  const bool loaded[2] = {pair[0].loaded, pair[1].loaded};
+  if (lub::break_down_ball(y, film, loaded, settings_.excitation, settings_.breakdown, omega()) ==
+      0)
+    return;
+  for (int s = 0; s < 2; ++s) {
+    if (y[s] == pair[s].y) continue;
+    const lub::ContactAdmittance broken = lub::broken_down(film[s]);
+    pair[s].y = y[s];
+    pair[s].c = broken.capacitance();
+    pair[s].g = broken.g;
+  }
+}
+
+LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, bool gather)
 {
   if (!geometry_ready_) set_geometry(context);
-  ContactSet &contacts = *context.contacts;
-  const auto &races = contacts.races();
-  const int side_race[2] = {context.high.index, context.low.index};
-  const double omega_exc = 2.0 * ohmdem::kPi * settings_.fexc;
+  const auto &races = context.contacts->races();
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 
+  contacts_.clear();
   balls_.clear();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
-    const double *x = atom->x[i], *v = atom->v[i];
-    const double r = atom->radius[i], gamma = context.gamma_type[atom->type[i]];
-    ohmdem::RaceContactView view[2] = {races[side_race[0]]->contact_of(i),
-                                       races[side_race[1]]->contact_of(i)};
-    // The ball's dry (metallic) conductance, shared equally by its two contacts.
-    double g_ball = 0.0;
-    if (gamma > 0.0 && (view[0].fn() > 0.0 || view[1].fn() > 0.0)) {
-      const double f0 = view[0].fn() > 0.0 ? view[0].fn() : view[1].fn();
-      const double f1 = view[1].fn() > 0.0 ? view[1].fn() : view[0].fn();
-      const ohmdem::RaceContactView &a = view[0].fn() > 0.0 ? view[0] : view[1];
-      const ohmdem::RaceContactView &b = view[1].fn() > 0.0 ? view[1] : view[0];
-      double u[3] = {a.point_x() - x[0], a.point_y() - x[1], 0.0};
-      double w[3] = {b.point_x() - x[0], b.point_y() - x[1], 0.0};
-      if (&a == &b) w[0] = -u[0], w[1] = -u[1];  // one race: a ball facing the other
-      g_ball = dry_.conductance(atom->type[i], gamma, r, f0, f1, u, w);
+    const double g_ball = ball_dry_conductance(context, i);
+    lub::ContactAdmittance film[2];
+    for (int side = 0; side < 2; ++side) {
+      contacts_.push_back(contact(context, i, side, g_ball, film[side]));
+      const LubricatedContact &c = contacts_.back();
+      if (!c.loaded) continue;
+      const int k = races[side == 0 ? context.high.index : context.low.index]->is_inner() ? 0 : 1;
+      hmin[k] = std::min(hmin[k], c.h_min);
+      lambda_min = std::min(lambda_min, c.lambda);
     }
-    std::complex<double> y[2];
-    lub::ContactAdmittance c[2];  // the loaded contacts (the film can break down)
-    for (int s = 0; s < 2; ++s) {
-      const FixBearingRace &race = *races[side_race[s]];
-      const ohmdem::HertzContact &hertz = contacts.race_geometry(side_race[s]);
-      const ohmdem::CurvatureSums sums = hertz.sums();
-      const double rx = 1.0 / sums.A, ry = 1.0 / sums.B;
-      if (!(view[s].fn() > 0.0)) {
-        // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
-        const double gap = std::max(race_gap(x, r, race), 0.0) + race.recess_of(i);
-        y[s] = {0.0, omega_exc * lub::idle_gap_capacitance(gap, rx, ry, settings_.wetted,
-                                                           state_.eps_r, settings_.roughness)};
-        continue;
-      }
-      const ohmdem::ContactEllipse e = hertz.ellipse(view[s].fn());
-      lub::ContactInput in;
-      in.film.load = view[s].fn();
-      in.film.speed =
-          entrainment_speed(x, v, atom->omega[i][2], view[s].point_x(), view[s].point_y(), race);
-      in.film.rx = rx;
-      in.film.ry = ry;
-      in.film.e_prime = 2.0 * hertz.E_eff();
-      in.film.eta = state_.eta;
-      in.film.alpha = state_.alpha;
-      in.film.k = e.a / e.b;
-      in.a = e.a;
-      in.b = e.b;
-      in.sigma = settings_.roughness;
-      in.r_wet = settings_.wetted;
-      in.eps_r = state_.eps_r;
-      in.resistivity = state_.resistivity;
-      in.g_dry = view[s].conducts() ? 2.0 * g_ball : 0.0;  // a defect zone: no metal
-      in.recess = race.recess_of(i);                       // over a pit the gap grows
-      c[s] = lub::contact_admittance(in);
-      y[s] = c[s].y(omega_exc);
-      const int k = race.is_inner() ? 0 : 1;
-      hmin[k] = std::min(hmin[k], c[s].film.minimum);
-      lambda_min = std::min(lambda_min, c[s].lambda);
-    }
-    if (settings_.breakdown > 0.0) {  // the film of a contact under too high a voltage
-      const bool loaded[2] = {view[0].fn() > 0.0, view[1].fn() > 0.0};
-      lub::break_down_ball(y, c, loaded, settings_.excitation, settings_.breakdown, omega_exc);
-    }
-    const std::complex<double> ball = lub::series(y[0], y[1]);
-    balls_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ball.real(), ball.imag()}});
+    const std::size_t n = contacts_.size();
+    if (settings_.breakdown > 0.0) break_down(&contacts_[n - 2], film);
+    const std::complex<double> ball = lub::series(contacts_[n - 2].y, contacts_[n - 1].y);
+    balls_.push_back({contacts_[n - 2].tag, {ball.real(), ball.imag()}});
   }
-  // Admittances added in tag order: the same Z with any number of processes.
-  const auto sum = ohmdem::ordered_sum<2>(gather_.gather(balls_, world));
+  LubricatedResult out;
+  std::complex<double> y_bearing;
+  if (settings_.network || gather) network_->gather(contacts_, world);
+  if (settings_.network) {
+    // Every process solves the same gathered system: the same Z bits everywhere.
+    std::complex<double> z;
+    try {
+      z = network_->solve(context.current);
+    } catch (const std::exception &e) {  // every process solves the same system: all throw
+      error->all(
+          FLERR,
+          (std::string("compute network/resistance: the lubricated network: ") + e.what()).c_str());
+    }
+    y_bearing = std::isinf(z.real()) ? std::complex<double>(0.0, 0.0) : 1.0 / z;
+  } else {
+    // Admittances added in tag order: the same Z with any number of processes.
+    const auto sum = ohmdem::ordered_sum<2>(gather_.gather(balls_, world));
+    y_bearing = {sum[0], sum[1]};
+  }
   double mins[3] = {hmin[0], hmin[1], lambda_min}, all[3];
   MPI_Allreduce(mins, all, 3, MPI_DOUBLE, MPI_MIN, world);
-  const lub::Impedance z = lub::impedance({sum[0], sum[1]}, omega_exc);
-  LubricatedResult out;
+  const lub::Impedance z = lub::impedance(y_bearing, omega());
   out.z_abs = z.z_abs;
   out.z_phase = z.z_phase;
   out.c_parallel = z.c_parallel;
@@ -168,5 +240,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context)
   out.hmin_inner = all[0];
   out.hmin_outer = all[1];
   out.lambda_min = all[2];
+  out.v_high = y_bearing == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
+                                                           : context.current / y_bearing;
   return out;
 }

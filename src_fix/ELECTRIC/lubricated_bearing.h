@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // compute network/resistance with a lubricant: the bearing's impedance at the excitation
-// frequency, in closed form (each ball its two contacts in series, the balls in parallel),
-// from this step's race contacts, ball and ring velocities. The physics is in
-// lib/lubrication (doc/lubricated_contact.md); this file gathers the inputs per ball and
-// reduces over processes. Adapter code (LIGGGHTS types).
+// frequency from this step's race contacts, ball and ring velocities. Each ball-race contact
+// gets one record (contact()); the records feed the closed form (each ball its two contacts
+// in series, the balls in parallel), the general network (lubricated_network.*), the AC
+// netlist and the local array. The physics is in lib/lubrication (doc/lubricated_contact.md).
+// Adapter code (LIGGGHTS types).
 #ifndef OHMDEM_STYLE_LUBRICATED_BEARING_H
 #define OHMDEM_STYLE_LUBRICATED_BEARING_H
 
+#include <complex>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "ELECTRIC/resistance_context.h"
 #include "common/ordered_reduce.h"
 #include "conduction/conduction_model.h"
+#include "lubrication/contact_admittance.h"
 #include "lubrication/lubricant.h"
 #include "pointers.h"
 
@@ -27,6 +32,7 @@ struct LubricationSettings {
   double wetted = -1.0;            // wetted radius around a contact (m); required
   double excitation = 1.0;         // voltage amplitude across the bearing (V)
   double breakdown = 0.0;          // breakdown field of the film (V/m); 0: no breakdown
+  bool network = false;            // the general network (keyword closedform no)
   bool on() const { return lubricant != "none"; }
 };
 
@@ -35,7 +41,20 @@ struct LubricatedResult {
   double z_abs = 0, z_phase = 0, c_parallel = 0, r_parallel = 0;
   double hmin_inner = 0, hmin_outer = 0, lambda_min = 0;
   static constexpr int kSize = 7;
+  std::complex<double> v_high{0.0, 0.0};  // the high electrode's phasor Z I (V)
 };
+
+// One ball-race contact of the step, on the process owning the ball.
+struct LubricatedContact {
+  std::int64_t tag = 0;
+  int side = 0;         // 0: the high electrode's race, 1: the low one's
+  bool loaded = false;  // pressed: a film; else the gap to the race (h_central = h_min = gap)
+  std::complex<double> y{0.0, 0.0};             // G + j omega C (S)
+  double h_central = 0, h_min = 0, lambda = 0;  // film (m) and h_min / roughness
+  double c = 0, g = 0;                          // capacitance (F), conductance (S)
+};
+
+class LubricatedNetwork;
 
 class LubricatedBearing : protected Pointers {
  public:
@@ -46,19 +65,37 @@ class LubricatedBearing : protected Pointers {
   // init(): both electrodes must be races (checked by the compute). The geometry is read at
   // the first evaluation of the run.
   void init(const ResistanceContext &context);
-  // Collective: this step's impedance.
-  LubricatedResult evaluate(const ResistanceContext &context);
+  ~LubricatedBearing() override;
+  // Collective: this step's impedance; `gather` (an export step) also gathers the records
+  // of all processes (network()) when the closed form runs.
+  LubricatedResult evaluate(const ResistanceContext &context, bool gather = false);
+  // This process's records of the last evaluation (two per ball, high race first).
+  const std::vector<LubricatedContact> &contacts() const { return contacts_; }
+  const LubricatedNetwork &network() const { return *network_; }
+  double omega() const;
 
  private:
   void set_geometry(const ResistanceContext &context);
+  // The per-contact physics: the record of ball i's contact with race `side`; g_ball is the
+  // ball's dry (metallic) conductance between its two races; `film` gets a pressed
+  // contact's admittance (what film breakdown needs).
+  LubricatedContact contact(const ResistanceContext &context, int i, int side, double g_ball,
+                            ohmdem::lubrication::ContactAdmittance &film);
+  // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
+  // field times its gap conducts through its metal (doc/lubricated_contact.md).
+  void break_down(LubricatedContact pair[2],
+                  const ohmdem::lubrication::ContactAdmittance film[2]) const;
+  double ball_dry_conductance(const ResistanceContext &context, int i);
 
   LubricationSettings settings_;
   bool geometry_ready_ = false;
   std::string path_;
   ohmdem::lubrication::LubricantState state_;
-  ohmdem::BallBetweenRaces dry_;                // the dry conductance of a ball (the metallic path)
+  ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
+  std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;
+  std::unique_ptr<LubricatedNetwork> network_;
 };
 
 }  // namespace LAMMPS_NS

@@ -146,7 +146,7 @@ std::string NetworkExports::write_bearing_geometry(const GatheredNetworkPath &ne
 // The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only), on the
 // steps of `every`.
 void NetworkExports::write(const GatheredNetworkPath &network, const ContactSet &contacts,
-                           double current)
+                           double current, const AcNetlistFn &ac)
 {
   const bigint step = update->ntimestep;
   if (every_ > 0 && step % every_ != 0) return;
@@ -159,7 +159,10 @@ void NetworkExports::write(const GatheredNetworkPath &network, const ContactSet 
           "compute network/resistance: keyword 'netlist': cannot open '" + path + "' for writing";
       error->one(FLERR, msg.c_str());
     }
-    ohmdem::write_spice_netlist(os, net, current);
+    if (ac)
+      ac(os);
+    else
+      ohmdem::write_spice_netlist(os, net, current);
   }
   if (!vtk_.empty()) {
     const std::string path = ohmdem::expand_step(vtk_, step);

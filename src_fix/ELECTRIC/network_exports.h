@@ -7,18 +7,22 @@
 #ifndef OHMDEM_STYLE_NETWORK_EXPORTS_H
 #define OHMDEM_STYLE_NETWORK_EXPORTS_H
 
+#include <functional>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "lmptype.h"
-#include "writers/vtk_series.h"
 #include "pointers.h"
+#include "writers/vtk_series.h"
 
 namespace LAMMPS_NS {
 
 class ContactSet;
 class GatheredNetworkPath;
+// Writes another netlist in place of the network's (the lubricated bearing's AC netlist).
+using AcNetlistFn = std::function<void(std::ostream &)>;
 
 class NetworkExports : protected Pointers {
  public:
@@ -31,8 +35,10 @@ class NetworkExports : protected Pointers {
   bool due(bigint step) const { return any() && (every_ == 0 || step % every_ == 0); }
   // At the start of a run, on every process: stops the run if a file cannot be written.
   void check_files();
-  // Process 0, after the gathered network's evaluation on step `step` (nothing unless due).
-  void write(const GatheredNetworkPath &network, const ContactSet &contacts, double current);
+  // Process 0, after the gathered network's evaluation on step `step` (nothing unless due);
+  // `ac`, when set, writes the netlist file instead of the network's DC netlist.
+  void write(const GatheredNetworkPath &network, const ContactSet &contacts, double current,
+             const AcNetlistFn &ac = nullptr);
 
  private:
   std::string write_particles(const GatheredNetworkPath &network, const std::string &path);

@@ -136,6 +136,45 @@ void write_spice_netlist(std::ostream &os, const ConductionNetwork &net, double 
   os << ".op\n.end\n";
 }
 
+void write_spice_ac_netlist(std::ostream &os, std::vector<ComplexEdge> edges, NodeKey high,
+                            NodeKey low, double current, double omega, const SpiceNodeNameFn &name,
+                            const SpiceOptions &options)
+{
+  if (!(omega > 0.0)) throw std::invalid_argument("write_spice_ac_netlist: omega must be > 0");
+  std::vector<NetworkEdge> plain;
+  for (ComplexEdge &e : edges) {
+    if (e.b < e.a) std::swap(e.a, e.b);
+    if (e.y != std::complex<double>(0.0, 0.0)) plain.push_back({e.a, e.b, 1.0, 0.0, false});
+  }
+  std::sort(edges.begin(), edges.end(), [](const ComplexEdge &x, const ComplexEdge &y) {
+    if (x.a != y.a) return x.a < y.a;
+    if (x.b != y.b) return x.b < y.b;
+    if (x.y.real() != y.y.real()) return x.y.real() < y.y.real();
+    return x.y.imag() < y.y.imag();
+  });
+  const std::vector<NodeKey> live = component_of(plain, high);
+  auto is_live = [&](NodeKey k) { return std::binary_search(live.begin(), live.end(), k); };
+  auto node = [&](NodeKey k) {
+    return k == low ? std::string("0") : k == high ? "ehigh" : name(k);
+  };
+  const double f = omega / (2.0 * 3.14159265358979323846);
+  os << one_line(options.title) << '\n';
+  os << "* " << edges.size() << " admittances G + j omega C at f = " << num(f)
+     << " Hz; high electrode = ehigh, low electrode = 0\n";
+  os << "* each as R = 1/G (none when G = 0) and C; lines starting with '* floating:' are not "
+        "connected to ehigh\n";
+  os << ".option rshunt=1e30\n";
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const ComplexEdge &e = edges[k];
+    const std::string pre = is_live(e.a) ? "" : "* floating: ";
+    const std::string ends = ' ' + node(e.a) + ' ' + node(e.b) + ' ';
+    if (e.y.real() != 0.0) os << pre << 'R' << (k + 1) << ends << num(1.0 / e.y.real()) << '\n';
+    if (e.y.imag() != 0.0) os << pre << 'C' << (k + 1) << ends << num(e.y.imag() / omega) << '\n';
+  }
+  os << "I1 0 ehigh AC " << num(current) << '\n';
+  os << ".ac lin 1 " << num(f) << ' ' << num(f) << "\n.end\n";
+}
+
 void write_vtk_network(std::ostream &os, const ConductionNetwork &net, std::vector<VtkEdge> edges,
                        const VtkOptions &options)
 {

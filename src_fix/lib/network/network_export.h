@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "network/complex_network.h"
 #include "network/conduction_network.h"
 
 namespace ohmdem {
@@ -28,6 +29,19 @@ struct SpiceOptions {
 std::string spice_node_name(const ConductionNetwork &net, NodeKey key);
 void write_spice_netlist(std::ostream &os, const ConductionNetwork &net, double current,
                          const SpiceOptions &options = {});
+
+// The AC netlist of a complex admittance network (complex_network.h) at angular frequency
+// omega: each edge y = G + j omega C as `R` (1/G, left out when G = 0) and `C` (Im y / omega,
+// left out when 0) between the same nodes, 17 significant digits, edges in canonical order
+// (a < b, then y). The low electrode is `0`, the high `ehigh`, any other node `name(key)`.
+// `I1 0 ehigh AC <I>` and `.ac lin 1 f f` (f = omega / 2 pi): ngspice's AC analysis gives
+// V(ehigh) = Z I. `.option rshunt=1e30` ties every node to ground through 1e30 ohm, the DC
+// path SPICE's operating point needs for a node joined by capacitors only; it changes Z by
+// |Z| / 1e30 relatively. Edges outside the high electrode's component are comment lines.
+using SpiceNodeNameFn = std::function<std::string(NodeKey)>;
+void write_spice_ac_netlist(std::ostream &os, std::vector<ComplexEdge> edges, NodeKey high,
+                            NodeKey low, double current, double omega, const SpiceNodeNameFn &name,
+                            const SpiceOptions &options = {});
 
 // --- VTK ---------------------------------------------------------------------------------
 // ASCII legacy VTK, DATASET POLYDATA: points with point data `potential` (V) and
