@@ -8,9 +8,11 @@ to capacitive over speed, and the dry model recovered exactly without entrainmen
 Usage: lubricated_validation.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import argparse
+import csv
 import json
 import math
 import os
+import subprocess
 import tempfile
 
 import numpy as np
@@ -202,6 +204,23 @@ def test_regime(r):
                              f"({int(np.sum(d == 0))} of {len(d)} rows bit for bit)")
 
 
+def test_regime_map(r):
+    # studies/regime_map.py --quick (3 speeds x 2 temperatures): ohmic at 10 rad/s in oil at
+    # 100 C (lambda ~ 0.2), capacitive at 1000 rad/s at 40 C (lambda ~ 18).
+    out = os.path.join(r.workdir, "regime_map")
+    env = dict(os.environ, OHMDEM=r.exe)
+    subprocess.run(["/usr/bin/python3", os.path.join(r.src, "studies", "regime_map.py"),
+                    "--quick", out], check=True, env=env, stdout=subprocess.DEVNULL)
+    rows = list(csv.DictReader(open(os.path.join(out, "regime_map.csv"))))
+    ph = {(float(x["omega"]), float(x["temperature"])): float(x["Zphase"]) for x in rows}
+    check(len(rows) == 6, "regime_map --quick: 6 runs")
+    check(abs(ph[(10.0, 100.0)]) < 0.01, f"10 rad/s, 100 C: ohmic ({ph[(10.0, 100.0)]:.2e} rad)")
+    check(abs(ph[(1000.0, 40.0)] + math.pi / 2) < 0.01,
+          f"1000 rad/s, 40 C: capacitive ({ph[(1000.0, 40.0)]:.6f} rad)")
+    check(all(ph[(w, t)] >= ph[(w2, t)] for (w, t) in ph for (w2, t2) in ph
+              if t2 == t and w2 > w), "the phase falls with speed at each temperature")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
@@ -212,7 +231,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix=f"ohmdem_lubval_{a.test}_", dir=keep) as wd:
         r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
         {"capacitance": test_capacitance, "outer_zone": test_outer_zone,
-         "regime": test_regime}[a.test](r)
+         "regime": test_regime, "regime_map": test_regime_map}[a.test](r)
     finish()
 
 
