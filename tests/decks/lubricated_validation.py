@@ -7,18 +7,16 @@ exponents; the outer-zone factor over loads, speeds and temperatures; the regime
 to capacitive over speed, and the dry model recovered exactly without entrainment.
 Usage: lubricated_validation.py TEST --exe OHMDEM --src SOURCE_DIR
 """
-import argparse
 import csv
 import json
 import math
 import os
 import subprocess
-import tempfile
 
 import numpy as np
 
-from bearing_tests import Runner, read_signal
-from deck_checks import check, finish
+from bearing_tests import read_signal, run_named_test
+from deck_checks import check
 
 # SKF 6208 (the deck's default, the paper's Table 1), the deck's steel, Nb balls.
 RB, RINN, REXT, RCINN, RCEXT, NB = 0.0063, 0.024, 0.0366, 0.00655, 0.00665, 13
@@ -221,19 +219,6 @@ def test_regime_map(r):
               if t2 == t and w2 > w), "the phase falls with speed at each temperature")
 
 
-def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("test")
-    p.add_argument("--exe", required=True)
-    p.add_argument("--src", required=True)
-    a = p.parse_args()
-    keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
-    with tempfile.TemporaryDirectory(prefix=f"ohmdem_lubval_{a.test}_", dir=keep) as wd:
-        r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
-        {"capacitance": test_capacitance, "outer_zone": test_outer_zone,
-         "regime": test_regime, "regime_map": test_regime_map}[a.test](r)
-    finish()
-
-
 if __name__ == "__main__":
-    main()
+    run_named_test({"capacitance": test_capacitance, "outer_zone": test_outer_zone,
+                    "regime": test_regime, "regime_map": test_regime_map}, "ohmdem_lubval_")
