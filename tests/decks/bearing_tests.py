@@ -56,6 +56,20 @@ class Runner:
         return out, log
 
 
+def run_named_test(tests, prefix):
+    """main() of a deck test driver: TEST --exe OHMDEM --src SOURCE_DIR, tests[TEST](runner)
+    in a fresh folder (under $OHMDEM_KEEP_TEST_DIR when set, to keep it), then finish()."""
+    p = argparse.ArgumentParser()
+    p.add_argument("test", choices=sorted(tests))
+    p.add_argument("--exe", required=True)
+    p.add_argument("--src", required=True)
+    a = p.parse_args()
+    keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
+    with tempfile.TemporaryDirectory(prefix=f"{prefix}{a.test}_", dir=keep) as wd:
+        tests[a.test](Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd))
+    finish()
+
+
 def read_signal(folder):
     return deck_checks.read_signal(os.path.join(folder, "signal.txt"))
 

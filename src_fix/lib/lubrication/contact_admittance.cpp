@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "common/constants.h"
+#include "lubrication/keyed_cache.h"
 
 namespace ohmdem::lubrication {
 
@@ -26,21 +27,38 @@ double permittivity_at_pressure(double eps_r, double p)
 
 double hertz_mean_permittivity(double eps_r, double p0)
 {
-  // Gauss-Legendre, 8 points on [-1, 1] (Abramowitz and Stegun 25.4.30), mapped to [0, 1].
-  static const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
-                              0.9602898564975363};
-  static const double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
-                              0.1012285362903763};
+  // Gauss-Legendre, 8 points on [-1, 1] (Abramowitz and Stegun 25.4.30), mapped to [0, 1]:
+  // nodes t and weights w t of 2 int_0^1 eps(p0 t) t dt.
+  static const std::array<std::array<double, 2>, 8> nodes = [] {
+    const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                         0.9602898564975363};
+    const double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                         0.1012285362903763};
+    std::array<std::array<double, 2>, 8> n{};
+    for (int i = 0; i < 4; ++i) {
+      const double t0 = 0.5 * (1.0 - x[i]), t1 = 0.5 * (1.0 + x[i]);
+      n[2 * i] = {t0, w[i] * t0};
+      n[2 * i + 1] = {t1, w[i] * t1};
+    }
+    return n;
+  }();
+  // permittivity_at_pressure as one fraction: with q = p/GPa, rho/rho0 = n/d, n = 1 + 2.3 q,
+  // d = 1 + 1.7 q, and c = K n/d, (1 + 2c)/(1 - c) = (d + 2 K n)/(d - K n): one division
+  // per node instead of three.
+  const double kcm = (eps_r - 1.0) / (eps_r + 2.0), q0 = p0 * 1e-9;
   double s = 0.0;
-  for (int i = 0; i < 4; ++i)
-    for (const double t : {0.5 * (1.0 - x[i]), 0.5 * (1.0 + x[i])})
-      s += 0.5 * w[i] * 2.0 * t * permittivity_at_pressure(eps_r, p0 * t);
+  for (const auto &[t, wt] : nodes) {
+    const double q = q0 * t, d = 1.0 + 1.7 * q, kn = kcm * (1.0 + 2.3 * q);
+    s += wt * (d + 2.0 * kn) / (d - kn);
+  }
   return s;
 }
 
-double gap_capacitance(const GapGeometry &g, double eps_r)
+namespace {
+
+// cos^2 of the midpoints of a quarter turn, once per process.
+const std::array<double, kQuarter> &cos2_table()
 {
-  // cos^2 of the midpoints, once per process (evaluated for every contact at every step).
   static const std::array<double, kQuarter> cos2 = [] {
     std::array<double, kQuarter> t{};
     for (int i = 0; i < kQuarter; ++i) {
@@ -49,17 +67,116 @@ double gap_capacitance(const GapGeometry &g, double eps_r)
     }
     return t;
   }();
+  return cos2;
+}
+
+// What the gap integral needs of a race: s_out^2 at each angle (the wetted circle in the
+// scaled coordinates) and the quadratic form P c^2 + Q s^2 = 2 rx cos^2 + 2 ry sin^2.
+struct RaceGap {
+  std::array<double, kQuarter> s_out2{};
+  double sqrt_p = 0, sqrt_q = 0;
+};
+const RaceGap &race_gap(double rx, double ry, double r_wet)
+{
+  thread_local KeyedCache<3, RaceGap> cache;
+  return cache.get({rx, ry, r_wet}, [](const std::array<double, 3> &k) {
+    const std::array<double, kQuarter> &cos2 = cos2_table();
+    RaceGap r;
+    for (int i = 0; i < kQuarter; ++i)
+      r.s_out2[i] = k[2] * k[2] / (2.0 * k[0] * cos2[i] + 2.0 * k[1] * (1.0 - cos2[i]));
+    r.sqrt_p = std::sqrt(2.0 * k[0]);
+    r.sqrt_q = std::sqrt(2.0 * k[1]);
+    return r;
+  });
+}
+using Boundary = std::array<double, kQuarter>;
+
+// The midpoint rule on M = 4 kQuarter angles applied to ln(A cos^2 + B sin^2), in closed
+// form: with sA = sqrt A, sB = sqrt B, A cos^2 + B sin^2 = ((sA + sB)/2)^2 |1 + rho e^(2i phi)|^2,
+// rho = (sA - sB)/(sA + sB), and the mean of cos(2 n phi) over the midpoints is (-1)^k for
+// 2n = k M, else 0, so the rule gives 2 ln((sA + sB)/2) + (4/M) ln(1 + rho^(M/2)) -- the
+// exact integral plus the rule's own aliasing term, i.e. the same number as the sum of the
+// M logarithms. Returns sA + sB and 1 + rho^(M/2).
+struct FormMean {
+  double s = 0, y = 1;
+};
+// ln(y) / kQuarter for the aliasing terms' y = 1 + eps: mostly |eps| < 1e-6, where four
+// terms of the series leave an error below eps^5 / 5 (1e-31): no logarithm.
+double aliasing(double y)
+{
+  const double e = y - 1.0;
+  if (std::fabs(e) < 1e-6) return e * (1.0 - e * (0.5 - e * (1.0 / 3.0 - 0.25 * e))) / kQuarter;
+  return std::log(y) / kQuarter;
+}
+
+FormMean form_mean(double sa, double sb)
+{
+  static_assert(kQuarter == 32, "rho^(M/2) = rho^64 below");
+  const double s = sa + sb;
+  double r = (sa - sb) / s;
+  for (int i = 0; i < 6; ++i) r *= r;
+  return {s, 1.0 + r};
+}
+
+// sum over the angles of ln((h0 + s_out^2)/(h0 + s_in^2)), a logarithm per angle.
+double log_sum(const GapGeometry &g, const Boundary &s_out2)
+{
+  const std::array<double, kQuarter> &cos2 = cos2_table();
   double sum = 0.0;
   for (int i = 0; i < kQuarter; ++i) {
     const double c2 = cos2[i], s2 = 1.0 - c2;
     const double s_in2 = g.a > 0.0 && g.b > 0.0
                              ? 1.0 / (2.0 * g.rx * c2 / (g.b * g.b) + 2.0 * g.ry * s2 / (g.a * g.a))
                              : 0.0;
-    const double s_out2 = g.r_wet * g.r_wet / (2.0 * g.rx * c2 + 2.0 * g.ry * s2);
-    if (s_out2 > s_in2) sum += std::log((g.h0 + s_out2) / (g.h0 + s_in2));
+    if (s_out2[i] > s_in2) sum += std::log((g.h0 + s_out2[i]) / (g.h0 + s_in2));
   }
-  // int_0^{2 pi} = 4 int_0^{pi/2} = 4 (pi/2) / kQuarter * sum
-  return kEpsilon0 * eps_r * std::sqrt(g.rx * g.ry) * sum * (2.0 * kPi / kQuarter);
+  return sum;
+}
+
+}  // namespace
+
+double gap_capacitance(const GapGeometry &g, double eps_r)
+{
+  const RaceGap &race = race_gap(g.rx, g.ry, g.r_wet);
+  const double scale = kEpsilon0 * eps_r * std::sqrt(g.rx * g.ry) * 2.0 * kPi;
+  // ln(h0 + s_out^2) = ln(A c^2 + B s^2) - ln(P c^2 + Q s^2) with A = h0 P + r^2,
+  // B = h0 Q + r^2; ln(h0 + s_in^2) = ln(A' c^2 + B' s^2) - ln(P' c^2 + Q' s^2) with
+  // P' = 2 rx / b^2, Q' = 2 ry / a^2, A' = h0 P' + 1, B' = h0 Q' + 1 (ln h0 with nothing
+  // excluded). While the wetted circle holds the ellipse (r_wet > a, b: every angle counts),
+  // the midpoint rule of each is form_mean's: two logarithms instead of one per angle.
+  const double r2 = g.r_wet * g.r_wet, p = 2.0 * g.rx, q = 2.0 * g.ry;
+  const FormMean out = form_mean(std::sqrt(g.h0 * p + r2), std::sqrt(g.h0 * q + r2));
+  const FormMean pq = form_mean(race.sqrt_p, race.sqrt_q);
+  if (!(g.a > 0.0 && g.b > 0.0)) {
+    const double x = out.s / (pq.s * std::sqrt(g.h0)), y = out.y / pq.y;
+    return scale * (2.0 * std::log(x) + aliasing(y));
+  }
+  if (g.r_wet > g.a && g.r_wet > g.b) {
+    const double sp = std::sqrt(p) / g.b, sq = std::sqrt(q) / g.a;  // sqrt P', sqrt Q'
+    const FormMean in = form_mean(std::sqrt(g.h0 * sp * sp + 1.0), std::sqrt(g.h0 * sq * sq + 1.0));
+    const FormMean pq_in = form_mean(sp, sq);
+    const double x = out.s * pq_in.s / (pq.s * in.s), y = out.y * pq_in.y / (pq.y * in.y);
+    return scale * (2.0 * std::log(x) + aliasing(y));
+  }
+  // The ellipse reaches past the wetted circle: angle by angle, as the logarithm of one
+  // product (every factor >= 1) without a division: with e = 1/s_in^2,
+  // (h0 + s_out^2)/(h0 + s_in^2) = (h0 + s_out^2) e / (h0 e + 1); log_sum if it overflows.
+  const Boundary &s_out2 = race.s_out2;
+  const std::array<double, kQuarter> &cos2 = cos2_table();
+  double num = 1.0, den = 1.0;
+  const double ex = p / (g.b * g.b), ey = q / (g.a * g.a);
+  for (int i = 0; i < kQuarter; ++i) {
+    const double e = ex * cos2[i] + ey * (1.0 - cos2[i]);
+    if (s_out2[i] * e > 1.0) {
+      num *= (g.h0 + s_out2[i]) * e;
+      den *= g.h0 * e + 1.0;
+    }
+  }
+  const double sum =
+      num < std::numeric_limits<double>::max() && den < std::numeric_limits<double>::max()
+          ? std::log(num / den)
+          : log_sum(g, s_out2);
+  return scale * sum / kQuarter;
 }
 
 double metallic_fraction(double lambda)
@@ -134,7 +251,10 @@ double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, doub
 std::complex<double> series(std::complex<double> y1, std::complex<double> y2)
 {
   const std::complex<double> s = y1 + y2;
-  return s == 0.0 ? std::complex<double>(0.0) : y1 * y2 / s;
+  if (s == 0.0) return 0.0;
+  // y1 y2 conj(s) / |s|^2: libgcc's general complex division (__divdc3) guards against
+  // overflows that admittances of pF and S cannot reach.
+  return y1 * y2 * std::conj(s) / std::norm(s);
 }
 
 Impedance impedance(std::complex<double> y, double omega)

@@ -1,0 +1,109 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Cost of the lubricated impedance on the SKF 6208 scene (bench/README.md), in one run:
+the mechanics alone, the dry R evaluated at every step (-var Revery 1), and the lubricated
+bearing's impedance evaluated at every step (-var Revery 1 -var lubricant VG68; the compute
+then gives R and Z at each evaluation), with ratios and what each mode gives for the quantity
+an instrument measures across the bearing (|Z| and its phase at fexc).
+
+Two measures, as bench/resistance: wall time (the fastest of ROUNDS interleaved runs per mode:
+a shared machine only ever slows a run down) and, if valgrind is installed, instructions in
+the time loop (callgrind over 2000 steps, noise-free). Usage:
+
+  bench/lubricated/run_lubricated_bench.py [--steps 20000] [--rounds 5] [--no-callgrind]
+"""
+import argparse
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "studies"))
+from common import BEARING_DECK, OHMDEM, read_signal  # noqa: E402  (studies/common.py)
+
+MODES = {
+    "mechanics": ["-var", "Revery", "0"],
+    "dry": ["-var", "Revery", "1"],
+    "lubricated": ["-var", "Revery", "1", "-var", "lubricant", "VG68"],
+}
+
+
+def run(wd, mode, tend, prefix=()):
+    out = os.path.join(wd, mode)
+    log = out + ".log"
+    cmd = [*prefix, OHMDEM, "-in", BEARING_DECK, "-var", "out", out, "-var", "tend", str(tend),
+           "-var", "nout", "1000", "-log", log, "-screen", "none", *MODES[mode]]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return out, log
+
+
+def loop_time(log):
+    m = re.search(r"^Loop time of (\S+)", open(log).read(), re.M)
+    return float(m.group(1))
+
+
+def instructions(wd, mode):
+    cg = os.path.join(wd, f"cg.{mode}")
+    run(wd, mode, 0.002, ["valgrind", "--tool=callgrind", f"--callgrind-out-file={cg}",
+                          "--toggle-collect=LAMMPS_NS::Verlet::run(int)"])
+    for line in open(cg):
+        if line.startswith(("summary:", "totals:")):
+            return float(line.split()[1]) / 2000
+    return None
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--steps", type=int, default=20000)
+    p.add_argument("--rounds", type=int, default=5)
+    p.add_argument("--no-callgrind", action="store_true")
+    a = p.parse_args()
+    tend = a.steps * 1e-6
+    with tempfile.TemporaryDirectory(prefix="bench_lub_") as wd:
+        t = {m: math.inf for m in MODES}
+        for _ in range(a.rounds):
+            for m in MODES:
+                t[m] = min(t[m], loop_time(run(wd, m, tend)[1]) / a.steps)
+        steady = {m: read_signal(os.path.join(wd, m, "signal.txt"), t0=0.015) for m in MODES}
+        ir = {}
+        if not a.no_callgrind and shutil.which("valgrind"):
+            ir = {m: instructions(wd, m) for m in MODES}
+
+    def mean(m, c):
+        return float(steady[m][c].mean())
+
+    print(f"SKF 6208, F = 320 N, 500 rad/s, {a.steps} steps, one core; wall: fastest of "
+          f"{a.rounds} interleaved runs; instructions: callgrind, 2000 steps")
+    print(f"{'mode':<11} {'s/step':>9} {'x mech':>7} {'x dry':>6} {'eval/mech':>10} "
+          f"{'instr/step':>11} {'x dry':>6} {'eval/mech':>10}")
+    mech, mech_ir = t["mechanics"], ir.get("mechanics")
+    for m in MODES:
+        ev = "-" if m == "mechanics" else f"{(t[m] - mech) / mech:.1%}"
+        row = f"{m:<11} {t[m]:>9.3e} {t[m] / mech:>7.2f} {t[m] / t['dry']:>6.2f} {ev:>10}"
+        if ir:
+            ev = "-" if m == "mechanics" else f"{(ir[m] - mech_ir) / mech_ir:.1%}"
+            row += f" {ir[m]:>11.0f} {ir[m] / ir['dry']:>6.2f} {ev:>10}"
+        print(row)
+    eval_wall = (t["lubricated"] - mech) / (t["dry"] - mech)
+    line = (f"lubricated / dry: step {t['lubricated'] / t['dry']:.2f}x (wall), evaluation "
+            f"alone {eval_wall:.2f}x (wall)")
+    if ir:
+        line += (f"; step {ir['lubricated'] / ir['dry']:.2f}x, evaluation alone "
+                 f"{(ir['lubricated'] - mech_ir) / (ir['dry'] - mech_ir):.2f}x (instructions)")
+    print(line + "; goal 1.5x")
+    # What an instrument across the bearing reads (|Z|, phase at fexc = 10 kHz), per mode.
+    z, ph, cb = mean("lubricated", "Zabs"), mean("lubricated", "Zphase"), mean("lubricated", "Cb")
+    r = mean("dry", "R")
+    print(f"dry:        |Z| = R = {r:.5g} ohm, phase 0: {r / z - 1:+.4%} in |Z| and "
+          f"{-ph:+.4f} rad in phase against the lubricated bearing (lambda_min "
+          f"{mean('lubricated', 'lambda_min'):.1f}: no metal touches)")
+    print(f"lubricated: |Z| = {z:.5g} ohm, phase {ph:.6f} rad, Cb = {cb:.4g} F, "
+          f"Rb = {mean('lubricated', 'Rb'):.4g} ohm (R of the same run {mean('lubricated', 'R'):.5g} ohm)")
+    print("mechanics:  no electrical output")
+
+
+if __name__ == "__main__":
+    main()
