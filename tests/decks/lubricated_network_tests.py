@@ -9,7 +9,6 @@ network/resistance with a lubricant, doc/lubricated_contact.md "The network"):
            to 1e-9, with 1 and 2 processes (exit 77, a ctest skip, without ngspice).
 Usage: lubricated_network_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
-import argparse
 import cmath
 import glob
 import json
@@ -18,12 +17,11 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
-from bearing_tests import Runner, read_signal
-from deck_checks import check, finish
+from bearing_tests import read_signal, run_named_test
+from deck_checks import check
 
 TEND, DT = 0.003, 1e-5
 Z_COLUMNS = ["Zabs", "Zphase", "Cb", "Rb"]
@@ -148,18 +146,5 @@ def test_ngspice(r):
           "the netlist's .ac card and AC source")
 
 
-def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("test")
-    p.add_argument("--exe", required=True)
-    p.add_argument("--src", required=True)
-    a = p.parse_args()
-    keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
-    with tempfile.TemporaryDirectory(prefix=f"ohmdem_lubnet_{a.test}_", dir=keep) as wd:
-        r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
-        {"network": test_network, "ngspice": test_ngspice}[a.test](r)
-    finish()
-
-
 if __name__ == "__main__":
-    main()
+    run_named_test({"network": test_network, "ngspice": test_ngspice}, "ohmdem_lubnet_")
