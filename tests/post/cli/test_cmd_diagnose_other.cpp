@@ -78,6 +78,25 @@ TEST(RealData, FanEndChannelsOfDriveEndFaultsNameTheOtherBearing)
   EXPECT_GE(attributed, 9);
 }
 
+TEST(RealData, FanEndWithTheShared6203Name)
+{
+  // issue 27: the CWRU fan-end channel diagnosed by the shared names 6203 (its default is the
+  // fan end's 6203-2RS_JEM) and 6205 reads as with the full names: the drive end's fault
+  const std::string dir = ohmdem::test::cwru_dir();
+  if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
+  for (const char *rec : {"sig01", "sig02"}) {
+    const std::string in =
+        dir + "/" + rec + ".mat --variable FE_time --rate 12000 --rpm-variable RPM";
+    const Json shared = diagnose_json(in + " --bearing 6203 --other-bearing 6205", rec);
+    const Json full =
+        diagnose_json(in + " --bearing 6203-2RS_JEM --other-bearing 6205-2RS_JEM", rec);
+    EXPECT_EQ(shared.find("defect")->string(), "other-bearing") << rec;
+    EXPECT_EQ(shared.find("candidate")->string(), full.find("candidate")->string()) << rec;
+    EXPECT_EQ(shared.find("score")->number(), full.find("score")->number()) << rec;
+    EXPECT_EQ(shared.find("bearing")->string(), "6203-2RS_JEM");
+  }
+}
+
 TEST(Cli, OtherBearingAndMainsBadInput)
 {
   const std::string dir = ohmdem::test::cwru_dir();
