@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Issue 25 item 5: a healthy 6208 under a radial load, its R acquired as a 20 kHz instrument
 # records it (10 mA, 8 kHz anti-alias filter, 20 nV/sqrt(Hz)), must not read as a race defect:
-# its R varies smoothly at BPFO as the balls pass the load zone (kurtosis 2.0 at the default speed and load, 2.71 at 300 rad/s and 640 N), no pulse train.
+# its R varies smoothly at BPFO as the balls pass the load zone (kurtosis 2.0 at the default
+# speed and load, 2.71 at 300 rad/s and 640 N), no pulse train.
 # Before: `outer`, score 1. Usage: radial_healthy.sh OHMDEM OHMDEM_POST DECK_DIR WORK_DIR
 # [-var NAME VALUE ...] (another speed or load: the deck's variables, e.g. -var omega 300)
 set -eu
