@@ -10,8 +10,6 @@
 #include "bearing/shaft_lines.h"
 #include "core/constants.h"
 #include "core/error.h"
-#include "dsp/peaks.h"
-#include "dsp/spectrum.h"
 
 namespace ohmdem::post {
 
