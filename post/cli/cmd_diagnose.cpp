@@ -130,7 +130,13 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--other-bearing")) {
     const std::string catalog = a.has("--catalog") ? a.get("--catalog") : default_catalog_dir();
     const CatalogEntry e = catalog_entry(catalog, a.get("--other-bearing"));
-    o.other = e.geometry();
+    try {  // its own --dp would not apply: the entry must fix the frequencies by itself
+      o.other = e.geometry();
+    } catch (const Error &) {
+      throw Error("--other-bearing " + a.get("--other-bearing") + " (" + e.path +
+                  ") does not fix its defect frequencies (no pitch diameter and no factors): give "
+                  "a catalog bearing with Z, Dw and Dpw, or with the maker's factors");
+    }
     validate(*o.other);
     other_source = e.path;
   }
