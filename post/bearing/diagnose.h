@@ -7,6 +7,7 @@
 #define OHMDEM_POST_DIAGNOSE_H
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,13 @@ struct DiagnoseOptions {
   bool estimate_size = true;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
+  // Mains frequencies (Hz) whose harmonic combs are masked where they stand out (the supply's
+  // lines at exact multiples); empty: none
+  std::vector<double> mains_hz{50, 60};
+  // The other bearing on the same shaft (the CWRU fan-end sensor hears the drive-end bearing):
+  // its families are scored on the same spectra, so that a record whose impulses are at one of
+  // ITS defect frequencies reads `other-bearing` instead of `unidentified`
+  std::optional<BearingGeometry> other;
 };
 
 struct Evidence {
@@ -80,7 +88,7 @@ struct Diagnosis {
   // cannot be told from the machine's shaft lines; candidate names it and reason says why.
   // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
   // defect, the reason says so). With "none"/"unidentified": the race family whose comb was not
-  // taken because the record holds no pulse (kurtosis < 2.5: a smooth load-zone modulation).
+  // taken because the record holds no pulse (kurtosis < 3: a smooth load-zone modulation).
   std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;
@@ -107,6 +115,12 @@ struct Diagnosis {
   std::string shaft_source;
   std::size_t shaft_lines_masked = 0;
   std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
+  // With DiagnoseOptions::other: that bearing's kinematics and families on the same spectra.
+  // defect "other-bearing" (candidate: its family, reason: why) when no family of this bearing
+  // is named and the other's best race or ball comb scores >= min_score with a larger margin than
+  // any of this bearing's; frequency_hz, label and evidence are then the other's.
+  DefectFrequencies other_kinematics;
+  std::vector<FamilyScore> other_families;
 };
 
 Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt);

@@ -23,9 +23,11 @@ Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, 
   opt.fr = 1;
   opt.band.lo /= fr;
   opt.band.hi /= fr;
+  for (double &m : opt.mains_hz) m /= fr;  // the supply's lines, in orders
   Diagnosis d = diagnose(a, opt);
   // back to Hz at the mean speed
   d.frequency_hz *= fr;
+  d.shaft_hz_estimated *= fr;  // in orders: 1 is the mean shaft speed
   d.kinematics = defect_frequencies(opt.geometry, fr);
   d.band.lo *= fr;
   d.band.hi *= fr;
@@ -33,14 +35,16 @@ Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, 
     e.expected_hz *= fr;
     e.frequency_hz *= fr;
   }
-  for (FamilyScore &f : d.families) {
-    f.nominal_hz *= fr;
-    f.frequency_hz *= fr;
-    for (Evidence &e : f.evidence) {
-      e.expected_hz *= fr;
-      e.frequency_hz *= fr;
+  if (opt.other) d.other_kinematics = defect_frequencies(*opt.other, fr);
+  for (auto *fams : {&d.families, &d.other_families})
+    for (FamilyScore &f : *fams) {
+      f.nominal_hz *= fr;
+      f.frequency_hz *= fr;
+      for (Evidence &e : f.evidence) {
+        e.expected_hz *= fr;
+        e.frequency_hz *= fr;
+      }
     }
-  }
   d.size.pulse_width_s /= fr;  // revolutions -> seconds at the mean speed
   return d;
 }

@@ -37,10 +37,6 @@ constexpr double kShaftCombMin = 6;
 std::size_t mask_harmonics(const std::vector<double> &prominence_db, double df, double f0,
                            std::vector<char> &mask, bool only_a_comb = false);
 
-// The mains frequencies whose harmonics are masked as well when their comb stands out (lines of
-// the motor's supply at exact multiples: 60 Hz on the CWRU rig, 120 to 600 Hz beside 4 fr).
-constexpr double kMainsHz[] = {50, 60};
-
 ShaftLines shaft_lines(const std::vector<double> &prominence_db, double df, double fr,
                        double tolerance);
 

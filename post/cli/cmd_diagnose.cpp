@@ -25,6 +25,28 @@ void name_flags(Detection &det)
   for (DetectionTest &t : det.tests) t.note = flag_named(t.note);
 }
 
+// --mains: positive frequencies, comma-separated, or none.
+std::vector<double> mains_option(const std::string &text)
+{
+  std::vector<double> hz;
+  if (text == "none") return hz;
+  for (const std::string &item : split_commas(text)) {
+    double f = 0;
+    if (!parse_double(item, f) || !std::isfinite(f) || !(f > 0))
+      throw Error(
+          "--mains expects mains frequencies in Hz, comma-separated (e.g. 50 or 50,60), "
+          "or 'none', got '" +
+          text + "'");
+    hz.push_back(f);
+  }
+  if (hz.empty())
+    throw Error(
+        "--mains expects mains frequencies in Hz, comma-separated (e.g. 50 or 50,60), "
+        "or 'none', got '" +
+        text + "'");
+  return hz;
+}
+
 }  // namespace
 
 int run_diagnose(const std::vector<std::string> &argv)
@@ -42,8 +64,9 @@ int run_diagnose(const std::vector<std::string> &argv)
       "may be off by --tolerance (slip); shaft and mains lines are masked (the shaft frequency\n"
       "is estimated from them). The defect is the family scoring >= --min-score (inner, outer,\n"
       "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
-      "harmonic, else 'unidentified' if detection fired (a fault of unknown type), else\n"
-      "'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
+      "harmonic, 'other-bearing' if --other-bearing's comb explains the record better than\n"
+      "any of this bearing's, else 'unidentified' if detection fired (a fault of unknown\n"
+      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
       "estimated from the pulse widths of a level signal such as R(t).\n"
       "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
@@ -56,6 +79,14 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
   a.option("--levels", "N", "kurtogram levels (0..16)", "7");
+  a.option("--other-bearing", "NAME",
+           "the other bearing on the same shaft (catalog name, e.g. 6205-2RS_JEM, the CWRU drive "
+           "end, when the record is the fan end's): a record whose impulses are at its defect "
+           "frequencies reads 'other-bearing', not 'unidentified'");
+  a.option("--mains", "LIST",
+           "mains frequencies (Hz, comma-separated) whose harmonic combs are masked where they "
+           "stand out, or 'none'",
+           "50,60");
   a.section("Detection");
   a.option("--false-alarm", "P", "false-alarm probability of each detection test", "0.001");
   a.option("--baseline", "FILE",
@@ -94,6 +125,21 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--band")) o.band = band_option(a);
   o.estimate_size = !a.has("--no-size");
   o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
+  if (a.has("--mains")) o.mains_hz = mains_option(a.get("--mains"));
+  std::string other_source;
+  if (a.has("--other-bearing")) {
+    const std::string catalog = a.has("--catalog") ? a.get("--catalog") : default_catalog_dir();
+    const CatalogEntry e = catalog_entry(catalog, a.get("--other-bearing"));
+    try {  // its own --dp would not apply: the entry must fix the frequencies by itself
+      o.other = e.geometry();
+    } catch (const Error &) {
+      throw Error("--other-bearing " + a.get("--other-bearing") + " (" + e.path +
+                  ") does not fix its defect frequencies (no pitch diameter and no factors): give "
+                  "a catalog bearing with Z, Dw and Dpw, or with the maker's factors");
+    }
+    validate(*o.other);
+    other_source = e.path;
+  }
   Signal base;
   if (a.has("--baseline")) {
     // the record's input options and time window (its sliding phase too), its step length
@@ -129,6 +175,8 @@ int run_diagnose(const std::vector<std::string> &argv)
 
   MetaList m = s.meta;
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
+  if (o.other)
+    m.emplace_back("other bearing on the shaft", o.other->name + " (" + other_source + ")");
   m.emplace_back(
       "shaft frequency (Hz)",
       format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");

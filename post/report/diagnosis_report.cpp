@@ -26,6 +26,26 @@ Json evidence_json(const std::vector<Evidence> &ev)
   return arr;
 }
 
+Json families_json(const std::vector<FamilyScore> &families)
+{
+  Json fams = Json::object();
+  for (const auto &f : families) {
+    Json o = Json::object();
+    o.set("score", f.score);
+    o.set("fundamental", f.label);
+    o.set("nominal_hz", f.nominal_hz);
+    o.set("frequency_hz", f.frequency_hz);
+    o.set("comb", f.comb);
+    o.set("chance", f.chance);
+    o.set("margin_db", f.margin);
+    o.set("harmonics", f.harmonics);
+    if (std::isfinite(f.baseline_excess)) o.set("baseline_excess_db", f.baseline_excess);
+    o.set("spectrum", f.spectrum);
+    fams.set(f.defect, o);
+  }
+  return fams;
+}
+
 Json detection_json(const Detection &det, double false_alarm)
 {
   Json o = Json::object();
@@ -72,6 +92,9 @@ const FamilyScore *chosen_family(const Diagnosis &d)
   const FamilyScore *chosen = nullptr;
   for (const auto &f : d.families)
     if (f.defect == d.defect || (d.defect == "ambiguous" && f.defect == d.candidate)) chosen = &f;
+  if (d.defect == "other-bearing")  // the other bearing's family
+    for (const auto &f : d.other_families)
+      if (f.defect == d.candidate) chosen = &f;
   return chosen;
 }
 
@@ -93,22 +116,13 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("kinematic_hz", chosen ? Json(chosen->nominal_hz) : Json());
   j.set("fundamental", chosen ? Json(d.label) : Json());
   j.set("evidence", evidence_json(d.evidence));
-  Json fams = Json::object();
-  for (const auto &f : d.families) {
+  j.set("families", families_json(d.families));
+  if (c.options.other) {
     Json o = Json::object();
-    o.set("score", f.score);
-    o.set("fundamental", f.label);
-    o.set("nominal_hz", f.nominal_hz);
-    o.set("frequency_hz", f.frequency_hz);
-    o.set("comb", f.comb);
-    o.set("chance", f.chance);
-    o.set("margin_db", f.margin);
-    o.set("harmonics", f.harmonics);
-    if (std::isfinite(f.baseline_excess)) o.set("baseline_excess_db", f.baseline_excess);
-    o.set("spectrum", f.spectrum);
-    fams.set(f.defect, o);
+    o.set("bearing", c.options.other->name);
+    o.set("families", families_json(d.other_families));
+    j.set("other_bearing", o);
   }
-  j.set("families", fams);
   Json sz = Json::object();
   sz.set("valid", d.size.valid);
   sz.set("method", d.size.method);
@@ -218,6 +232,17 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
     if (baseline) ft.rows.back().emplace_back(f.baseline_excess);
   }
   b.push_back({"", ft});
+  if (c.options.other) {
+    line("");
+    line("# the other bearing on the shaft: " + c.options.other->name);
+    Table ot;
+    ot.columns = {"other_family", "comb_of",    "score",      "margin_dB", "comb_dB",
+                  "chance_dB",    "nominal_Hz", "matched_Hz", "spectrum"};
+    for (const auto &f : d.other_families)
+      ot.rows.push_back({f.defect, f.label, f.score, f.margin, f.comb, f.chance, f.nominal_hz,
+                         f.frequency_hz, f.spectrum});
+    b.push_back({"", ot});
+  }
   if (!d.evidence.empty()) {
     line("");
     Table et;

@@ -111,6 +111,10 @@ TEST(OrdersCli, DiagnoseSwitchesToOrdersWhenTheSpeedVaries)
   // frequencies are orders x the mean shaft frequency (20 Hz over 0..3 s)
   EXPECT_NEAR(get(j, "frequency_hz").number() / get(j, "shaft_hz").number(), bpfi_order(),
               2e-3 * bpfi_order());
+  // the shaft frequency the spectrum gives is in Hz too (it was left in orders, ~1)
+  const Json &est = get(j, "shaft_hz_from_spectrum");
+  ASSERT_FALSE(est.is_null());  // from the shaft or the BPFI comb
+  EXPECT_NEAR(est.number(), get(j, "shaft_hz").number(), 0.02 * get(j, "shaft_hz").number());
   // the same record at its mean speed, without the angle, is not recognised as inner
   const std::string flat = test::write_temp("run_up_no_angle.txt", [] {
     std::ifstream in(run_up_file());
