@@ -307,6 +307,12 @@ ColumnTable read_npy(const std::string &path, const TableOptions &opt)
   for (std::uint64_t c = 0; c < cols; ++c) row_bytes += l.fields[l.records ? c : 0].bytes;
   const std::uint64_t size = std::filesystem::file_size(path);
   const std::uint64_t present = (size - std::min(size, l.data_offset)) / row_bytes;
+  if (l.records && (size - std::min(size, l.data_offset)) % row_bytes != 0)
+    warn(path +
+         ": dropped the last row, cut before its end (a run stopped while writing it: a "
+         "crash or a full disk): " +
+         std::to_string((size - std::min(size, l.data_offset)) % row_bytes) + " of its " +
+         std::to_string(row_bytes) + " bytes");
   if (present < rows)
     throw Error(path + ": truncated: the header counts " + std::to_string(rows) +
                 " rows, the file holds " + std::to_string(present));

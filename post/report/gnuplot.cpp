@@ -116,6 +116,7 @@ void write_image(const PlotImage &im, const std::string &path)
       out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';
     out << '\n';
   }
+  out.close();
   if (!out) throw Error("cannot write plot data to " + path);
 }
 
@@ -216,6 +217,7 @@ void render_png(const Figure &fig, const std::string &png_path)
       if (fig.logy && !(s.y[i] > 0)) continue;
       out << s.x[i] << ' ' << s.y[i] << '\n';
     }
+    out.close();
     if (!out) throw Error("cannot write plot data to " + data);
     script << (k ? ", " : "") << quote(data) << " using 1:2 with " << s.style << " lw 1.2 title "
            << quote(s.title);
@@ -223,7 +225,12 @@ void render_png(const Figure &fig, const std::string &png_path)
   script << "\n";
   const std::string script_path = dir.file("figure.gp");
   const std::string log_path = dir.file("gnuplot.log");
-  std::ofstream(script_path) << script.str();
+  {
+    std::ofstream gp_script(script_path);
+    gp_script << script.str();
+    gp_script.close();
+    if (!gp_script) throw Error("cannot write the gnuplot script " + script_path);
+  }
   const pid_t pid = ::fork();
   if (pid < 0) throw Error(std::string("cannot start gnuplot: ") + std::strerror(errno));
   if (pid == 0) {

@@ -237,9 +237,13 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
     const bool readable = word_pid == "pid" && word_host == "host" && holder > 0;
     if (readable && holder == pid && holder_host == host) return answer;  // ours already
     if (readable && holder_host != host) {
+      // Its pid means nothing here: a lock from another host is never judged stale.
       answer.error = "the output folder " + folder + " is in use by the run of pid " +
                      std::to_string(holder) + " on host " + holder_host + " (" + file +
-                     "); give another -var out, or remove " + file + " when that run has ended";
+                     "; a lock from another host is not judged stale: its process cannot be "
+                     "checked from " +
+                     host + "); give another -var out, or remove " + file +
+                     " when that run has ended";
       return answer;
     }
     if (readable && alive(holder)) {
@@ -256,6 +260,16 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
   }
   answer.error = "cannot take the lock " + file + ": another run took it at the same time";
   return answer;
+}
+
+bool locked_by_another(const std::string &folder, long pid, const std::string &host)
+{
+  std::ifstream in(lock_path(folder));
+  if (!in) return false;
+  std::string word_pid, word_host, holder_host;
+  long holder = -1;
+  in >> word_pid >> holder >> word_host >> holder_host;
+  return word_pid == "pid" && word_host == "host" && !(holder == pid && holder_host == host);
 }
 
 void unlock_folder(const std::string &folder, long pid, const std::string &host)

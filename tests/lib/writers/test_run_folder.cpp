@@ -128,6 +128,23 @@ TEST(RunFolder, LockRefusesALiveHolderAndReplacesAStaleOne)
   EXPECT_EQ(ohmdem::lock_folder(dir, 333, "h1", alive).note, "");  // no lock left
 }
 
+// A lock written on another host: its pid cannot be checked here, so even a pid that does
+// not run on this host leaves it held, and the error says why; run.json's owner test too.
+TEST(RunFolder, LockFromAnotherHostIsNeverStale)
+{
+  const std::string dir = temp_path("locked_remote");
+  ASSERT_EQ(ohmdem::make_folders(dir), "");
+  auto none_alive = [](long) { return false; };
+  EXPECT_FALSE(ohmdem::locked_by_another(dir, 7, "here"));  // no lock at all
+  EXPECT_EQ(ohmdem::lock_folder(dir, 111, "there", none_alive).error, "");
+  const auto remote = ohmdem::lock_folder(dir, 111, "here", none_alive);
+  EXPECT_NE(remote.error.find("on host there"), std::string::npos) << remote.error;
+  EXPECT_NE(remote.error.find("not judged stale"), std::string::npos) << remote.error;
+  EXPECT_EQ(remote.note, "");
+  EXPECT_TRUE(ohmdem::locked_by_another(dir, 111, "here"));
+  EXPECT_FALSE(ohmdem::locked_by_another(dir, 111, "there"));
+}
+
 TEST(RunFolder, RestartCheckAcceptsAWholeFile)
 {
   EXPECT_EQ(ohmdem::check_restart_file(write("whole.restart", restart_bytes(13))), "");
