@@ -8,9 +8,10 @@ newcomer's first hour; doc/command_deck_files.md).
   lock          a second run into the folder of a live run stops (exit 1) naming the holder's
                 pid; after the holder is killed (SIGKILL) its lock is stale: the next run
                 replaces it with a warning and finishes
-  restart_cut   a restart file cut at 8..200 bytes and in its atoms stops with one message
-                naming the file (exit 1, at once: read_restart alone loops on a cut header);
-                the whole file still continues
+  restart_cut   a restart file cut at 8..200 bytes and in its atoms, or damaged in the middle
+                (a fix's section, a ball outside the box), stops with one message naming the
+                file (exit 1, at once: read_restart alone loops on a cut header); the whole
+                file still continues
   sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding)
   long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
                 message (exit 1), not an abort inside LIGGGHTS (exit 134)
@@ -100,6 +101,28 @@ def test_restart_cut(a, work):
               and time.time() - t0 < 30 and len(r.stdout) < 20000,
               f"restart_cut: {n} bytes: one message naming the file (exit {r.returncode}): "
               f"{errors[:2]}")
+    # Damage in the middle, the length whole: the fix signal/table's state size, the first
+    # ball's y moved far outside the box (read_restart: "Did not assign all atoms correctly").
+    import struct
+    at = whole.index(b"signal/table\0") + 13
+    # one process: the atoms are the last chunk, an int N then N doubles (count, x, y, z, ...)
+    start = next(p for p in range(len(whole) - 12, 0, -4)
+                 if struct.unpack_from("<i", whole, p)[0] * 8 == len(whole) - p - 4)
+    y = start + 4 + 8 * 2
+    for label, damaged, want in (
+            ("fix state size", whole[:at] + struct.pack("<i", 4000) + whole[at + 4:],
+             "fixes' sections are damaged"),
+            ("a ball outside the box", whole[:y] + struct.pack("<d", 50.0) + whole[y + 8:],
+             "atom 1 lies outside the box")):
+        bad = os.path.join(work, "mid.restart")
+        with open(bad, "wb") as f:
+            f.write(damaged)
+        r = run(deck(a, "-var", "out", "mid", "-var", "start", "restart",
+                     "-var", "restart_file", bad, "-var", "tend", "4e-5"), work, timeout=60)
+        errors = [l for l in r.stdout.splitlines() if "ERROR" in l]
+        check(r.returncode == 1 and len(errors) == 1 and bad in errors[0] and want in errors[0],
+              f"restart_cut: {label} damaged: one message naming the file (exit {r.returncode})"
+              f": {errors[:2]}")
     r = run(deck(a, "-var", "out", "whole", "-var", "start", "restart", "-var", "restart_file",
                  os.path.join(first, "half.restart"), "-var", "tend", "4e-5"), work)
     check(r.returncode == 0, f"restart_cut: the whole file continues (exit {r.returncode})")
