@@ -12,7 +12,8 @@ newcomer's first hour; doc/command_deck_files.md).
                 (a fix's section, a ball outside the box), stops with one message naming the
                 file (exit 1, at once: read_restart alone loops on a cut header); the whole
                 file still continues
-  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding)
+  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding),
+                and the settle time of load fixed (tsettle) likewise
   long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
                 message (exit 1), not an abort inside LIGGGHTS (exit 134)
 
@@ -21,6 +22,7 @@ Usage: run_folder_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 import argparse
 import json
 import os
+import re
 import signal
 import subprocess
 import tempfile
@@ -157,6 +159,15 @@ def test_sliding(a, work):
     check(r.returncode == 0 and t_meas < t_json < 2 * t_meas,
           f"sliding: the 6203 slides until {t_meas:.4f} s; t_sliding_end {t_json:.4f} s after it "
           f"and within twice it")
+    # load fixed: the ring is held from tsettle on, after the sliding (the 6208's 0.014 s
+    # exactly; the 6203's after its sliding, within twice it). The echo shows the fix as run.
+    for bearing, low, high in (("machado2014", 0.014, 0.014), ("6203", t_meas, 2 * t_meas)):
+        r = run(deck(a, "-var", "out", f"settle_{bearing}", "-var", "bearing", bearing,
+                     "-var", "load", "fixed", "-var", "tend", "1e-5", "-echo", "screen"), work)
+        fixes = re.findall(r"^fix outer .* settle ([0-9.e+-]+) direction", r.stdout, re.M)
+        settle = float(fixes[-1]) if fixes else float("nan")
+        check(r.returncode == 0 and low <= settle <= high,
+              f"sliding: {bearing} load fixed: tsettle {settle} s in [{low:.4f}, {high:.4f}]")
 
 
 def main():
