@@ -27,18 +27,9 @@ import tempfile
 import time
 
 from deck_checks import check, finish
+from run_folder_tests import deck, run  # the bearing deck's command line, a run with its output
 
 SKIP = 77  # ctest SKIP_RETURN_CODE
-
-
-def deck(a, *var):
-    return [a.exe, "-in", os.path.join(a.src, "inputs", "bearing_6208", "in.bearing"),
-            "-log", "none"] + list(var)
-
-
-def run(cmd, work, timeout=300):
-    return subprocess.run(cmd, cwd=work, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True, errors="replace", timeout=timeout)
 
 
 def status_of(folder):
