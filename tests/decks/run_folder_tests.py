@@ -66,8 +66,9 @@ def test_lock(a, work):
                                    "-screen", "none"), cwd=work)
     try:
         lock = os.path.join(work, "shared", ".ohmdem.lock")
+        meta = os.path.join(work, "shared", "run.json")
         for _ in range(200):
-            if os.path.exists(lock):
+            if os.path.exists(lock) and os.path.exists(meta):
                 break
             time.sleep(0.05)
         check(os.path.exists(lock), "lock: the live run holds shared/.ohmdem.lock")
@@ -75,6 +76,10 @@ def test_lock(a, work):
         check(r.returncode == 1 and f"in use by the live run of pid {holder.pid}" in r.stdout,
               f"lock: a second run refused, naming pid {holder.pid} (exit {r.returncode}): "
               f"{[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
+        # the refused run leaves the holder's run.json alone (it is not its run that failed)
+        with open(os.path.join(work, "shared", "run.json")) as f:
+            status = json.load(f)["status"]
+        check(status == "running", f"lock: the holder's run.json still says running ({status})")
     finally:
         holder.send_signal(signal.SIGKILL)
         holder.wait()
