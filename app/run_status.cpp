@@ -3,11 +3,13 @@
 #include "run_status.h"
 
 #include <mpi.h>
+#include <unistd.h>
 
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,6 +22,7 @@
 #include "modify.h"
 #include "update.h"
 #include "variable.h"
+#include "writers/run_folder.h"
 
 namespace fs = std::filesystem;
 
@@ -109,6 +112,9 @@ void record_unfinished_run(LAMMPS_NS::LAMMPS *lmp, RunEnd end)
   const char *out = lmp->input->variable->retrieve(name);
   if (!out) return;
   const fs::path dir(out), meta = dir / "run.json";
+  char host[256] = {0};
+  if (::gethostname(host, sizeof host - 1) != 0) std::strcpy(host, "unknown");
+  if (locked_by_another(out, ::getpid(), host)) return;  // another run's folder
   std::error_code ec;
   if (!fs::is_regular_file(meta, ec)) return;
   if (end == RunEnd::Interrupted) move_forced_restart(lmp, dir);
@@ -127,9 +133,21 @@ void record_unfinished_run(LAMMPS_NS::LAMMPS *lmp, RunEnd end)
   {
     std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
     o << text;
-    if (!o) return;
+    o.close();
+    if (o) {
+      fs::rename(tmp, meta, ec);
+      return;
+    }
   }
-  fs::rename(tmp, meta, ec);
+  // A full disk has no room for a second file: rewrite the tail in place (the blocks of the
+  // file are already there; "failed" is shorter than "running").
+  fs::remove(tmp, ec);
+  std::FILE *f = std::fopen(meta.c_str(), "r+b");
+  if (!f) return;
+  const bool ok = std::fseek(f, static_cast<long>(reached), SEEK_SET) == 0 &&
+                  std::fputs(tail, f) >= 0 && std::fflush(f) == 0;
+  if (ok) (void)::truncate(meta.c_str(), static_cast<off_t>(reached + std::strlen(tail)));
+  std::fclose(f);
 }
 
 void record_failure_at_exit(LAMMPS_NS::LAMMPS *lmp)
@@ -159,6 +177,12 @@ void disarm_failure_at_exit()
 // executable flush every stream first.
 extern "C" int MPI_Abort(MPI_Comm comm, int errorcode)
 {
+  // An error on one process (a failed write of fix signal/table: a full disk) ends here, not
+  // in exit(): record the failure in run.json first, where it can still be written.
+  if (LAMMPS_NS::LAMMPS *lmp = ohmdem::g_lmp) {
+    ohmdem::g_lmp = nullptr;
+    ohmdem::record_unfinished_run(lmp, ohmdem::RunEnd::Failed);
+  }
   std::fflush(nullptr);
   return PMPI_Abort(comm, errorcode);
 }

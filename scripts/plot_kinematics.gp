@@ -15,7 +15,9 @@ if (c_time * c_cage * c_in * c_out == 0) {
   exit status 1
 }
 if (exists("tablefile")) { set table tablefile }
-set multiplot layout 2,1 title "SKF 6208, inner ring 500 rad/s: sliding phase, then rolling"
+# name='RUN': the run named in the title (the demo: healthy)
+if (!exists("name")) name = sig
+set multiplot layout 2,1 title sprintf("run %s: SKF 6208, inner ring 500 rad/s: sliding phase, then rolling", name) noenhanced
 set xlabel "time (s)"
 set ylabel "cage speed (rad/s)"
 ftf = 250.0*(1 - 12.6/60.6)

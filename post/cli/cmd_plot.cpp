@@ -2,6 +2,7 @@
 // ohmdem-post plot: PNG figures through gnuplot.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -157,6 +158,17 @@ void declare_options(Args &a)
   a.option("--unit", "UNIT", "unit of the signal for axis labels (default: ohm for R)");
 }
 
+// "healthy" for out/healthy/run.json (with its defect when it has one); "" without metadata.
+std::string run_name(const RunMetadata &meta)
+{
+  if (!meta.present()) return "";
+  const std::filesystem::path folder = std::filesystem::path(meta.path).parent_path();
+  std::string name = folder.filename().string();
+  if (name.empty() || name == ".") name = std::filesystem::absolute(folder).filename().string();
+  if (meta.defect && *meta.defect != "none") name += " (" + *meta.defect + " defect)";
+  return name;
+}
+
 }  // namespace
 
 int run_plot(const std::vector<std::string> &argv)
@@ -173,17 +185,22 @@ int run_plot(const std::vector<std::string> &argv)
   const std::string kind =
       a.choice("--kind", {"signal", "spectrum", "envelope", "spectrogram", "indicators"});
   Figure fig;
+  std::string run;  // the run folder's name, when the input is a run's (its run.json)
   if (kind == "indicators") {
     fig = indicators_plot(a);
   } else if (kind == "spectrogram") {
     const RunMetadata meta = run_metadata(a);
+    run = run_name(meta);
     fig = spectrogram_plot(a, load_input(a, meta, 64), meta);
   } else {  // signal, spectrum or envelope
     const RunMetadata meta = run_metadata(a);
+    run = run_name(meta);
     const Signal s = load_input(a, meta, kind == "signal" ? 2 : 64);
     fig = kind == "signal" ? signal_figure(s, unit_of(a, s.name))
                            : spectrum_plot(a, s, meta, kind == "envelope");
   }
+  // The title names the run (two runs' figures side by side are told apart).
+  if (!run.empty()) fig.title = "run " + run + ": " + fig.title;
   if (a.has("--title")) fig.title = a.get("--title");
   set_size(a, fig);
   render_png(fig, a.get("--output"));

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/commands.h"
 
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <new>
 
+#include "cli/common.h"
 #include "cli/setting_flags.h"
 #include "core/error.h"
 
@@ -58,7 +61,40 @@ void usage(std::ostream &out)
 
 }  // namespace
 
+namespace {
+
+int dispatch_command(int argc, char **argv);
+
+// Standard output flushed and checked (a full disk, a closed pipe, /dev/full): a lost output
+// is an error, never exit 0 with nothing written. Then the files of --output.
+int checked_exit(int status)
+{
+  std::cout.flush();
+  const bool out_ok = std::cout.good() && std::fflush(stdout) == 0 && !std::ferror(stdout);
+  if (!out_ok) {
+    std::cerr << "ERROR: writing standard output failed (" << std::strerror(errno)
+              << "): the output is lost or cut\n";
+    return 1;
+  }
+  if (!failed_outputs().empty()) {
+    for (const auto &f : failed_outputs()) std::cerr << "ERROR: writing '" << f << "' failed\n";
+    return 1;
+  }
+  return status;
+}
+
+}  // namespace
+
 int dispatch(int argc, char **argv)
+{
+  warning_sink() = [](const std::string &m) { std::cerr << "WARNING: " << m << "\n"; };
+  const int status = dispatch_command(argc, argv);
+  return checked_exit(status);
+}
+
+namespace {
+
+int dispatch_command(int argc, char **argv)
 {
   if (argc < 2) {
     usage(std::cerr);
@@ -98,5 +134,7 @@ int dispatch(int argc, char **argv)
   std::cerr << "; see ohmdem-post --help)\n";
   return 2;
 }
+
+}  // namespace
 
 }  // namespace ohmdem::post::cli

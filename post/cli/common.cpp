@@ -123,9 +123,23 @@ void add_output_options(Args &a)
 Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.get("--format")))
 {
   if (a.has("--output")) {
-    file_ = std::make_unique<std::ofstream>(a.get("--output"));
-    if (!*file_) throw Error("cannot write '" + a.get("--output") + "'");
+    path_ = a.get("--output");
+    file_ = std::make_unique<std::ofstream>(path_);
+    if (!*file_) throw Error("cannot write '" + path_ + "'");
   }
+}
+
+Output::~Output()
+{
+  if (!file_) return;
+  file_->close();  // flushes: a full disk shows here
+  if (file_->fail()) failed_outputs().push_back(path_);
+}
+
+std::vector<std::string> &failed_outputs()
+{
+  static std::vector<std::string> failed;
+  return failed;
 }
 
 void add_bearing_options(Args &a)

@@ -8,6 +8,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "bearing/bearing.h"
 #include "cli/args.h"
@@ -34,15 +35,22 @@ Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_sample
                   bool skip_sliding_phase = false, const std::string &rate_option = "--rate");
 
 void add_output_options(Args &a);
+// The --output files whose writing failed (a full disk): the command line exits non-zero
+// naming them (commands.cpp), after the command has returned.
+std::vector<std::string> &failed_outputs();
 class Output {
  public:
   explicit Output(const Args &a);  // --output FILE or stdout; --format
+  ~Output();                       // closes the file and notes a failed write in failed_outputs()
+  Output(const Output &) = delete;
+  Output &operator=(const Output &) = delete;
   std::ostream &stream() { return file_ ? *file_ : *out_; }
   OutputFormat format() const { return format_; }
   void write(const Result &r) { write_result(stream(), r, format_); }
 
  private:
   std::unique_ptr<std::ofstream> file_;
+  std::string path_;
   std::ostream *out_;
   OutputFormat format_;
 };

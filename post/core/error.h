@@ -15,6 +15,18 @@ class Error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Where the library's warnings go (something kept that the user should know: a cut last row
+// dropped). The command line prints them as "WARNING: <message>" on stderr; tests may catch them.
+inline std::function<void(const std::string &)> &warning_sink()
+{
+  static std::function<void(const std::string &)> sink;
+  return sink;
+}
+inline void warn(const std::string &message)
+{
+  if (warning_sink()) warning_sink()(message);
+}
+
 // "group.field" in lower case (a brace in a file name is left alone).
 inline bool is_setting_name(const std::string &key)
 {

@@ -83,7 +83,7 @@ bool LineReader::read_raw(std::string &line)
       throw Error(name_ + ":1: UTF-16 text; expected ASCII or UTF-8 (save the file as UTF-8)");
     }
   }
-  bool any = false;
+  bool any = false, had_newline = false;
   for (;;) {
     if (pos_ == end_ && !fill()) break;
     any = true;
@@ -101,9 +101,13 @@ bool LineReader::read_raw(std::string &line)
     line.append(start, take);
     pos_ += take + (nl ? 1 : 0);
     consumed_ += take + (nl ? 1 : 0);
-    if (nl) break;
+    if (nl) {
+      had_newline = true;
+      break;
+    }
   }
   if (!any) return false;
+  unterminated_ = !had_newline;
   ++raw_line_;
   if (!line.empty() && line.back() == '\r') line.pop_back();
   return true;

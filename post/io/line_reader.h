@@ -30,6 +30,8 @@ class LineReader {
   const std::string &peek_first_content();
 
   std::size_t line_number() const { return line_; }
+  // The line last read ended at the end of the input without its line break (cut?).
+  bool line_unterminated() const { return unterminated_; }
   const std::string &path() const { return path_; }  // as given ("-" for standard input)
   const std::string &name() const { return name_; }  // for messages: "standard input" for "-"
   std::string where() const { return name_ + ":" + std::to_string(line_); }
@@ -49,7 +51,7 @@ class LineReader {
   std::size_t max_line_;
   std::vector<char> buf_;
   std::size_t pos_ = 0, end_ = 0;
-  bool eof_ = false, started_ = false, peek_done_ = false;
+  bool eof_ = false, started_ = false, peek_done_ = false, unterminated_ = false;
   std::size_t line_ = 0, raw_line_ = 0;
   std::size_t size_hint_ = 0, consumed_ = 0;
   // peeked lines handed back: `replay_blank_` blank lines, then `peeked_` if `has_peeked_`

@@ -252,6 +252,11 @@ Layout read_layout(std::ifstream &in, const std::string &path)
   return l;
 }
 
+std::string type_name(const Field &f)
+{
+  return "<" + std::string(1, f.kind) + std::to_string(f.bytes);
+}
+
 }  // namespace
 
 bool has_npy_header(const std::string &path)
@@ -307,9 +312,32 @@ ColumnTable read_npy(const std::string &path, const TableOptions &opt)
   for (std::uint64_t c = 0; c < cols; ++c) row_bytes += l.fields[l.records ? c : 0].bytes;
   const std::uint64_t size = std::filesystem::file_size(path);
   const std::uint64_t present = (size - std::min(size, l.data_offset)) / row_bytes;
+  if (l.records && (size - std::min(size, l.data_offset)) % row_bytes != 0)
+    warn(path +
+         ": dropped the last row, cut before its end (a run stopped while writing it: a "
+         "crash or a full disk): " +
+         std::to_string((size - std::min(size, l.data_offset)) % row_bytes) + " of its " +
+         std::to_string(row_bytes) + " bytes");
   if (present < rows)
     throw Error(path + ": truncated: the header counts " + std::to_string(rows) +
                 " rows, the file holds " + std::to_string(present));
+  // More data than the header describes: a record table may hold uncounted rows (fix
+  // signal/table stopped between writing a block and counting it: one block at most, fewer
+  // than the rows counted before); anything else means an element type that is not the data's
+  // (a '<i4' or '<f4' header on float64 data: twice the bytes, read as garbage).
+  const std::uint64_t data_bytes = size - std::min(size, l.data_offset);
+  const bool uncounted = l.records && (rows == 0 || present < 2 * rows);
+  if (data_bytes / row_bytes != rows && !uncounted) {
+    std::string types;
+    for (const auto &f : l.fields)
+      if (types.find(type_name(f)) == std::string::npos)
+        types += (types.empty() ? "'" : ", '") + type_name(f) + "'";
+    throw Error(path + ": the header's element type " + types + " and shape give " +
+                std::to_string(rows * row_bytes) + " data bytes, the file holds " +
+                std::to_string(data_bytes) +
+                ": the header does not describe the data (another element type? float64 is "
+                "'<f8'); write it again with numpy.save");
+  }
   if (l.records && present > rows) {
     t.notes.push_back("read " + std::to_string(present - rows) +
                       " whole rows beyond the header's count (a run stopped before counting "

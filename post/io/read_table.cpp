@@ -153,6 +153,7 @@ ColumnTable read_table(LineReader &in, const TableOptions &opt)
   std::string last_comment;
   bool comment_just_before = false;
   std::vector<std::string_view> tok;
+  std::vector<double> values;
   std::size_t ncol = 0;
   while (in.next(line)) {
     std::string_view s = trim(line);
@@ -188,18 +189,29 @@ ColumnTable read_table(LineReader &in, const TableOptions &opt)
       t.init_columns(ncol);
       choose_columns(t, opt);
       if (opt.header_only) return t;
+      values.assign(ncol, 0.0);
     }
+    std::string bad;
     if (tok.size() != ncol)
-      throw Error(in.where() + ": " + std::to_string(tok.size()) + " values, expected " +
-                  std::to_string(ncol) + " as on the first data row (garbage or truncated line?)");
+      bad = in.where() + ": " + std::to_string(tok.size()) + " values, expected " +
+            std::to_string(ncol) + " as on the first data row (garbage or truncated line?)";
+    for (std::size_t c = 0; bad.empty() && c < ncol; ++c)
+      if (!parse_double(tok[c], values[c]))
+        bad = in.where() + ": " + quoted(tok[c]) + " is not a number (column " + t.names[c] + ")";
+    if (!bad.empty()) {
+      // A last line without its line break was cut (a crash, a full disk): the rows before
+      // it are good. Anywhere else a bad row is an error.
+      if (!in.line_unterminated() || t.rows() == 0) throw Error(bad);
+      warn(in.where() +
+           ": dropped the last row, cut before its end (a run stopped while "
+           "writing it: a crash or a full disk): " +
+           bad.substr(bad.find(": ") + 2));
+      break;
+    }
     for (std::size_t c = 0; c < ncol; ++c) {
-      double v = 0;
-      if (!parse_double(tok[c], v))
-        throw Error(in.where() + ": " + quoted(tok[c]) + " is not a number (column " + t.names[c] +
-                    ")");
       if (!t.stored[c]) continue;
-      t.columns[c].push_back(v);
-      t.note_token(c, tok[c], v);
+      t.columns[c].push_back(values[c]);
+      t.note_token(c, tok[c], values[c]);
     }
     t.line_of_row.push_back(in.line_number());
     if (t.rows() == kRowsBeforeReserve) reserve_rows(t, in);

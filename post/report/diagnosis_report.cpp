@@ -195,6 +195,11 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
         : d.detected      ? " (a family identified; no detection test fired)"
                           : ""));
   line("score:         " + format_number(d.score, 3));
+  if (!c.numerical_floor.empty()) line("floor:         " + c.numerical_floor);
+  if (d.defect == "none" && !d.detected)
+    line(std::string("verdict:       healthy: no defect family stands out of the spectrum") +
+         (d.detection.fired ? "" : " and no detection test fired") +
+         (c.numerical_floor.empty() ? "" : "; the signal is at the numerical floor"));
   if (chosen)
     line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
          " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +

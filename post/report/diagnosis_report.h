@@ -20,6 +20,9 @@ struct DiagnosisContext {
   const DiagnoseOptions &options;
   bool in_orders;
   std::optional<std::string> run_defect;  // run.json "defect": what the run simulated
+  // A simulated signal whose spread is at the numerical floor (cmd_diagnose): said in the text,
+  // since its statistics (kurtosis, p-values) then describe numerical blips, not a defect.
+  std::string numerical_floor = "";
 };
 
 Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta);

@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -116,10 +117,33 @@ void write_image(const PlotImage &im, const std::string &path)
       out << im.x[ix] << ' ' << im.y[iy] << ' ' << im.z[iy * nx + ix] << '\n';
     out << '\n';
   }
+  out.close();
   if (!out) throw Error("cannot write plot data to " + path);
 }
 
 }  // namespace
+
+std::vector<int> marker_label_rows(const std::vector<PlotMarker> &markers, double xmin, double xmax,
+                                   double width_px)
+{
+  constexpr double kLabelWidthPx = 14;  // a rotated 8-point label and a gap
+  std::vector<std::size_t> order(markers.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return markers[a].x < markers[b].x; });
+  std::vector<int> rows(markers.size(), 0);
+  std::vector<double> last_px;  // per row, the x (px) of its last label
+  const double scale = xmax > xmin ? width_px / (xmax - xmin) : 0;
+  for (std::size_t i : order) {
+    const double px = (markers[i].x - xmin) * scale;
+    std::size_t r = 0;
+    while (r < last_px.size() && px - last_px[r] < kLabelWidthPx) ++r;
+    if (r == last_px.size()) last_px.push_back(px);
+    last_px[r] = px;
+    rows[i] = static_cast<int>(r);
+  }
+  return rows;
+}
 
 std::string find_gnuplot()
 {
@@ -187,11 +211,24 @@ void render_png(const Figure &fig, const std::string &png_path)
     script << "set xrange [" << (std::isfinite(fig.xmin) ? std::to_string(fig.xmin) : "*") << ":"
            << (std::isfinite(fig.xmax) ? std::to_string(fig.xmax) : "*") << "]\n";
   int tag = 1;
+  // Labels of close markers at different heights (the x range: the figure's, else the markers').
+  double x0 = fig.xmin, x1 = fig.xmax;
   for (const auto &m : fig.markers) {
+    if (!std::isfinite(fig.xmin)) x0 = std::isfinite(x0) ? std::min(x0, m.x) : m.x;
+    if (!std::isfinite(fig.xmax)) x1 = std::isfinite(x1) ? std::max(x1, m.x) : m.x;
+  }
+  for (const auto &s : fig.series)
+    for (double x : s.x) {
+      if (!std::isfinite(fig.xmin) && x < x0) x0 = x;
+      if (!std::isfinite(fig.xmax) && x > x1) x1 = x;
+    }
+  const std::vector<int> rows = marker_label_rows(fig.markers, x0, x1, 0.85 * fig.width);
+  for (std::size_t k = 0; k < fig.markers.size(); ++k) {
+    const PlotMarker &m = fig.markers[k];
     script << "set arrow " << tag << " from " << m.x << ", graph 0 to " << m.x
            << ", graph 1 nohead dt 2 lw 1 lc rgb " << quote(m.color) << "\n"
-           << "set label " << tag << " " << quote(m.label) << " at " << m.x
-           << ", graph 0.98 rotate by 90 right offset -0.6,0 tc rgb " << quote(m.color)
+           << "set label " << tag << " " << quote(m.label) << " at " << m.x << ", graph "
+           << 0.98 - 0.13 * rows[k] << " rotate by 90 right offset -0.6,0 tc rgb " << quote(m.color)
            << " font 'Sans,8'\n";
     ++tag;
   }
@@ -216,6 +253,7 @@ void render_png(const Figure &fig, const std::string &png_path)
       if (fig.logy && !(s.y[i] > 0)) continue;
       out << s.x[i] << ' ' << s.y[i] << '\n';
     }
+    out.close();
     if (!out) throw Error("cannot write plot data to " + data);
     script << (k ? ", " : "") << quote(data) << " using 1:2 with " << s.style << " lw 1.2 title "
            << quote(s.title);
@@ -223,7 +261,12 @@ void render_png(const Figure &fig, const std::string &png_path)
   script << "\n";
   const std::string script_path = dir.file("figure.gp");
   const std::string log_path = dir.file("gnuplot.log");
-  std::ofstream(script_path) << script.str();
+  {
+    std::ofstream gp_script(script_path);
+    gp_script << script.str();
+    gp_script.close();
+    if (!gp_script) throw Error("cannot write the gnuplot script " + script_path);
+  }
   const pid_t pid = ::fork();
   if (pid < 0) throw Error(std::string("cannot start gnuplot: ") + std::strerror(errno));
   if (pid == 0) {

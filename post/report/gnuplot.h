@@ -47,6 +47,13 @@ struct Figure {
 // no file (and an existing png_path unchanged).
 void render_png(const Figure &fig, const std::string &png_path);
 
+// The height at which each marker's label is drawn (0: at the top, 1: one label's length
+// lower, ...): markers closer on the x axis than a label's width (a rotated line of text) get
+// different heights, so that FTF's harmonics or 3xBPFO beside 2xBPFI do not overlap. Markers
+// in [xmin, xmax] on a plot `width_px` wide; the result follows the order of `markers`.
+std::vector<int> marker_label_rows(const std::vector<PlotMarker> &markers, double xmin, double xmax,
+                                   double width_px);
+
 // Finds the gnuplot executable; "" if none.
 std::string find_gnuplot();
 

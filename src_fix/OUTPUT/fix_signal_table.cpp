@@ -133,8 +133,7 @@ void FixSignalTable::parse(int narg, char **arg)
     } else if (kw == "flush") {
       flush_seconds_ = a.non_negative(kw, "the longest wall time between two flushes, >= 0 (s)");
     } else {
-      a.fail("keyword",
-             "file, columns, append, format or flush (values come before the keywords)",
+      a.fail("keyword", "file, columns, append, format or flush (values come before the keywords)",
              kw.c_str());
     }
   }
@@ -142,7 +141,7 @@ void FixSignalTable::parse(int narg, char **arg)
   // Without the keyword the file name decides: NAME.npy is binary, anything else text.
   if (format_ == Format::Auto)
     format_ = path_.size() > 4 && path_.compare(path_.size() - 4, 4, ".npy") == 0 ? Format::Npy
-                                                                                 : Format::Text;
+                                                                                  : Format::Text;
   row_.resize(values_.size());
 }
 
@@ -308,11 +307,26 @@ void FixSignalTable::end_of_step()
 
 void FixSignalTable::post_run()
 {
-  if (table_) table_->flush();
+  if (!table_) return;
+  try {
+    table_->flush();
+  } catch (const std::exception &e) {
+    // One process writes: error->one; ohmdem records the failure in run.json before the abort.
+    error->one(FLERR, ("fix signal/table: " + std::string(e.what())).c_str());
+  }
 }
 
 void FixSignalTable::write_restart(FILE *fp)
 {
+  // The rows up to the restart point go out with the restart file: a run killed later and
+  // continued from this file leaves no gap in the table.
+  if (table_) {
+    try {
+      table_->flush();
+    } catch (const std::exception &e) {
+      error->one(FLERR, ("fix signal/table: " + std::string(e.what())).c_str());
+    }
+  }
   const double list[kRestartSize] = {time_, static_cast<double>(time_step_), dt_ref_,
                                      simulated_time()};
   ohmdem::write_global_restart(comm->me, fp, list);

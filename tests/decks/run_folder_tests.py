@@ -8,10 +8,12 @@ newcomer's first hour; doc/command_deck_files.md).
   lock          a second run into the folder of a live run stops (exit 1) naming the holder's
                 pid; after the holder is killed (SIGKILL) its lock is stale: the next run
                 replaces it with a warning and finishes
-  restart_cut   a restart file cut at 8..200 bytes and in its atoms stops with one message
-                naming the file (exit 1, at once: read_restart alone loops on a cut header);
-                the whole file still continues
-  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding)
+  restart_cut   a restart file cut at 8..200 bytes and in its atoms, or damaged in the middle
+                (a fix's section, a ball outside the box), stops with one message naming the
+                file (exit 1, at once: read_restart alone loops on a cut header); the whole
+                file still continues
+  sliding       run.json's t_sliding_end for the bearing that ran (the 6203's after its sliding),
+                and the settle time of load fixed (tsettle) likewise
   long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
                 message (exit 1), not an abort inside LIGGGHTS (exit 134)
 
@@ -20,6 +22,7 @@ Usage: run_folder_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 import argparse
 import json
 import os
+import re
 import signal
 import subprocess
 import tempfile
@@ -63,8 +66,9 @@ def test_lock(a, work):
                                    "-screen", "none"), cwd=work)
     try:
         lock = os.path.join(work, "shared", ".ohmdem.lock")
+        meta = os.path.join(work, "shared", "run.json")
         for _ in range(200):
-            if os.path.exists(lock):
+            if os.path.exists(lock) and os.path.exists(meta):
                 break
             time.sleep(0.05)
         check(os.path.exists(lock), "lock: the live run holds shared/.ohmdem.lock")
@@ -72,6 +76,10 @@ def test_lock(a, work):
         check(r.returncode == 1 and f"in use by the live run of pid {holder.pid}" in r.stdout,
               f"lock: a second run refused, naming pid {holder.pid} (exit {r.returncode}): "
               f"{[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
+        # the refused run leaves the holder's run.json alone (it is not its run that failed)
+        with open(os.path.join(work, "shared", "run.json")) as f:
+            status = json.load(f)["status"]
+        check(status == "running", f"lock: the holder's run.json still says running ({status})")
     finally:
         holder.send_signal(signal.SIGKILL)
         holder.wait()
@@ -100,6 +108,28 @@ def test_restart_cut(a, work):
               and time.time() - t0 < 30 and len(r.stdout) < 20000,
               f"restart_cut: {n} bytes: one message naming the file (exit {r.returncode}): "
               f"{errors[:2]}")
+    # Damage in the middle, the length whole: the fix signal/table's state size, the first
+    # ball's y moved far outside the box (read_restart: "Did not assign all atoms correctly").
+    import struct
+    at = whole.index(b"signal/table\0") + 13
+    # one process: the atoms are the last chunk, an int N then N doubles (count, x, y, z, ...)
+    start = next(p for p in range(len(whole) - 12, 0, -4)
+                 if struct.unpack_from("<i", whole, p)[0] * 8 == len(whole) - p - 4)
+    y = start + 4 + 8 * 2
+    for label, damaged, want in (
+            ("fix state size", whole[:at] + struct.pack("<i", 4000) + whole[at + 4:],
+             "fixes' sections are damaged"),
+            ("a ball outside the box", whole[:y] + struct.pack("<d", 50.0) + whole[y + 8:],
+             "atom 1 lies outside the box")):
+        bad = os.path.join(work, "mid.restart")
+        with open(bad, "wb") as f:
+            f.write(damaged)
+        r = run(deck(a, "-var", "out", "mid", "-var", "start", "restart",
+                     "-var", "restart_file", bad, "-var", "tend", "4e-5"), work, timeout=60)
+        errors = [l for l in r.stdout.splitlines() if "ERROR" in l]
+        check(r.returncode == 1 and len(errors) == 1 and bad in errors[0] and want in errors[0],
+              f"restart_cut: {label} damaged: one message naming the file (exit {r.returncode})"
+              f": {errors[:2]}")
     r = run(deck(a, "-var", "out", "whole", "-var", "start", "restart", "-var", "restart_file",
                  os.path.join(first, "half.restart"), "-var", "tend", "4e-5"), work)
     check(r.returncode == 0, f"restart_cut: the whole file continues (exit {r.returncode})")
@@ -134,6 +164,15 @@ def test_sliding(a, work):
     check(r.returncode == 0 and t_meas < t_json < 2 * t_meas,
           f"sliding: the 6203 slides until {t_meas:.4f} s; t_sliding_end {t_json:.4f} s after it "
           f"and within twice it")
+    # load fixed: the ring is held from tsettle on, after the sliding (the 6208's 0.014 s
+    # exactly; the 6203's after its sliding, within twice it). The echo shows the fix as run.
+    for bearing, low, high in (("machado2014", 0.014, 0.014), ("6203", t_meas, 2 * t_meas)):
+        r = run(deck(a, "-var", "out", f"settle_{bearing}", "-var", "bearing", bearing,
+                     "-var", "load", "fixed", "-var", "tend", "1e-5", "-echo", "screen"), work)
+        fixes = re.findall(r"^fix outer .* settle ([0-9.e+-]+) direction", r.stdout, re.M)
+        settle = float(fixes[-1]) if fixes else float("nan")
+        check(r.returncode == 0 and low <= settle <= high,
+              f"sliding: {bearing} load fixed: tsettle {settle} s in [{low:.4f}, {high:.4f}]")
 
 
 def main():

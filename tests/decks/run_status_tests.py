@@ -175,7 +175,10 @@ def test_deck_errors(a, work):
              ({"Db": 0.013}, "deck variable Db: the balls (0.013 m) do not fit between the races"),
              ({"Dext": 0.04}, "deck variables Dext and Dinn: the outer race diameter must exceed "
                               "the inner one"),
-             ({"nthermo": 0}, "deck variable nthermo")]
+             ({"nthermo": 0}, "deck variable nthermo"),
+             ({"restart_every": -1}, "deck variable restart_every: restart files every N steps "
+                                     "needs a whole number >= 0 (0: none), got -1"),
+             ({"restart_every": 1.5}, "deck variable restart_every")]
     for var, msg in cases:
         out = os.path.join(work, "err_" + "_".join(f"{k}{v}" for k, v in var.items()))
         r = subprocess.run(command(a, out, **var), cwd=work, capture_output=True, text=True)

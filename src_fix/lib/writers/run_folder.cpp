@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -117,13 +118,16 @@ struct Bytes {
 };
 
 // Where each per-process chunk of atoms starts, walking back from the end: a chunk is an int
-// N, then N doubles, each atom's values starting with their count. "" when the file ends in
-// exactly NCHUNKS chunks holding NATOMS atoms, after byte FROM.
-std::string check_atom_chunks(const std::string &data, std::size_t from, int nchunks,
-                              long long natoms)
+// N, then N doubles, each atom's values starting with their count, then x, y, z. "" when the
+// data after byte FROM ends in exactly NCHUNKS chunks; their atoms are added to `atoms`, and
+// `from` is set to where the first chunk starts. Each atom must lie in the box `box` (xlo xhi
+// ylo yhi zlo zhi) with every value a finite number: a damaged atom section is refused here
+// (read_restart would lose the atom, or its contacts, with a stock message).
+std::string check_atom_chunks(const std::string &data, std::size_t &from, int nchunks,
+                              const double *box, long long &atoms)
 {
   std::size_t end = data.size();
-  long long atoms = 0;
+  std::string misplaced;
   for (int c = 0; c < nchunks; ++c) {
     // The longest chunk first (an empty one, N = 0, only when nothing longer fits): a short
     // false match inside the doubles is then never taken for the chunk.
@@ -139,42 +143,97 @@ std::string check_atom_chunks(const std::string &data, std::size_t from, int nch
       long long count = 0;
       std::size_t m = 0;
       bool whole = true;
+      std::string where;
       while (m < n && whole) {
         double size = 0;
         std::memcpy(&size, data.data() + start + 4 + 8 * m, 8);
-        whole = size >= 1 && size <= static_cast<double>(n - m) &&
+        whole = size >= 4 && size <= static_cast<double>(n - m) &&
                 size == static_cast<double>(static_cast<std::size_t>(size));
-        if (whole) m += static_cast<std::size_t>(size), ++count;
+        if (!whole) break;
+        for (std::size_t v = 1; v < static_cast<std::size_t>(size) && where.empty(); ++v) {
+          double value = 0;
+          std::memcpy(&value, data.data() + start + 4 + 8 * (m + v), 8);
+          if (!std::isfinite(value))
+            where = "atom " + std::to_string(count + 1) + " has a value that is not a number";
+          else if (v <= 3 && (value < box[2 * (v - 1)] || value > box[2 * v - 1]))
+            where = "atom " + std::to_string(count + 1) + " lies outside the box (" + "xyz"[v - 1] +
+                    " = " + std::to_string(value) + ")";
+        }
+        m += static_cast<std::size_t>(size), ++count;
       }
       if (!whole || m != n) continue;
       found = true;
       atoms += count;
       end = start;
+      if (misplaced.empty()) misplaced = where;
     }
     if (!found) return "its atoms are cut (no whole section of atoms ends the file)";
   }
-  if (atoms != natoms)
-    return "it holds " + std::to_string(atoms) + " atoms, its header says " +
-           std::to_string(natoms);
+  if (!misplaced.empty()) return "its atoms are damaged: " + misplaced;
+  from = end;
   return "";
+}
+
+// The fixes' sections that end the part before the atoms: -1 (the end of the force fields),
+// the number of fixes, each fix's ID, style, the byte count of its state and the state, then
+// the number of per-atom fixes, each with ID, style and its values per atom. Strings are an
+// int length (with the NUL) and the characters. True when they end exactly at END.
+bool fix_sections_end_at(const std::string &data, std::size_t p, std::size_t end)
+{
+  Bytes b{data, p};
+  int marker = 0, nfix = 0;
+  auto text = [&b, &data]() {
+    int n = 0;
+    if (!b.take(&n, 4) || n < 1 || n > 4096 || data.size() - b.pos < static_cast<std::size_t>(n))
+      return false;
+    b.pos += static_cast<std::size_t>(n);
+    return data[b.pos - 1] == '\0';
+  };
+  if (!b.take(&marker, 4) || marker != -1 || !b.take(&nfix, 4) || nfix < 0 || nfix > 10000)
+    return false;
+  for (int i = 0; i < nfix; ++i) {
+    int size = 0;
+    if (!text() || !text() || !b.take(&size, 4) || size < 0 ||
+        data.size() - b.pos < static_cast<std::size_t>(size))
+      return false;
+    b.pos += static_cast<std::size_t>(size);
+  }
+  int nperatom = 0;
+  if (!b.take(&nperatom, 4) || nperatom < 0 || nperatom > 10000) return false;
+  for (int i = 0; i < nperatom; ++i) {
+    int values = 0;
+    if (!text() || !text() || !b.take(&values, 4) || values < 0) return false;
+  }
+  return b.pos == end;
+}
+
+std::string read_whole(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
 
 std::string check_restart_file(const std::string &path)
 {
+  // A multi-file restart (write_restart FILE.%): FILE.base holds the header and the fixes,
+  // FILE.0 ... FILE.(P-1) each process's atoms.
+  const std::size_t percent = path.find('%');
+  const std::string base =
+      percent == std::string::npos ? path : std::string(path).replace(percent, 1, "base");
   struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) return "no file " + path + " (" + why(errno) + ")";
-  if (!S_ISREG(st.st_mode)) return path + " is not a file";
+  if (::stat(base.c_str(), &st) != 0) return "no file " + base + " (" + why(errno) + ")";
+  if (!S_ISREG(st.st_mode)) return base + " is not a file";
   if (st.st_size > (1LL << 28))  // larger files: LIGGGHTS reads them as they are
     return "";
-  std::ifstream in(path, std::ios::binary);
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string bad = "the restart file " + path + " (" + std::to_string(data.size()) +
+  const std::string data = read_whole(base);
+  const std::string bad = "the restart file " + base + " (" + std::to_string(data.size()) +
                           " bytes) is damaged or not a LIGGGHTS restart file: ";
   Bytes b{data};
   int flag = 0, expected = 0, nprocs = 0;
   long long natoms = -1;
+  double box[6] = {0, 0, 0, 0, 0, 0};
   for (;; ++expected) {
     if (!b.take(&flag, 4)) return bad + "its header is cut";
     if (flag == -1 && expected == kLastHeaderFlag + 1) break;
@@ -199,11 +258,37 @@ std::string check_restart_file(const std::string &path)
       if (!ok) return bad + "its header is cut";
       if (flag == 7) nprocs = small;
       if (flag == 23) natoms = value;
+      if (flag >= 37 && flag <= 42) box[flag - 37] = real;  // box lo/hi in x, y, z
     }
   }
   if (nprocs < 1 || natoms < 0) return bad + "its header gives no processes or atoms";
-  const std::string atoms = check_atom_chunks(data, b.pos, nprocs, natoms);
-  if (!atoms.empty()) return bad + atoms;
+  // The atoms: after the fixes in this file, or in one file per process.
+  long long atoms = 0;
+  std::size_t atoms_start = data.size();
+  if (percent == std::string::npos) {
+    atoms_start = b.pos;
+    const std::string cut = check_atom_chunks(data, atoms_start, nprocs, box, atoms);
+    if (!cut.empty()) return bad + cut;
+  } else {
+    for (int p = 0; p < nprocs; ++p) {
+      const std::string part = std::string(path).replace(percent, 1, std::to_string(p));
+      if (::stat(part.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+        return bad + "the file of process " + std::to_string(p) + ", " + part + ", is missing";
+      std::size_t from = 0;
+      const std::string cut = check_atom_chunks(read_whole(part), from, 1, box, atoms);
+      if (!cut.empty()) return bad + "in " + part + ", " + cut;
+    }
+  }
+  if (atoms != natoms)
+    return bad + "it holds " + std::to_string(atoms) + " atoms, its header says " +
+           std::to_string(natoms);
+  // Between the header and the atoms: the types and force fields (their layout is the
+  // styles'), then the fixes' sections, which must end exactly where the atoms start.
+  bool fixes = false;
+  for (std::size_t p = b.pos; p + 12 <= atoms_start && !fixes; ++p)
+    fixes = fix_sections_end_at(data, p, atoms_start);
+  if (!fixes)
+    return bad + "its fixes' sections are damaged (they do not end where the atoms start)";
   return "";
 }
 
@@ -237,9 +322,13 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
     const bool readable = word_pid == "pid" && word_host == "host" && holder > 0;
     if (readable && holder == pid && holder_host == host) return answer;  // ours already
     if (readable && holder_host != host) {
+      // Its pid means nothing here: a lock from another host is never judged stale.
       answer.error = "the output folder " + folder + " is in use by the run of pid " +
                      std::to_string(holder) + " on host " + holder_host + " (" + file +
-                     "); give another -var out, or remove " + file + " when that run has ended";
+                     "; a lock from another host is not judged stale: its process cannot be "
+                     "checked from " +
+                     host + "); give another -var out, or remove " + file +
+                     " when that run has ended";
       return answer;
     }
     if (readable && alive(holder)) {
@@ -256,6 +345,16 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
   }
   answer.error = "cannot take the lock " + file + ": another run took it at the same time";
   return answer;
+}
+
+bool locked_by_another(const std::string &folder, long pid, const std::string &host)
+{
+  std::ifstream in(lock_path(folder));
+  if (!in) return false;
+  std::string word_pid, word_host, holder_host;
+  long holder = -1;
+  in >> word_pid >> holder >> word_host >> holder_host;
+  return word_pid == "pid" && word_host == "host" && !(holder == pid && holder_host == host);
 }
 
 void unlock_folder(const std::string &folder, long pid, const std::string &host)

@@ -45,6 +45,9 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
 // Removes FOLDER's lock when it is PID's on HOST (another holder's lock is left alone).
 void unlock_folder(const std::string &folder, long pid, const std::string &host);
 std::string lock_path(const std::string &folder);
+// True when FOLDER's lock names another holder than PID on HOST: that run's run.json is not
+// this process's to rewrite (a second run refused by the lock must leave it alone).
+bool locked_by_another(const std::string &folder, long pid, const std::string &host);
 
 }  // namespace ohmdem
 

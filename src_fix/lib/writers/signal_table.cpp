@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "writers/signal_table.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -22,6 +24,25 @@ constexpr std::size_t kMaxNumber = 32;
 [[noreturn]] void fail(const std::string &path, const std::string &what)
 {
   throw std::runtime_error("signal table '" + path + "': " + what);
+}
+
+// write(2) until done or an error (a full disk, a file size limit): the bytes written.
+std::size_t write_all(std::FILE *fp, const char *data, std::size_t n, int &err)
+{
+  std::size_t done = 0;
+  err = 0;
+  while (done < n) {
+    const ssize_t k = ::write(::fileno(fp), data + done, n - done);
+    if (k > 0) {
+      done += static_cast<std::size_t>(k);
+    } else if (k < 0 && errno == EINTR) {
+      continue;
+    } else {
+      err = k < 0 ? errno : ENOSPC;
+      break;
+    }
+  }
+  return done;
 }
 
 }  // namespace
@@ -105,7 +126,8 @@ std::size_t truncate_npy_table(const std::string &path, const std::vector<std::s
   bool cut = false;
   while (!cut && keep < whole) {
     const std::uint64_t n = std::min<std::uint64_t>(4096, whole - keep);
-    if (!in.read(reinterpret_cast<char *>(block.data()), static_cast<std::streamsize>(n * row_bytes)))
+    if (!in.read(reinterpret_cast<char *>(block.data()),
+                 static_cast<std::streamsize>(n * row_bytes)))
       fail(path, "could not be read past row " + std::to_string(keep));
     for (std::uint64_t r = 0; r < n; ++r, ++keep)
       if (block[r * columns.size()] >= t) {
@@ -141,9 +163,16 @@ void SignalTable::open_text(const Options &opt)
   }
   fp_ = std::fopen(path_.c_str(), opt.append ? "ab" : "wb");
   if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
+  // The rows go out through write(2) in whole blocks (this class buffers): no stdio buffer.
+  std::setvbuf(fp_, nullptr, _IONBF, 0);
+  std::fseek(fp_, 0, SEEK_END);
+  end_ = static_cast<std::uint64_t>(std::ftell(fp_));
   if (write_header) {
     const std::string h = signal_table_header(columns_) + "\n";
-    std::fwrite(h.data(), 1, h.size(), fp_);
+    int err = 0;
+    if (write_all(fp_, h.data(), h.size(), err) != h.size())
+      fail(path_, std::string("write failed: ") + std::strerror(err));
+    end_ += h.size();
   }
 }
 
@@ -160,13 +189,18 @@ void SignalTable::open_npy(const Options &opt)
     dropped_ = truncate_npy_table(path_, columns_, opt.resume_from, npy_rows_);
     fp_ = std::fopen(path_.c_str(), "r+b");  // "a" would send the row count to the end too
     if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
+    std::setvbuf(fp_, nullptr, _IONBF, 0);
     write_npy_rows_field();
+    end_ = static_cast<std::uint64_t>(std::ftell(fp_));
     return;
   }
   fp_ = std::fopen(path_.c_str(), "w+b");
   if (!fp_) fail(path_, std::string("cannot be opened for writing: ") + std::strerror(errno));
-  if (std::fwrite(h.bytes.data(), 1, h.bytes.size(), fp_) != h.bytes.size())
-    fail(path_, std::string("write failed: ") + std::strerror(errno));
+  std::setvbuf(fp_, nullptr, _IONBF, 0);
+  int err = 0;
+  if (write_all(fp_, h.bytes.data(), h.bytes.size(), err) != h.bytes.size())
+    fail(path_, std::string("write failed: ") + std::strerror(err));
+  end_ = h.bytes.size();
 }
 
 // The header's row count, rewritten in place; the file position goes back to the end.
@@ -216,14 +250,40 @@ void SignalTable::row(const double *values)
 
 void SignalTable::flush()
 {
-  if (used_ && std::fwrite(buffer_.data(), 1, used_, fp_) != used_)
-    fail(path_, std::string("write failed: ") + std::strerror(errno));
+  if (failed_) return;  // reported once; the file ends at its last whole row
+  int err = 0;
+  const std::size_t done = used_ ? write_all(fp_, buffer_.data(), used_, err) : 0;
+  if (done != used_) {
+    // A full disk (or a size limit) took part of the block: cut the file back to its last
+    // whole row, so that a reader sees only whole rows, then report.
+    failed_ = true;
+    const std::size_t row_bytes = columns_.size() * sizeof(double);
+    std::size_t whole = 0;
+    if (format_ == Format::Npy) {
+      whole = done - done % row_bytes;
+    } else {
+      const void *nl = done ? memrchr(buffer_.data(), '\n', done) : nullptr;
+      whole = nl ? static_cast<std::size_t>(static_cast<const char *>(nl) - buffer_.data()) + 1 : 0;
+    }
+    const bool cut = ::ftruncate(::fileno(fp_), static_cast<off_t>(end_ + whole)) == 0;
+    if (format_ == Format::Npy) {
+      npy_rows_ += whole / row_bytes;
+      try {
+        write_npy_rows_field();  // in place: needs no new space
+      } catch (const std::runtime_error &) {
+      }
+    }
+    used_ = 0;
+    fail(path_, std::string("write failed (") + std::strerror(err) + "): " +
+                    (cut ? "the file ends at its last whole row"
+                         : "its last row may be cut (" + std::string(std::strerror(errno)) + ")"));
+  }
+  end_ += used_;
   if (format_ == Format::Npy && used_) {
     npy_rows_ += used_ / (columns_.size() * sizeof(double));
     write_npy_rows_field();
   }
   used_ = 0;
-  std::fflush(fp_);
   last_flush_ = std::chrono::steady_clock::now();
 }
 

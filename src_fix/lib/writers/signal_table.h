@@ -40,7 +40,10 @@ class SignalTable {
 
   // One row of columns().size() values.
   void row(const double *values);
+  // Writes the buffered rows. A failed write (a full disk) cuts the file back to its last
+  // whole row and throws std::runtime_error naming the file; later calls do nothing.
   void flush();
+  bool failed() const { return failed_; }
   const std::vector<std::string> &columns() const { return columns_; }
   std::size_t rows_dropped() const { return dropped_; }
 
@@ -52,10 +55,12 @@ class SignalTable {
   std::FILE *fp_ = nullptr;
   Format format_;
   std::vector<std::string> columns_;
-  std::uint64_t npy_rows_ = 0;        // rows in the .npy file once the buffer is written
-  std::size_t npy_rows_offset_ = 0;   // where the header's row count stands
+  std::uint64_t npy_rows_ = 0;       // rows in the .npy file once the buffer is written
+  std::size_t npy_rows_offset_ = 0;  // where the header's row count stands
   std::vector<char> buffer_;
   std::size_t used_ = 0;
+  std::uint64_t end_ = 0;  // file size after the last whole row written
+  bool failed_ = false;    // a write failed: the file was cut back to whole rows
   std::size_t dropped_ = 0;
   unsigned rows_since_clock_ = 0;
   double flush_seconds_;

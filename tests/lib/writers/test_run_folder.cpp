@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -36,8 +37,10 @@ void put_text(std::string &s, const std::string &t)
   s.append(t.c_str(), t.size() + 1);
 }
 
-// A restart file of NATOMS atoms of 5 values each, in one chunk.
-std::string restart_bytes(int natoms)
+// The part of a restart file before its atoms: the header (a box of -10..10 m), 40 bytes of
+// groups, types and force fields (not checked), then the fixes' sections as LIGGGHTS writes
+// them: -1, one fix with a 32-byte state, one per-atom fix.
+std::string restart_head(int natoms, int nprocs = 1)
 {
   std::string s;
   for (int flag = 0; flag <= 48; ++flag) {
@@ -51,16 +54,39 @@ std::string restart_bytes(int natoms)
     else if (flag == 5 || flag == 23 || flag == 25 || flag == 28 || flag == 31 || flag == 34)
       put<std::int64_t>(s, flag == 23 ? natoms : 0);
     else if (flag >= 37)
-      put<double>(s, 0.5);
+      put<double>(s, flag <= 42 ? (flag % 2 ? -10.0 : 10.0) : 0.5);
     else
-      put<int>(s, 1);  // nprocs (flag 7) = 1 and every other int
+      put<int>(s, flag == 7 ? nprocs : 1);  // nprocs (flag 7) and every other int
   }
   put<int>(s, -1);
-  s += std::string(40, '\0');  // groups, types, fixes: not checked
-  put<int>(s, natoms * 5);
-  for (int a = 0; a < natoms; ++a)
+  s += std::string(40, '\0');  // groups, types, force fields: not checked
+  put<int>(s, -1);
+  put<int>(s, 1);
+  put_text(s, "signal");
+  put_text(s, "signal/table");
+  put<int>(s, 32);
+  for (int k = 0; k < 4; ++k) put<double>(s, 0.001 * k);
+  put<int>(s, 1);
+  put_text(s, "contacthistory");
+  put_text(s, "contacthistory");
+  put<int>(s, 2);
+  return s;
+}
+
+// One process's atoms: FIRST..FIRST+N-1, 5 values each (count, x, y, z, one more).
+std::string atom_chunk(int first, int n)
+{
+  std::string s;
+  put<int>(s, n * 5);
+  for (int a = first; a < first + n; ++a)
     for (int v = 0; v < 5; ++v) put<double>(s, v == 0 ? 5.0 : 0.25 * a);
   return s;
+}
+
+// A restart file of NATOMS atoms of 5 values each, in one chunk.
+std::string restart_bytes(int natoms)
+{
+  return restart_head(natoms) + atom_chunk(0, natoms);
 }
 
 std::string write(const std::string &name, const std::string &bytes)
@@ -128,6 +154,23 @@ TEST(RunFolder, LockRefusesALiveHolderAndReplacesAStaleOne)
   EXPECT_EQ(ohmdem::lock_folder(dir, 333, "h1", alive).note, "");  // no lock left
 }
 
+// A lock written on another host: its pid cannot be checked here, so even a pid that does
+// not run on this host leaves it held, and the error says why; run.json's owner test too.
+TEST(RunFolder, LockFromAnotherHostIsNeverStale)
+{
+  const std::string dir = temp_path("locked_remote");
+  ASSERT_EQ(ohmdem::make_folders(dir), "");
+  auto none_alive = [](long) { return false; };
+  EXPECT_FALSE(ohmdem::locked_by_another(dir, 7, "here"));  // no lock at all
+  EXPECT_EQ(ohmdem::lock_folder(dir, 111, "there", none_alive).error, "");
+  const auto remote = ohmdem::lock_folder(dir, 111, "here", none_alive);
+  EXPECT_NE(remote.error.find("on host there"), std::string::npos) << remote.error;
+  EXPECT_NE(remote.error.find("not judged stale"), std::string::npos) << remote.error;
+  EXPECT_EQ(remote.note, "");
+  EXPECT_TRUE(ohmdem::locked_by_another(dir, 111, "here"));
+  EXPECT_FALSE(ohmdem::locked_by_another(dir, 111, "there"));
+}
+
 TEST(RunFolder, RestartCheckAcceptsAWholeFile)
 {
   EXPECT_EQ(ohmdem::check_restart_file(write("whole.restart", restart_bytes(13))), "");
@@ -165,4 +208,54 @@ TEST(RunFolder, RestartCheckRefusesOtherFiles)
   std::memcpy(&liar[at + 4], &thirteen, 8);
   EXPECT_NE(ohmdem::check_restart_file(write("liar.restart", liar)).find("12 atoms"),
             std::string::npos);
+}
+
+// Damage in the middle of the file, where the header and the atom counts still agree: the
+// fixes' sections, an atom moved out of the box, a value that is no number.
+TEST(RunFolder, RestartCheckRefusesDamageInTheMiddle)
+{
+  const std::string whole = restart_bytes(13);
+  const std::size_t fixes = whole.find("signal/table");
+  ASSERT_NE(fixes, std::string::npos);
+  std::string size = whole;
+  const int wrong = 40;  // the fix's state size: 32
+  std::memcpy(&size[fixes + 13], &wrong, 4);
+  EXPECT_NE(ohmdem::check_restart_file(write("mid_size.restart", size)).find("fixes' sections"),
+            std::string::npos);
+  std::string id = whole;
+  id[whole.find("signal") + 6] = 'x';  // its NUL gone
+  EXPECT_NE(ohmdem::check_restart_file(write("mid_id.restart", id)).find("fixes' sections"),
+            std::string::npos);
+  const std::size_t atoms = whole.size() - 13 * 5 * 8;
+  std::string far = whole;
+  const double out = 99.0;
+  std::memcpy(&far[atoms + 8 * (5 * 4 + 2)], &out, 8);  // atom 5's y
+  EXPECT_NE(ohmdem::check_restart_file(write("mid_far.restart", far)).find("atom 5 lies outside"),
+            std::string::npos);
+  std::string nan = whole;
+  const double q = std::nan("");
+  std::memcpy(&nan[atoms + 8 * (5 * 7 + 4)], &q, 8);
+  EXPECT_NE(ohmdem::check_restart_file(write("mid_nan.restart", nan)).find("not a number"),
+            std::string::npos);
+}
+
+// write_restart FILE.% (one file per process): FILE.base with the header and the fixes,
+// FILE.0 and FILE.1 with the atoms. Whole: accepted; a part missing or cut: refused by name.
+TEST(RunFolder, RestartCheckReadsMultiFileRestarts)
+{
+  write("multi.base", restart_head(13, 2));
+  write("multi.0", atom_chunk(0, 6));
+  write("multi.1", atom_chunk(6, 7));
+  const std::string pattern = temp_path("multi.%");
+  EXPECT_EQ(ohmdem::check_restart_file(pattern), "");
+  write("multi.1", atom_chunk(6, 7).substr(0, 100));
+  EXPECT_NE(ohmdem::check_restart_file(pattern).find("multi.1, its atoms are cut"),
+            std::string::npos)
+      << ohmdem::check_restart_file(pattern);
+  write("multi.1", atom_chunk(6, 6));
+  EXPECT_NE(ohmdem::check_restart_file(pattern).find("12 atoms, its header says 13"),
+            std::string::npos);
+  std::remove(temp_path("multi.1").c_str());
+  EXPECT_NE(ohmdem::check_restart_file(pattern).find("process 1"), std::string::npos);
+  EXPECT_NE(ohmdem::check_restart_file(temp_path("none.%")).find("none.base"), std::string::npos);
 }

@@ -155,4 +155,36 @@ TEST(Npy, LyingHeadersRefusedBeforeAllocating)
             std::string::npos);
 }
 
+// An element type that is not the data's: float64 data (8 values) under a '<i4' or '<f4'
+// header of 8 elements is twice the bytes the header describes; refused, naming the type.
+// The same bytes under the right header read back.
+TEST(Npy, ElementTypeThatDoesNotMatchTheDataRefused)
+{
+  auto file = [](const std::string &name, const std::string &descr, const std::string &shape) {
+    std::string dict = "{'descr': " + descr + ", 'fortran_order': False, 'shape': " + shape + ", }";
+    dict.append((10 + dict.size() + 1 + 63) / 64 * 64 - 10 - dict.size() - 1, ' ');
+    dict += '\n';
+    std::string s("\x93NUMPY\x01\x00", 8);
+    s += static_cast<char>(dict.size() & 0xff);
+    s += static_cast<char>(dict.size() >> 8);
+    s += dict;
+    for (int k = 0; k < 8; ++k) {
+      const double v = 1.25 * k;
+      s.append(reinterpret_cast<const char *>(&v), sizeof v);
+    }
+    return test::write_temp(name, s);
+  };
+  EXPECT_EQ(read_npy(file("f8.npy", "'<f8'", "(8,)")).columns[0][3], 3.75);
+  EXPECT_NE(error_of([&] {
+              read_npy(file("i4.npy", "'<i4'", "(8,)"));
+            }).find("element type '<i4' and shape give 32 data bytes, the file holds 64"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_npy(file("f4.npy", "'<f4'", "(8,)")); }).find("'<f4'"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              read_npy(file("rec_f4.npy", "[('t', '<f4'), ('R', '<f4')]", "(4,)"));
+            }).find("does not describe the data"),
+            std::string::npos);
+}
+
 }  // namespace ohmdem::post

@@ -4,10 +4,12 @@
 // only with the shaft speed.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "core/error.h"
 #include "io/read_table.h"
+#include "report/gnuplot.h"
 #include "report/plot_figures.h"
 #include "temp_dir.h"
 
@@ -93,4 +95,31 @@ TEST(PlotFigures, SpectrogramFaultLinesFollowTheSpeedWhenKnown)
 }
 
 }  // namespace
+// The defect lines of the demo's spectra (the 6208 at 500 rad/s: FTF 31.516 Hz, 2BSF 366.18,
+// BPFO 409.71, BPFI 624.80 Hz; `ohmdem-post frequencies --bearing machado2014 --omega 500`) on
+// 0..2400 Hz: FTF's harmonics 12 px apart and 3xBPFO 20 Hz from 2xBPFI get labels at different
+// heights; labels at one height are a label's width apart.
+TEST(PlotFigures, MarkerLabelsOfCloseLinesDoNotOverlap)
+{
+  std::vector<PlotMarker> m;
+  for (int h = 1; h <= 3; ++h) {
+    m.push_back({h * 31.5158, std::to_string(h) + "xFTF"});
+    m.push_back({h * 366.184, std::to_string(h) + "x2BSF"});
+    m.push_back({h * 409.706, std::to_string(h) + "xBPFO"});
+    m.push_back({h * 624.801, std::to_string(h) + "xBPFI"});
+  }
+  const double width = 0.85 * 1100;  // as render_png
+  const std::vector<int> rows = marker_label_rows(m, 0, 2400, width);
+  ASSERT_EQ(rows.size(), m.size());
+  auto px = [&](std::size_t i) { return m[i].x / 2400 * width; };
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (std::size_t j = i + 1; j < m.size(); ++j)
+      if (rows[i] == rows[j]) {
+        EXPECT_GE(std::fabs(px(i) - px(j)), 14) << m[i].label << " and " << m[j].label;
+      }
+  EXPECT_NE(rows[0], rows[4]);   // FTF, 2xFTF
+  EXPECT_NE(rows[10], rows[7]);  // 3xBPFO, 2xBPFI
+  EXPECT_EQ(rows[3], 0);         // BPFI alone: at the top, as before
+}
+
 }  // namespace ohmdem::post

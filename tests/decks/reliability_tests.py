@@ -1,0 +1,181 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Nothing lost on a full disk or a kill (issue: nothing runs that was not asked for, nothing is
+lost; doc/run_status.md).
+
+  full_disk    the bearing deck writing into a full file system (a 256 kB tmpfs): the run
+               stops with an error naming signal.txt, run.json says "failed", signal.txt ends
+               at a whole row and ohmdem-post reads it. Needs mount (root): skipped, with the
+               reason printed, where mount is not allowed.
+  kill_resume  a run killed (SIGKILL) after a periodic restart (restart_every) was written,
+               continued from the newer whole restart file: the signal goes on, and equals
+               the uninterrupted run's byte for byte (a run split by a restart gives the single
+               run's bits: tests/decks/signal_tests.py restart_append)
+  post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
+               naming it; a table whose last row was cut is read with a warning (no engine)
+
+Usage: reliability_tests.py TEST [--exe OHMDEM] --src SOURCE_DIR --post OHMDEM_POST
+"""
+import argparse
+import glob
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+from deck_checks import check, finish
+from run_folder_tests import deck, run  # the bearing deck's command line, a run with its output
+
+SKIP = 77  # ctest SKIP_RETURN_CODE
+
+
+def status_of(folder):
+    with open(os.path.join(folder, "run.json")) as f:
+        return json.load(f)["status"]
+
+
+def test_full_disk(a, work):
+    mnt = os.path.join(work, "small_fs")
+    os.makedirs(mnt)
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=256k", "tmpfs", mnt],
+                       capture_output=True, text=True)
+    if m.returncode != 0:
+        print("SKIPPED: full_disk needs a small file system and mount is not allowed here "
+              f"({(m.stderr or m.stdout).strip()}); the writer's cut is tested without one by "
+              "signal.SignalTableFull.*")
+        sys.exit(SKIP)
+    try:
+        out = os.path.join(mnt, "run")
+        r = run(deck(a, "-var", "out", out, "-var", "tend", "0.03"), work)
+        sig = os.path.join(out, "signal.txt")
+        check(r.returncode != 0 and f"signal table '{sig}': write failed" in r.stdout,
+              f"full_disk: the run stops naming {sig} (exit {r.returncode}): "
+              f"{[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
+        check(status_of(out) == "failed", f"full_disk: run.json status {status_of(out)}")
+        with open(sig, "rb") as f:
+            data = f.read()
+        check(len(data) > 10000 and data.endswith(b"\n"),
+              f"full_disk: signal.txt holds {len(data)} bytes and ends at a whole row")
+        rows = [l.split() for l in data.decode().splitlines()[1:]]
+        check(all(len(x) == len(rows[0]) for x in rows), f"full_disk: all {len(rows)} rows whole")
+        p = run([a.post, "stats", sig, "--column", "R", "--from", "0"], work)
+        check(p.returncode == 0 and "WARNING" not in p.stdout,
+              f"full_disk: ohmdem-post stats reads it (exit {p.returncode})")
+    finally:
+        subprocess.run(["umount", mnt])
+
+
+def newest_restarts(out):
+    return sorted(glob.glob(os.path.join(out, "restart.[ab]")), key=os.path.getmtime,
+                  reverse=True)
+
+
+def test_kill_resume(a, work):
+    common = ["-var", "tend", "0.03", "-var", "restart_every", "3000", "-screen", "none"]
+    full = os.path.join(work, "full")
+    r = run(deck(a, "-var", "out", full, *common), work)
+    check(r.returncode == 0, f"kill_resume: the uninterrupted run (exit {r.returncode})")
+    killed = os.path.join(work, "killed")
+    p = subprocess.Popen(deck(a, "-var", "out", killed, *common), cwd=work,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    t0 = time.time()
+    while len(newest_restarts(killed)) < 2 and p.poll() is None and time.time() - t0 < 120:
+        time.sleep(0.005)
+    p.send_signal(signal.SIGKILL)
+    p.wait()
+    files = newest_restarts(killed)
+    check(len(files) == 2, f"kill_resume: killed after the restart files {files}")
+    check(status_of(killed) == "running", "kill_resume: run.json of the killed run: running")
+    with open(os.path.join(killed, "signal.txt")) as f:
+        rows_killed = sum(1 for l in f if not l.startswith("#"))
+    with open(os.path.join(full, "signal.txt")) as f:
+        rows_full = sum(1 for l in f if not l.startswith("#"))
+    check(0 < rows_killed < rows_full, f"kill_resume: the kill left {rows_killed} of {rows_full} "
+          "rows (a run stopped mid-way)")
+    # The newer file; a kill while it was written leaves it cut: then the other one.
+    for restart in files:
+        r = run(deck(a, "-var", "out", killed, "-var", "start", "restart",
+                     "-var", "restart_file", restart, *common[:-2]), work)
+        if r.returncode == 0 or "restart" not in r.stdout or "cut" not in r.stdout:
+            break
+        print(f"note: {restart} was cut by the kill; continuing from the other")
+    check(r.returncode == 0, f"kill_resume: continued from {os.path.basename(restart)} "
+          f"(exit {r.returncode})")
+    check("stale lock" in r.stdout, "kill_resume: the killed run's lock is found stale")
+    check(status_of(killed) == "finished", "kill_resume: run.json finished after the resume")
+    with open(os.path.join(full, "signal.txt"), "rb") as f:
+        want = f.read()
+    with open(os.path.join(killed, "signal.txt"), "rb") as f:
+        have = f.read()
+    check(len(want) > 0 and have == want,
+          f"kill_resume: killed + resumed signal.txt identical to the uninterrupted run's "
+          f"({len(have)} and {len(want)} bytes)")
+    # Writing the restart files changes nothing in the run: the same signal without them.
+    plain = os.path.join(work, "plain")
+    r = run(deck(a, "-var", "out", plain, "-var", "tend", "0.03", "-var", "restart_every", "0"),
+            work)
+    with open(os.path.join(plain, "signal.txt"), "rb") as f:
+        check(r.returncode == 0 and f.read() == want and not newest_restarts(plain),
+              "kill_resume: restart_every 0 writes no restart file and the same signal.txt")
+
+
+def test_post_full(a, work):
+    sig = os.path.join(work, "signal.txt")
+    with open(sig, "w") as f:
+        f.write("# time R n\n")
+        for i in range(4000):
+            f.write(f"{i * 1e-5!r} {1.39 + 1e-3 * ((i * 7919) % 13)!r} 13\n")
+        f.write("0.04 1.3")  # the last row cut: no line break, two values of three
+    r = run([a.post, "stats", sig, "--column", "R", "--from", "0"], work)
+    check(r.returncode == 0 and "WARNING" in r.stdout and "dropped the last row" in r.stdout,
+          f"post_full: a cut last row is dropped with a warning (exit {r.returncode}): "
+          f"{r.stdout.splitlines()[:2]}")
+    # the same in an .npy table (fix signal/table format npy): 5 bytes of a 16-byte row
+    import numpy as np
+    rows = np.zeros(4000, dtype=[("time", "<f8"), ("R", "<f8")])
+    rows["time"] = np.arange(4000) * 1e-5
+    rows["R"] = 1.39 + 1e-3 * ((np.arange(4000) * 7919) % 13)
+    npy = os.path.join(work, "signal.npy")
+    np.save(npy, rows)
+    with open(npy, "ab") as f:
+        f.write(b"\0" * 5)
+    r = run([a.post, "stats", npy, "--column", "R", "--from", "0"], work)
+    check(r.returncode == 0 and "dropped the last row" in r.stdout and "5 of its 16 bytes"
+          in r.stdout, f"post_full: .npy cut last row dropped with a warning (exit {r.returncode})")
+    if not os.path.exists("/dev/full"):
+        print("SKIPPED: no /dev/full on this system")
+        sys.exit(SKIP)
+    with open("/dev/full", "w") as full:
+        r = subprocess.run([a.post, "stats", sig, "--column", "R", "--from", "0"], stdout=full,
+                           stderr=subprocess.PIPE, text=True)
+    check(r.returncode == 1 and "writing standard output failed" in r.stderr,
+          f"post_full: stdout full: exit {r.returncode}: {r.stderr.strip()}")
+    for cmd in (["stats", sig], ["spectrum", sig], ["frequencies", "--bearing", "machado2014",
+                                                    "--rpm", "1000"]):
+        r = run([a.post, *cmd, "--output", "/dev/full"], work)
+        check(r.returncode == 1 and "writing '/dev/full' failed" in r.stdout,
+              f"post_full: {cmd[0]} --output /dev/full: exit {r.returncode}: "
+              f"{r.stdout.strip().splitlines()[-1:]}")
+    r = run([a.post, "help", "stats"], work)
+    check(r.returncode == 0, "post_full: help still exits 0")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("test")
+    ap.add_argument("--exe")
+    ap.add_argument("--src", required=True)
+    ap.add_argument("--post", required=True)
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory(prefix="ohmdem_rel_") as work:
+        {"full_disk": lambda: test_full_disk(a, work),
+         "kill_resume": lambda: test_kill_resume(a, work),
+         "post_full": lambda: test_post_full(a, work)}[a.test]()
+    finish()
+
+
+if __name__ == "__main__":
+    main()
