@@ -65,6 +65,13 @@ int run_diagnose(const std::vector<std::string> &argv)
            "sampling rate of a --baseline without time stamps when it is not the record's: "
            "refused if it differs (resample it first with acquire)");
   a.flag("--no-size", "skip the defect size estimate");
+  a.option("--load", "MODE",
+           "how the bearing is loaded (force, fixed or radial; default: run.json's load): "
+           "the pulse-area size needs it");
+  a.option("--pulse-height", "H",
+           "relative jump of the level when the defect's ball loses contact (at the load "
+           "zone's centre under a radial load), from a simulation of the scene; default under "
+           "a balanced load: 1/(Nb-1)");
   a.flag("--keep-sliding",
          "analyse the sliding phase too (default: start at t_sliding_end "
          "of run.json)");
@@ -93,6 +100,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   o.kurtogram_levels = levels_option(a);
   if (a.has("--band")) o.band = band_option(a);
   o.estimate_size = !a.has("--no-size");
+  o.load = a.has("--load") ? a.get("--load") : meta.load.value_or("");
+  if (!o.load.empty() && o.load != "force" && o.load != "fixed" && o.load != "radial")
+    throw Error("diagnose: --load must be force, fixed or radial, got '" + o.load + "'");
+  if (a.has("--pulse-height"))
+    o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
+  if (sa) o.shaft_angle = &sa->theta;
   o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
   Signal base;
   if (a.has("--baseline")) {
@@ -123,6 +136,8 @@ int run_diagnose(const std::vector<std::string> &argv)
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   name_flags(d.detection);
+  d.located.method = flag_named(d.located.method);
+  d.located.height_source = flag_named(d.located.height_source);
   if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);

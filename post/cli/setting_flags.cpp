@@ -41,6 +41,8 @@ const SettingFlags &setting_flags()
       {"diagnose.harmonics", "--harmonics"},
       {"diagnose.tolerance", "--tolerance"},
       {"diagnose.baseline", "--baseline"},
+      {"diagnose.load", "--load"},
+      {"diagnose.pulse_height", "--pulse-height"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},
       {"geometry.dp", "--dp"},
