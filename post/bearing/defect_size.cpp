@@ -74,8 +74,13 @@ double race_radius(const std::string &defect, const BearingGeometry &g)
 
 }  // namespace
 
-LocatedDefect locate_defect(const Signal &s, const Diagnosis &d, const DiagnoseOptions &o)
+LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
 {
+  Diagnosis d = found;
+  if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
+    d.defect = o.assume_defect;
+    d.frequency_hz = o.assume_defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
+  }
   LocatedDefect l;
   const BearingGeometry &g = o.geometry;
   l.depth_note =
@@ -117,6 +122,8 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &d, const DiagnoseO
   ps.shaft_angle = o.shaft_angle;
   const PulseAreaSize a = size_from_pulse_area(s.x, s.rate, s.t0, d.frequency_hz, d.defect, ps);
   l.method = a.note;
+  if (d.defect != found.defect)
+    l.method = "assumed " + d.defect + " defect ({diagnose.assume_defect}); " + l.method;
   l.passes = a.passes;
   if (!a.valid) return l;
   const double to_deg = 180 / kPi;

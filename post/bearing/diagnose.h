@@ -32,6 +32,9 @@ struct DiagnoseOptions {
   std::string load;
   double pulse_height = 0;
   const std::vector<double> *shaft_angle = nullptr;
+  // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
+  // pulses) whatever the identification says; empty: the identified defect only
+  std::string assume_defect;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
 };

@@ -68,6 +68,9 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--load", "MODE",
            "how the bearing is loaded (force, fixed or radial; default: run.json's load): "
            "the pulse-area size needs it");
+  a.option("--assume-defect", "KIND",
+           "size and place this race defect (inner or outer, at its kinematic frequency) "
+           "even when the identification names another or none");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -106,6 +109,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
+  if (a.has("--assume-defect")) {
+    o.assume_defect = a.get("--assume-defect");
+    if (o.assume_defect != "inner" && o.assume_defect != "outer")
+      throw Error("diagnose: --assume-defect must be inner or outer, got '" + o.assume_defect +
+                  "'");
+  }
   o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
   Signal base;
   if (a.has("--baseline")) {

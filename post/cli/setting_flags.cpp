@@ -42,6 +42,7 @@ const SettingFlags &setting_flags()
       {"diagnose.tolerance", "--tolerance"},
       {"diagnose.baseline", "--baseline"},
       {"diagnose.load", "--load"},
+      {"diagnose.assume_defect", "--assume-defect"},
       {"diagnose.pulse_height", "--pulse-height"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},

@@ -97,9 +97,10 @@ void located_json(Json &j, const Diagnosis &d)
   const bool area = l.valid;
   j.set("size_deg", area ? Json(l.size_deg) : d.size.valid ? Json(d.size.size_deg) : Json());
   j.set("size_interval_deg", area ? pair_or_null(l.size_lo_deg, l.size_hi_deg) : Json());
-  j.set("size_method", area           ? l.method
-                       : d.size.valid ? "pulse width (" + d.size.method + ")"
-                                      : l.method);
+  j.set("size_method", area ? l.method
+                       : d.size.valid
+                           ? "pulse width (" + d.size.method + "), no interval: " + l.method
+                           : l.method);
   j.set("size_arc_m", area ? Json(l.arc_m) : d.size.valid ? Json(d.size.arc_m) : Json());
   j.set("pulse_height_rel", area ? Json(l.pulse_height) : Json());
   j.set("pulse_height_source", area ? Json(l.height_source) : Json());
@@ -249,16 +250,17 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
          " at 95 %, arc " + format_number(d.located.arc_m * 1e3, 4) + " mm (" + d.located.method +
          "; jump " + format_number(d.located.pulse_height, 4) + ", " + d.located.height_source +
          ")");
-  else if (chosen && !d.located.method.empty())
+  else if (chosen && !d.located.method.empty() && d.located.method != "not applicable")
     line("size (area):   n/a (" + d.located.method + ")");
   if (std::isfinite(d.located.position_deg))
     line("position:      " +
          interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
                        "deg") +
          " from the " + d.located.position_reference);
-  else if (chosen && !d.located.position_note.empty())
+  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
     line("position:      " + d.located.position_note);
-  if (chosen && !d.located.depth_note.empty()) line("depth:         " + d.located.depth_note);
+  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
+    line("depth:         " + d.located.depth_note);
   line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
        ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
        std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);

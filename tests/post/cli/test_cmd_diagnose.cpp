@@ -49,6 +49,45 @@ TEST(Cli, DiagnoseOurRunFromItsMetadata)
   }
 }
 
+// Issue 26: the size with its interval from the pulse area, in every format. The synthetic run
+// (run.json: load force, 13 balls) holds rectangles of 1/12 of the level lasting a 1 deg
+// crossing: the theory's jump 1/(Nb-1), so the area gives 1 deg.
+TEST(Cli, DiagnoseSizeIntervalAndPosition)
+{
+  for (const char *kind : {"inner", "outer"}) {
+    const std::string dir = make_run_dir(std::string("run_area_") + kind, kind);
+    const CliRun r = run("diagnose " + dir + "/signal.txt --format json");
+    ASSERT_EQ(r.status, 0) << r.out;
+    const Json j = Json::parse(r.out, "diagnose output");
+    ASSERT_TRUE(j.find("size_deg") && j.find("size_deg")->is_number()) << r.out;
+    EXPECT_NEAR(j.find("size_deg")->number(), 1.0, 0.03) << kind;
+    const Json *iv = j.find("size_interval_deg");
+    ASSERT_TRUE(iv && iv->is_array() && iv->size() == 2);
+    EXPECT_LE((*iv)[0].number(), j.find("size_deg")->number());
+    EXPECT_GE((*iv)[1].number(), j.find("size_deg")->number());
+    // a balanced load: every pass looks the same, the position is not determined
+    EXPECT_TRUE(j.find("position_deg")->is_null());
+    EXPECT_TRUE(j.find("position_interval_deg")->is_null());
+    EXPECT_TRUE(j.find("position_reference")->is_null());
+    EXPECT_NE(j.find("position_note")->string().find("not determined"), std::string::npos);
+    EXPECT_NE(j.find("depth")->string().find("not determined"), std::string::npos);
+  }
+  const std::string dir = make_run_dir("run_area_table", "inner");
+  const CliRun t = run("diagnose " + dir + "/signal.txt");
+  EXPECT_NE(t.out.find("size (area):   "), std::string::npos) << t.out;
+  const CliRun csv = run("diagnose " + dir + "/signal.txt --format csv");
+  EXPECT_NE(csv.out.find(",size_area_deg,size_low_deg,size_high_deg,position_deg,"),
+            std::string::npos);
+  // a radial load needs the model's jump: the flag is named, nothing is guessed
+  const CliRun radial = run("diagnose " + dir + "/signal.txt --load radial --format json");
+  const Json jr = Json::parse(radial.out, "diagnose output");
+  EXPECT_NE(jr.find("size_method")->string().find("--pulse-height"), std::string::npos);
+  EXPECT_TRUE(jr.find("size_interval_deg")->is_null());
+  const CliRun bad = run("diagnose " + dir + "/signal.txt --load sideways 2>&1");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("--load must be force, fixed or radial"), std::string::npos);
+}
+
 TEST(Cli, DiagnoseCsvAndTable)
 {
   const std::string dir = make_run_dir("run_csv", "inner");
