@@ -187,6 +187,17 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
     e.note = "no model pulse height";
     return e;
   }
+  // a level record (R, I R) sits well above zero and jumps up; a vibration record swings about
+  // zero: its pulse area means nothing
+  double mean = 0, var = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  for (double v : x) var += (v - mean) * (v - mean);
+  const double level = median(x) - s.level_offset;
+  if (!(level > 0) || level < 2 * std::sqrt(var / static_cast<double>(x.size()))) {
+    e.note = "not a level record (R or I R): the pulse area needs a level well above zero";
+    return e;
+  }
   const PassAreas p = pass_areas(x, rate, t0, refine_repetition(x, rate, f), s.level_offset);
   const std::size_t n = p.rel_area.size();
   e.passes = n;

@@ -44,7 +44,9 @@ int run_diagnose(const std::vector<std::string> &argv)
       "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
       "harmonic, else 'unidentified' if detection fired (a fault of unknown type), else\n"
       "'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
-      "estimated from the pulse widths of a level signal such as R(t).\n"
+      "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
+      "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
+      "from the shaft angle column under a radial load.\n"
       "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);

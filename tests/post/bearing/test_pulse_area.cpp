@@ -92,6 +92,18 @@ TEST(PulseArea, OuterDefectUnderRadialLoadIsALowerBound)
   EXPECT_TRUE(std::isinf(e.tau_hi_s));
 }
 
+TEST(PulseArea, RefusesARecordSwingingAboutZero)
+{
+  // an accelerometer's record: the same pulses about a zero level
+  Signal r = record(60e-6, 409.7, 2e4);
+  for (double &v : r.x) v -= 0.05;
+  PulseAreaSettings s;
+  s.rel_height = 0.45;
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  EXPECT_FALSE(e.valid);
+  EXPECT_NE(e.note.find("not a level record"), std::string::npos);
+}
+
 TEST(PulseArea, NoModelHeightNoSize)
 {
   const Signal r = record(60e-6, 409.7, 2e4);
