@@ -30,6 +30,8 @@ DEPTH = 5e-5
 RATES = [1e4, 2e4, 5e4]
 NOISE = ["low", "high"]
 CALIBRATION = ("outer", 0.7, "radial", 90.0)
+# the model's curve: the same scene at sizes none of the cases has, 0.15 s at 1 MHz each
+CURVE_SIZES = [0.2, 0.4, 0.7, 1.5, 2.5, 4.0]
 
 
 def cases(quick):
@@ -72,6 +74,28 @@ def calibrate(out):
     return float(np.median(jumps))
 
 
+def model_curve(out, defect, load):
+    """The fixed-window pulse area over the level against the size, from 1 MHz simulations of
+    the scene (pit at the load zone's centre); cut where the area stops increasing."""
+    rows = []
+    for size in CURVE_SIZES:
+        sim = simulate(out, (defect, size, load, 90.0), T_FROM + 0.15)
+        r = common.post(["diagnose", "--format", "json", "--column", "R", "--metadata",
+                         os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect",
+                         defect, "--pulse-height", "1", os.path.join(sim, "signal.txt")],
+                        who="sizing")
+        a = json.loads(r.stdout).get("pulse_window_rel_area_s")
+        if a is None or (rows and a <= rows[-1][1]):
+            break
+        rows.append((size, a))
+    path = os.path.join(out, f"curve_{defect}_{load}.txt")
+    with open(path, "w") as f:
+        f.write(f"# {defect} defect, {load} load: size_deg, fixed-window pulse area / level (s)\n")
+        for size, a in rows:
+            f.write(f"{size:g} {a!r}\n")
+    return path, rows
+
+
 def acquire_with_angle(sim, load, rate, noise, dest):
     """The electrical channel acquired, plus the shaft angle the deck's angle_inner holds. The
     fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range."""
@@ -93,15 +117,33 @@ def acquire_with_angle(sim, load, rate, noise, dest):
     os.remove(tmp)
 
 
-def diagnose(sim, acq, defect, load, height):
+def diagnose(sim, acq, defect, load, height, curve=None):
     """The size and place of the run's defect (--assume-defect: the study measures the sizing;
     the identification is in the CSV)."""
     args = ["diagnose", "--format", "json", "--column", "V", "--metadata",
             os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect", defect, acq]
-    if load == "radial":
+    if curve:
+        args += ["--size-curve", curve]
+    elif load == "radial":
         args += ["--pulse-height", repr(height)]
     r = common.post(args, who="sizing", allow_fail=True)
     return json.loads(r.stdout) if r.returncode == 0 else {"defect": "error"}
+
+
+def row(d, case, rate, noise, method):
+    """One CSV row: the estimate against the size and place the deck was given."""
+    defect, size, load, position = case
+    est = d.get("size_deg") if d.get("size_interval_deg") else None
+    iv = d.get("size_interval_deg") or [None, None]
+    covers = est is not None and iv[0] is not None and iv[0] <= size and \
+        (iv[1] is None or size <= iv[1])
+    pos = d.get("position_deg") if est is not None else None
+    perr = None if pos is None else (pos - position + 180) % 360 - 180
+    return {"defect": defect, "size_deg": size, "load": load, "position_deg": position,
+            "rate_hz": rate, "noise": noise, "method": method, "diagnosis": d["defect"],
+            "size_deg_est": est, "low": iv[0], "high": iv[1],
+            "error_pct": None if est is None else 100 * (est / size - 1), "covers": covers,
+            "position_est_deg": pos, "position_error_deg": perr}
 
 
 def summary(rows):
@@ -109,10 +151,12 @@ def summary(rows):
     coverage of the interval (%), largest inner position error (deg)."""
     out = {}
     for r in rows:
-        out.setdefault((r["load"], r["defect"], r["rate_hz"], r["noise"]), []).append(r)
-    lines = ["| load | defect | rate (Hz) | noise | sized | median abs error | largest abs error | "
-             "interval covers | largest position error (deg) |", "|---" * 9 + "|"]
-    for (load, defect, rate, noise), rs in sorted(out.items()):
+        out.setdefault((r["method"], r["load"], r["defect"], r["rate_hz"], r["noise"]),
+                       []).append(r)
+    lines = ["| size from | load | defect | rate (Hz) | noise | sized | median abs error | "
+             "largest abs error | interval covers | largest position error (deg) |",
+             "|---" * 10 + "|"]
+    for (method, load, defect, rate, noise), rs in sorted(out.items()):
         sized = [r for r in rs if r["size_deg_est"] is not None]
         errs = sorted(abs(r["error_pct"]) for r in sized)
         cover = [r["covers"] for r in sized]
@@ -121,7 +165,7 @@ def summary(rows):
         big = f"{errs[-1]:.1f} %" if errs else "-"
         cov = f"{100 * sum(cover) / len(cover):.0f} %" if cover else "-"
         p = f"{max(pos):.1f}" if pos else "-"
-        lines.append(f"| {load} | {defect} | {rate:g} | {noise} | {len(sized)}/{len(rs)} | {med} | "
+        lines.append(f"| {method} | {load} | {defect} | {rate:g} | {noise} | {len(sized)}/{len(rs)} | {med} | "
                      f"{big} | {cov} | {p} |")
     return lines
 
@@ -133,6 +177,8 @@ def main(argv):
     a = ap.parse_args(argv)
     os.makedirs(os.path.join(a.out, "acq"), exist_ok=True)
     height = calibrate(a.out)
+    curves = {(d, l): model_curve(a.out, d, l) for d in ("inner", "outer")
+              for l in ("radial", "fixed")}
     rows = []
     for case in cases(a.quick):
         defect, size, load, position = case
@@ -142,19 +188,10 @@ def main(argv):
                 acq = os.path.join(a.out, "acq", f"{defect}_{size:g}_{load}_p{position:g}_"
                                    f"r{rate:g}_{noise}.txt")
                 acquire_with_angle(sim, load, rate, noise, acq)
-                d = diagnose(sim, acq, defect, load, height)
-                est = d.get("size_deg") if d.get("size_interval_deg") else None
-                iv = d.get("size_interval_deg") or [None, None]
-                covers = est is not None and iv[0] <= size and (iv[1] is None or size <= iv[1])
-                pos = d.get("position_deg") if est is not None else None
-                perr = None if pos is None else (pos - position + 180) % 360 - 180
-                rows.append({"defect": defect, "size_deg": size, "load": load,
-                             "position_deg": position, "rate_hz": rate, "noise": noise,
-                             "diagnosis": d["defect"], "size_deg_est": est,
-                             "low": iv[0], "high": iv[1],
-                             "error_pct": None if est is None else 100 * (est / size - 1),
-                             "covers": covers, "position_est_deg": pos,
-                             "position_error_deg": perr})
+                for method in ("jump", "curve"):
+                    curve = curves[(defect, load)][0] if method == "curve" else None
+                    rows.append(row(diagnose(sim, acq, defect, load, height, curve), case, rate,
+                                    noise, method))
     cols = list(rows[0].keys())
     with open(os.path.join(a.out, "sizing.csv"), "w") as f:
         f.write(",".join(cols) + "\n")
@@ -163,7 +200,14 @@ def main(argv):
                              else str(r[c]) for c in cols) + "\n")
     lines = [f"# Sizing study", "", f"Regenerated by `studies/sizing.py {'--quick ' if a.quick else ''}"
              f"OUT`. Pits {DEPTH * 1e6:g} um deep; radial-load pulse height {height:.4f} (calibration "
-             f"run: {CALIBRATION[0]} {CALIBRATION[1]} deg, 1 MHz); fixed load: 1/(Nb-1).", ""]
+             f"run: {CALIBRATION[0]} {CALIBRATION[1]} deg, 1 MHz); fixed load: 1/(Nb-1). "
+             "'jump': area / (jump x level); 'curve': the fixed-window area on the model's curve "
+             "(1 MHz runs of the scene at " + ", ".join(f"{x:g}" for x in CURVE_SIZES) +
+             " deg; the curves below, cut where the area stops increasing).", ""]
+    for (d, l), (path, pts) in sorted(curves.items()):
+        lines.append(f"- curve {d} {l}: " + ", ".join(f"{sz:g} deg -> {ar * 1e6:.2f} us"
+                                                       for sz, ar in pts))
+    lines.append("")
     lines += summary(rows)
     with open(os.path.join(a.out, "sizing.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -101,7 +101,10 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     return l;
   }
   const bool radial = o.load == "radial";
-  if (o.pulse_height > 0) {
+  const bool curve = !o.curve_size_deg.empty();
+  if (curve) {
+    l.height_source = "the model's curve ({diagnose.size_curve})";
+  } else if (o.pulse_height > 0) {
     l.pulse_height = o.pulse_height;
     l.height_source = "{diagnose.pulse_height}";
   } else if (o.load == "force" || o.load == "fixed") {
@@ -120,11 +123,14 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   ps.load_zone = radial;
   ps.fr = o.fr;
   ps.shaft_angle = o.shaft_angle;
+  ps.curve_size_deg = o.curve_size_deg;
+  ps.curve_rel_area_s = o.curve_rel_area_s;
   const PulseAreaSize a = size_from_pulse_area(s.x, s.rate, s.t0, d.frequency_hz, d.defect, ps);
   l.method = a.note;
   if (d.defect != found.defect)
     l.method = "assumed " + d.defect + " defect ({diagnose.assume_defect}); " + l.method;
   l.passes = a.passes;
+  l.window_rel_area_s = a.window_rel_area_s;
   if (!a.valid) return l;
   const double to_deg = 180 / kPi;
   const auto angle = [&](double tau) { return defect_angle(d.defect, d.frequency_hz, tau, g.nb); };
@@ -133,6 +139,12 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   l.size_lo_deg = angle(a.tau_lo_s) * to_deg;
   if (std::isfinite(a.tau_hi_s)) l.size_hi_deg = angle(a.tau_hi_s) * to_deg;
   l.arc_m = angle(a.tau_s) * race_radius(d.defect, g);
+  if (curve) {  // the size read off the model's curve
+    l.size_deg = a.size_deg;
+    l.size_lo_deg = a.size_lo_deg;
+    l.size_hi_deg = a.size_hi_deg;
+    l.arc_m = a.size_deg * kPi / 180 * race_radius(d.defect, g);
+  }
   if (d.defect == "inner") {
     if (!radial)
       l.position_note = "not determined: under a balanced load every pass looks the same";

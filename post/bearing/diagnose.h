@@ -35,6 +35,8 @@ struct DiagnoseOptions {
   // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
   // pulses) whatever the identification says; empty: the identified defect only
   std::string assume_defect;
+  // the model's curve (bearing/pulse_area.h): sizes (deg) and fixed-window areas / level (s)
+  std::vector<double> curve_size_deg, curve_rel_area_s;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
 };
@@ -91,6 +93,7 @@ struct LocatedDefect {
   double pulse_height = 0;    // the relative jump used
   std::string height_source;  // "theory: ..." or "{diagnose.pulse_height}"
   std::size_t passes = 0;
+  double window_rel_area_s = std::numeric_limits<double>::quiet_NaN();  // for the model's curve
   double position_deg = std::numeric_limits<double>::quiet_NaN();
   double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
   double position_hi_deg = std::numeric_limits<double>::quiet_NaN();

@@ -27,7 +27,7 @@ double wrap_deg(double a)
 // average's bins beyond 2 % of its peak deviation either way (the filter's undershoot belongs
 // to the pulse's area), padded by two samples each side.
 bool pulse_window(const std::vector<double> &x, double period, double &lo, double &hi,
-                  double &centre)
+                  double &centre, double &start)
 {
   const auto bins = static_cast<std::size_t>(std::floor(period));
   std::vector<double> sum(bins, 0.0);
@@ -60,6 +60,7 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   const double width = static_cast<double>(r - l + 1 + 4);
   if (width > 0.6 * static_cast<double>(bins)) return false;
   lo = static_cast<double>(l - 2) / static_cast<double>(bins);
+  start = static_cast<double>(l) / static_cast<double>(bins);  // the first bin beyond 2 %
   hi = lo + width / static_cast<double>(bins);
   // the pulse's centroid (its time plus the filter's delay at 0 Hz): the pass's time
   double m0 = 0, m1 = 0;
@@ -140,16 +141,63 @@ ZoneFit zone_fit(const ZoneTable &t, const std::vector<double> &r, std::size_t s
   return best;
 }
 
+// Linear interpolation of the size at area a on the model's curve; NaN outside it.
+double size_on_curve(const PulseAreaSettings &s, double a)
+{
+  const std::vector<double> &x = s.curve_rel_area_s, &y = s.curve_size_deg;
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (a >= x[i - 1] && a <= x[i])
+      return y[i - 1] + (y[i] - y[i - 1]) * (a - x[i - 1]) / (x[i] - x[i - 1]);
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+PulseAreaSize from_curve(PulseAreaSize e, const PulseAreaSettings &s, double tq)
+{
+  if (!std::isfinite(e.window_rel_area_s)) {
+    e.note = "the fixed window does not fit the defect's period";
+    return e;
+  }
+  const double a = e.window_rel_area_s, d = tq * e.window_se_s;
+  e.size_deg = size_on_curve(s, a);
+  e.size_lo_deg = size_on_curve(s, a - d);
+  e.size_hi_deg = size_on_curve(s, a + d);
+  e.valid = std::isfinite(e.size_deg);
+  e.note = e.valid ? "fixed-window pulse area on the model's curve, " + std::to_string(e.passes) +
+                         " passes"
+                   : "the pulse area lies beyond the model's curve";
+  return e;
+}
+
 }  // namespace
 
 PassAreas pass_areas(const std::vector<double> &x, double rate, double t0, double f,
-                     double level_offset)
+                     double level_offset, bool fixed)
 {
   PassAreas p;
   const double period = rate / f;
-  double lo = 0, hi = 0, centre = 0;
-  if (period < 4 || !pulse_window(x, period, lo, hi, centre)) return p;
+  double lo = 0, hi = 0, centre = 0, start = 0;
+  if (period < 4 || !pulse_window(x, period, lo, hi, centre, start)) return p;
   const auto n = static_cast<long>(x.size());
+  if (fixed) {
+    const auto before = static_cast<long>(std::lround(kWindowBefore * rate));
+    const auto after = static_cast<long>(std::lround(kWindowAfter * rate));
+    const auto lev = std::max(1L, static_cast<long>(std::lround(kWindowLevel * rate)));
+    if (static_cast<double>(before + after + lev) > 0.95 * period) return p;
+    for (long j = -1;; ++j) {
+      const auto c = static_cast<long>(std::lround((static_cast<double>(j) + start) * period));
+      const long a = c - before, b = c + after;
+      if (a - lev < 0) continue;
+      if (b >= n) break;
+      double level = 0, area = 0;
+      for (long i = a - lev; i < a; ++i) level += x[static_cast<std::size_t>(i)];
+      level /= static_cast<double>(lev);
+      for (long i = a; i <= b; ++i) area += x[static_cast<std::size_t>(i)] - level;
+      if (level - level_offset == 0) continue;
+      p.rel_area.push_back(area / rate / (level - level_offset));
+      p.time.push_back(t0 + static_cast<double>(c) / rate);
+    }
+    return p;
+  }
   for (long j = -1;; ++j) {
     const auto a = static_cast<long>(std::ceil((static_cast<double>(j) + lo) * period));
     const auto b = static_cast<long>(std::floor((static_cast<double>(j) + hi) * period));
@@ -183,7 +231,8 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
                                    const std::string &defect, const PulseAreaSettings &s)
 {
   PulseAreaSize e;
-  if (!(s.rel_height > 0)) {
+  const bool curve = !s.curve_size_deg.empty();
+  if (!(s.rel_height > 0) && !curve) {
     e.note = "no model pulse height";
     return e;
   }
@@ -198,9 +247,21 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
     e.note = "not a level record (R or I R): the pulse area needs a level well above zero";
     return e;
   }
-  const PassAreas p = pass_areas(x, rate, t0, refine_repetition(x, rate, f), s.level_offset);
+  const double f_ref = refine_repetition(x, rate, f);
+  const PassAreas p = pass_areas(x, rate, t0, f_ref, s.level_offset);
   const std::size_t n = p.rel_area.size();
   e.passes = n;
+  const PassAreas w = pass_areas(x, rate, t0, f_ref, s.level_offset, true);
+  if (w.rel_area.size() >= 8) {
+    double sum = 0, sum2 = 0;
+    for (double r : w.rel_area) {
+      sum += r;
+      sum2 += r * r;
+    }
+    const double nn = static_cast<double>(w.rel_area.size());
+    e.window_rel_area_s = sum / nn;
+    e.window_se_s = std::sqrt(std::max(sum2 - sum * sum / nn, 0.0) / (nn - 1) / nn);
+  }
   if (n < 8) {
     e.note =
         "fewer than 8 defect passes with a pulse window (rate / pulse frequency < 4, or no "
@@ -249,6 +310,7 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
     e.note = "pulse area, mean of " + std::to_string(n) + " passes";
   }
   e.rel_area_s = c;
+  if (curve) return from_curve(e, s, tq);
   e.tau_s = c / s.rel_height;
   e.tau_lo_s = std::max(c - tq * se, 0.0) / s.rel_height;
   e.tau_hi_s = (c + tq * se) / s.rel_height;

@@ -29,14 +29,32 @@ struct PulseAreaSettings {
   // shaft angle (rad) per sample, from the record (angle column or tachometer), else null:
   // an inner defect's position on the ring is then not determined
   const std::vector<double> *shaft_angle = nullptr;
+  // The model's curve from simulations of the same scene (issue 26): the mean over the passes
+  // of the fixed-window area / level (window_rel_area_s below) against the size (deg), sizes
+  // increasing, areas increasing. When given, the size is read off it (rel_height unused).
+  std::vector<double> curve_size_deg, curve_rel_area_s;
 };
+
+// The fixed window: from 100 us before the pulse's start (the folded average's first bin beyond
+// 2 % of its peak) to 500 us after it, the level the mean of the 200 us before the window. The
+// simulated pulses do not end at the exit (the ring settles, the level dips and recovers), so
+// the statistic must not depend on where the record's own pulse window ends. (A window of 0.6
+// defect periods did worse: it takes in more of the load zone's modulation.)
+constexpr double kWindowBefore = 100e-6, kWindowAfter = 500e-6, kWindowLevel = 200e-6;
 
 struct PulseAreaSize {
   bool valid = false;
   std::string note;                   // how, or why not
   double tau_s = 0;                   // the pulse duration area / (h level)
   double tau_lo_s = 0, tau_hi_s = 0;  // its interval (hi = +inf when only a lower bound)
-  double rel_area_s = 0;              // mean (or load-zone peak) of area / level over the passes
+  double rel_area_s = 0;
+  // mean and standard error over the passes of the fixed-window area / level (s)
+  double window_rel_area_s = std::numeric_limits<double>::quiet_NaN(), window_se_s = 0;
+  // from the model's curve (NaN without one; hi NaN: beyond the curve)
+  double size_deg = std::numeric_limits<double>::quiet_NaN();
+  double size_lo_deg = std::numeric_limits<double>::quiet_NaN();
+  double size_hi_deg = std::numeric_limits<double>::quiet_NaN();  // mean (or load-zone peak) of
+                                                                  // area / level over the passes
   std::size_t passes = 0;
   // inner defect under a radial load with a shaft angle: the defect's angle on the ring from
   // the shaft's zero, degrees in [0, 360), with its interval; NaN otherwise
@@ -54,8 +72,9 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
 struct PassAreas {
   std::vector<double> rel_area, time;
 };
+// fixed: the fixed window (kWindow*) instead of the record's own pulse window
 PassAreas pass_areas(const std::vector<double> &x, double rate, double t0, double f,
-                     double level_offset);
+                     double level_offset, bool fixed = false);
 
 }  // namespace ohmdem::post
 

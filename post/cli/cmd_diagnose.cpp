@@ -2,7 +2,9 @@
 // ohmdem-post diagnose: detection (is something wrong), then the most likely bearing defect,
 // its score, evidence and size.
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "bearing/diagnose.h"
 #include "bearing/order_diagnose.h"
@@ -23,6 +25,30 @@ void name_flags(Detection &det)
 {
   det.gaussian_note = flag_named(det.gaussian_note);
   for (DetectionTest &t : det.tests) t.note = flag_named(t.note);
+}
+
+// Lines "SIZE_DEG AREA_S" ('#' comments), at least two, both columns increasing.
+void read_size_curve(const std::string &path, DiagnoseOptions &o)
+{
+  std::ifstream in(path);
+  if (!in) throw Error("diagnose: --size-curve " + path + ": cannot open the file");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    double sz = 0, ar = 0;
+    if (!(ls >> sz >> ar) || !std::isfinite(sz) || !std::isfinite(ar))
+      throw Error("diagnose: --size-curve " + path + ": expected lines 'SIZE_DEG AREA_S', got '" +
+                  line + "'");
+    if (!o.curve_size_deg.empty() &&
+        (sz <= o.curve_size_deg.back() || ar <= o.curve_rel_area_s.back()))
+      throw Error("diagnose: --size-curve " + path +
+                  ": sizes and areas must both increase from line to line");
+    o.curve_size_deg.push_back(sz);
+    o.curve_rel_area_s.push_back(ar);
+  }
+  if (o.curve_size_deg.size() < 2)
+    throw Error("diagnose: --size-curve " + path + ": needs at least two lines 'SIZE_DEG AREA_S'");
 }
 
 }  // namespace
@@ -73,6 +99,10 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--assume-defect", "KIND",
            "size and place this race defect (inner or outer, at its kinematic frequency) "
            "even when the identification names another or none");
+  a.option("--size-curve", "FILE",
+           "the model's curve from simulations of the same scene: lines 'SIZE_DEG AREA_S' (the "
+           "fixed-window pulse area over the level, JSON pulse_window_rel_area_s), both "
+           "increasing; the size is read off it");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -111,6 +141,7 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
+  if (a.has("--size-curve")) read_size_curve(a.get("--size-curve"), o);
   if (a.has("--assume-defect")) {
     o.assume_defect = a.get("--assume-defect");
     if (o.assume_defect != "inner" && o.assume_defect != "outer")

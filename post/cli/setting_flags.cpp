@@ -43,6 +43,7 @@ const SettingFlags &setting_flags()
       {"diagnose.baseline", "--baseline"},
       {"diagnose.load", "--load"},
       {"diagnose.assume_defect", "--assume-defect"},
+      {"diagnose.size_curve", "--size-curve"},
       {"diagnose.pulse_height", "--pulse-height"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},

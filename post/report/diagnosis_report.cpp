@@ -104,6 +104,7 @@ void located_json(Json &j, const Diagnosis &d)
   j.set("size_arc_m", area ? Json(l.arc_m) : d.size.valid ? Json(d.size.arc_m) : Json());
   j.set("pulse_height_rel", area ? Json(l.pulse_height) : Json());
   j.set("pulse_height_source", area ? Json(l.height_source) : Json());
+  j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
   j.set("position_deg", number_or_null(l.position_deg));
   j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));

@@ -104,6 +104,33 @@ TEST(PulseArea, RefusesARecordSwingingAboutZero)
   EXPECT_NE(e.note.find("not a level record"), std::string::npos);
 }
 
+// The model's curve: the fixed-window area of 1 MHz records of known pulse lengths, then a
+// 20 kHz record of another length read off it (the curve's "size" here: tau in us).
+TEST(PulseArea, SizeReadOffTheModelsCurve)
+{
+  PulseAreaSettings s;
+  for (double tau : {20.0, 60.0, 120.0, 200.0}) {
+    const Signal r = record(tau * 1e-6, 409.7, 1e6);
+    s.rel_height = 1;
+    const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+    ASSERT_TRUE(std::isfinite(e.window_rel_area_s));
+    // a rectangle's area over the level: its height times its length
+    EXPECT_NEAR(e.window_rel_area_s / (0.45 * tau * 1e-6), 1, 0.01) << tau;
+    s.curve_size_deg.push_back(tau);
+    s.curve_rel_area_s.push_back(e.window_rel_area_s);
+  }
+  s.rel_height = 0;
+  const Signal r = record(90e-6, 409.7, 2e4);
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  ASSERT_TRUE(e.valid) << e.note;
+  EXPECT_NEAR(e.size_deg, 90, 3);
+  EXPECT_LE(e.size_lo_deg, e.size_deg);
+  EXPECT_GE(e.size_hi_deg, e.size_deg);
+  // beyond the curve: no size
+  const Signal big = record(300e-6, 409.7, 2e4);
+  EXPECT_FALSE(size_from_pulse_area(big.x, big.rate, big.t0, 409.7, "outer", s).valid);
+}
+
 TEST(PulseArea, NoModelHeightNoSize)
 {
   const Signal r = record(60e-6, 409.7, 2e4);
