@@ -55,7 +55,7 @@ if want sizing; then
   echo "== sizing study (issue 26: size and place from 10-50 kHz electrical records)"
   /usr/bin/python3 studies/sizing.py "$WORK/sizing" > "$OUT/sizing.log"
   mkdir -p "$OUT/sizing"
-  cp "$WORK"/sizing/sizing.csv "$WORK"/sizing/sizing.md "$OUT/sizing/"
+  cp "$WORK"/sizing/sizing.csv "$WORK"/sizing/sizing.md "$WORK"/sizing/curve_*.txt "$OUT/sizing/"
 fi
 if want validation; then
   echo "== validation numbers (test suite)"

@@ -5,16 +5,17 @@ from what an instrument records of the electrical channel.
 
 The SKF 6208 of the detectability study (500 rad/s) is simulated with inner and outer defects of
 0.3 to 3 deg under the radial load (pit at the load zone's centre; inner pits at several places
-on the ring) and under the fixed (balanced) load. The pits are 50 um deep, so that the ball
-never reaches their floor over this range: the pulse area then measures the crossing time (see
-doc/ohmdem-post.md, "Size and position"). Each run is acquired at 10, 20 and 50 kHz, 16 bits,
+on the ring) and under the fixed (balanced) load. The pits are 50 um deep: the ball reaches the
+floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/ohmdem-post.md,
+"Size and position". Each run is acquired at 10, 20 and 50 kHz, 16 bits,
 with the detectability study's low and high electrical noise, given a shaft-angle column (the
-deck's angle_inner, 500 rad/s x t) and diagnosed. The radial load's pulse height comes from one
-calibration run that is not among the cases (an outer pit of 0.7 deg at 1 MHz: the jump of R
-while the ball in the pit carries nothing, over the level); the fixed load uses the theory
-1/(Nb-1).
+deck's angle_inner, 500 rad/s x t) and diagnosed twice: 'jump' (area / (jump x level); the
+radial load's jump from one calibration run that is not among the cases, an outer pit of 0.7 deg
+at 1 MHz; the fixed load's the theory 1/(Nb-1)) and 'curve' (diagnose --size-curve: the model's
+curve from 1 MHz runs of the scene at sizes none of the cases has).
   studies/sizing.py [--quick] OUT
-Writes OUT/sizing.csv (one row per case and instrument) and OUT/sizing.md (the tables).
+Writes OUT/sizing.csv (one row per case, instrument and method), OUT/sizing.md (the tables)
+and OUT/curve_<defect>_<load>.txt (the model's curves).
 """
 import argparse
 import json
