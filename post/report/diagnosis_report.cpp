@@ -102,7 +102,7 @@ void located_json(Json &j, const Diagnosis &d)
                            ? "pulse width (" + d.size.method + "), no interval: " + l.method
                            : l.method);
   j.set("size_arc_m", area ? Json(l.arc_m) : d.size.valid ? Json(d.size.arc_m) : Json());
-  j.set("pulse_height_rel", area ? Json(l.pulse_height) : Json());
+  j.set("pulse_height_rel", area && l.pulse_height > 0 ? Json(l.pulse_height) : Json());
   j.set("pulse_height_source", area ? Json(l.height_source) : Json());
   j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
   j.set("position_deg", number_or_null(l.position_deg));
@@ -249,8 +249,10 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
     line("size (area):   " +
          interval_text(d.located.size_deg, d.located.size_lo_deg, d.located.size_hi_deg, "deg") +
          " at 95 %, arc " + format_number(d.located.arc_m * 1e3, 4) + " mm (" + d.located.method +
-         "; jump " + format_number(d.located.pulse_height, 4) + ", " + d.located.height_source +
-         ")");
+         "; " +
+         (d.located.pulse_height > 0 ? "jump " + format_number(d.located.pulse_height, 4) + ", "
+                                     : std::string()) +
+         d.located.height_source + ")");
   else if (chosen && !d.located.method.empty() && d.located.method != "not applicable")
     line("size (area):   n/a (" + d.located.method + ")");
   if (std::isfinite(d.located.position_deg))

@@ -105,6 +105,12 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   const Json fixed = diagnose("inner_3_fixed_p90", "");
   EXPECT_EQ(fixed.find("defect")->string(), "inner");
   EXPECT_NEAR(fixed.find("size_deg")->number(), 3.0, 0.15);
+  // the same read off the model's curve (doc/report/sizing/curve_inner_fixed.txt: 1 MHz runs of
+  // the scene at 0.2 to 4 deg)
+  const Json curve =
+      diagnose("inner_3_fixed_p90", "--size-curve " + data + "curve_inner_fixed.txt");
+  EXPECT_NEAR(curve.find("size_deg")->number(), 3.0, 0.06);
+  EXPECT_NE(curve.find("pulse_height_source")->string().find("--size-curve"), std::string::npos);
   // radial load, 0.5 deg inner pit at 330 deg on the ring: the jump from the calibration run,
   // the place from the shaft angle column
   const Json inner =
