@@ -75,23 +75,30 @@ def calibrate(out):
     return float(np.median(jumps))
 
 
-def model_curve(out, defect, load):
-    """The fixed-window pulse area over the level against the size, from 1 MHz simulations of
-    the scene (pit at the load zone's centre); cut where the area stops increasing."""
+def model_curve(out, defect, load, rate=None, noise=None):
+    """The fixed-window pulse area over the level against the size, from simulations of the
+    scene (pit at the load zone's centre) at 1 MHz, or passed through the instrument's chain
+    (rate, noise); cut where the area stops increasing."""
     rows = []
     for size in CURVE_SIZES:
         sim = simulate(out, (defect, size, load, 90.0), T_FROM + 0.15)
-        r = common.post(["diagnose", "--format", "json", "--column", "R", "--metadata",
+        record, column = os.path.join(sim, "signal.txt"), "R"
+        if rate:
+            record, column = os.path.join(out, "acq", f"curve_{defect}_{size:g}_{load}_r{rate:g}_"
+                                          f"{noise}.txt"), "V"
+            acquire_with_angle(sim, load, rate, noise, record)
+        r = common.post(["diagnose", "--format", "json", "--column", column, "--metadata",
                          os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect",
-                         defect, "--pulse-height", "1", os.path.join(sim, "signal.txt")],
-                        who="sizing")
+                         defect, "--pulse-height", "1", record], who="sizing")
         a = json.loads(r.stdout).get("pulse_window_rel_area_s")
         if a is None or (rows and a <= rows[-1][1]):
             break
         rows.append((size, a))
-    path = os.path.join(out, f"curve_{defect}_{load}.txt")
+    tag = f"_r{rate:g}_{noise}" if rate else ""
+    path = os.path.join(out, f"curve_{defect}_{load}{tag}.txt")
     with open(path, "w") as f:
-        f.write(f"# {defect} defect, {load} load: size_deg, fixed-window pulse area / level (s)\n")
+        f.write(f"# {defect} defect, {load} load{', ' + tag[1:] if tag else ', 1 MHz'}: size_deg, "
+                "fixed-window pulse area / level (s)\n")
         for size, a in rows:
             f.write(f"{size:g} {a!r}\n")
     return path, rows
@@ -180,6 +187,7 @@ def main(argv):
     height = calibrate(a.out)
     curves = {(d, l): model_curve(a.out, d, l) for d in ("inner", "outer")
               for l in ("radial", "fixed")}
+    chain_curves = {}
     rows = []
     for case in cases(a.quick):
         defect, size, load, position = case
@@ -189,8 +197,15 @@ def main(argv):
                 acq = os.path.join(a.out, "acq", f"{defect}_{size:g}_{load}_p{position:g}_"
                                    f"r{rate:g}_{noise}.txt")
                 acquire_with_angle(sim, load, rate, noise, acq)
-                for method in ("jump", "curve"):
-                    curve = curves[(defect, load)][0] if method == "curve" else None
+                for method in ("jump", "curve", "chain curve"):
+                    curve = None
+                    if method == "curve":
+                        curve = curves[(defect, load)][0]
+                    elif method == "chain curve":
+                        key = (defect, load, rate, noise)
+                        if key not in chain_curves:
+                            chain_curves[key] = model_curve(a.out, defect, load, rate, noise)
+                        curve = chain_curves[key][0]
                     rows.append(row(diagnose(sim, acq, defect, load, height, curve), case, rate,
                                     noise, method))
     cols = list(rows[0].keys())
@@ -203,6 +218,7 @@ def main(argv):
              f"OUT`. Pits {DEPTH * 1e6:g} um deep; radial-load pulse height {height:.4f} (calibration "
              f"run: {CALIBRATION[0]} {CALIBRATION[1]} deg, 1 MHz); fixed load: 1/(Nb-1). "
              "'jump': area / (jump x level); 'curve': the fixed-window area on the model's curve "
+             "('chain curve': the same runs acquired by the record's instrument) "
              "(1 MHz runs of the scene at " + ", ".join(f"{x:g}" for x in CURVE_SIZES) +
              " deg; the curves below, cut where the area stops increasing).", ""]
     for (d, l), (path, pts) in sorted(curves.items()):
