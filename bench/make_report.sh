@@ -18,8 +18,8 @@ cd "$ROOT"
 eval "$(/usr/bin/python3 studies/common.py --shell)"  # OHMDEM, POST, the MPI flags, ...
 
 # PARTS: which parts to run again (the others keep their logs and figures in REPORT_DIR):
-# any of defects load_speed detectability runup validation speed signal; default all.
-PARTS=" ${PARTS:-defects load_speed detectability runup validation speed signal} "
+# any of defects load_speed detectability runup sizing validation speed signal; default all.
+PARTS=" ${PARTS:-defects load_speed detectability runup sizing validation speed signal} "
 want() { [[ "$PARTS" == *" $1 "* ]]; }
 
 if want defects; then
@@ -50,6 +50,12 @@ if want runup; then
   /usr/bin/python3 studies/runup.py "$WORK/runup" > "$OUT/runup.log"
   mkdir -p "$OUT/runup"
   cp "$WORK"/runup/*.png "$WORK"/runup/orders.csv "$WORK"/runup/runup.md "$OUT/runup/"
+fi
+if want sizing; then
+  echo "== sizing study (issue 26: size and place from 10-50 kHz electrical records)"
+  /usr/bin/python3 studies/sizing.py "$WORK/sizing" > "$OUT/sizing.log"
+  mkdir -p "$OUT/sizing"
+  cp "$WORK"/sizing/sizing.csv "$WORK"/sizing/sizing.md "$WORK"/sizing/curve_*.txt "$OUT/sizing/"
 fi
 if want validation; then
   echo "== validation numbers (test suite)"

@@ -4,27 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bearing/pulse_area.h"
 #include "core/constants.h"
 #include "dsp/pulses.h"
 
 namespace ohmdem::post {
-
-namespace {
-
-// Fine-tunes the repetition frequency by maximising the synchronous average's contrast.
-AveragedPulse best_synchronous(const std::vector<double> &x, double rate, double f)
-{
-  const double cycles = static_cast<double>(x.size()) * f / rate;
-  const double eps = 0.05 / std::max(cycles, 1.0);  // drift of 1/20 period per step
-  AveragedPulse best;
-  for (int i = -20; i <= 20; ++i) {
-    AveragedPulse a = synchronous_pulse(x, rate, f * (1 + i * eps));
-    if (a.contrast > best.contrast) best = a;
-  }
-  return best;
-}
-
-}  // namespace
 
 double defect_angle(const std::string &defect, double f, double tau, int nb)
 {
@@ -55,7 +39,8 @@ SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeo
     e.pulse_width_s = p.median_width_s;
     e.pulses = p.counted;
   } else {
-    const AveragedPulse a = best_synchronous(s.x, s.rate, per_pulse);
+    const AveragedPulse a =
+        synchronous_pulse(s.x, s.rate, refine_repetition(s.x, s.rate, per_pulse));
     if (!a.valid) {
       e.method = "no clean pulse train (vibration record or too noisy)";
       return e;
@@ -73,6 +58,112 @@ SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeo
   e.arc_m = angle * r;
   e.valid = true;
   return e;
+}
+
+}  // namespace ohmdem::post
+
+namespace ohmdem::post {
+
+namespace {
+
+double race_radius(const std::string &defect, const BearingGeometry &g)
+{
+  const double c = g.db * std::cos(g.contact_angle_deg * kPi / 180);
+  return defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2;
+}
+
+}  // namespace
+
+LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
+{
+  Diagnosis d = found;
+  if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
+    d.defect = o.assume_defect;
+    d.frequency_hz = o.assume_defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
+  }
+  LocatedDefect l;
+  const BearingGeometry &g = o.geometry;
+  l.depth_note =
+      "not determined: the pulses give the defect's width and the jump of the level; the depth "
+      "shows only while the ball reaches the pit floor";
+  if (d.defect == "ball") {
+    l.method = "not determined by the pulse area (a ball defect)";
+    l.position_note = "not determined: the defective ball cannot be told from the others";
+    return l;
+  }
+  if (d.defect != "inner" && d.defect != "outer") {
+    l.method = "not applicable";
+    return l;
+  }
+  l.position_note = "not determined";
+  if (!(g.db > 0 && g.dp > 0) || g.nb < 2) {
+    l.method = "needs the ball count and the ball and pitch diameters";
+    return l;
+  }
+  const bool radial = o.load == "radial";
+  const bool curve = !o.curve_size_deg.empty();
+  if (curve) {
+    l.height_source = "the model's curve ({diagnose.size_curve})";
+  } else if (o.pulse_height > 0) {
+    l.pulse_height = o.pulse_height;
+    l.height_source = "{diagnose.pulse_height}";
+  } else if (o.load == "force" || o.load == "fixed") {
+    // every ball carries the same load: one path of Nb lost raises R by 1 / (Nb - 1)
+    l.pulse_height = 1.0 / (g.nb - 1);
+    l.height_source = "theory: Nb equal parallel paths, one lost: 1/(Nb-1)";
+  } else {
+    l.method =
+        radial ? "needs {diagnose.pulse_height} (the jump at the load zone's centre, from a "
+                 "simulation of the scene) under a radial load"
+               : "needs the load mode ({diagnose.load}, or run.json) or {diagnose.pulse_height}";
+    return l;
+  }
+  PulseAreaSettings ps;
+  ps.rel_height = l.pulse_height;
+  ps.load_zone = radial;
+  ps.fr = o.fr;
+  ps.shaft_angle = o.shaft_angle;
+  ps.curve_size_deg = o.curve_size_deg;
+  ps.curve_rel_area_s = o.curve_rel_area_s;
+  const PulseAreaSize a = size_from_pulse_area(s.x, s.rate, s.t0, d.frequency_hz, d.defect, ps);
+  l.method = a.note;
+  if (d.defect != found.defect)
+    l.method = "assumed " + d.defect + " defect ({diagnose.assume_defect}); " + l.method;
+  l.passes = a.passes;
+  l.window_rel_area_s = a.window_rel_area_s;
+  if (!a.valid) return l;
+  const double to_deg = 180 / kPi;
+  const auto angle = [&](double tau) { return defect_angle(d.defect, d.frequency_hz, tau, g.nb); };
+  l.valid = true;
+  l.size_deg = angle(a.tau_s) * to_deg;
+  l.size_lo_deg = angle(a.tau_lo_s) * to_deg;
+  if (std::isfinite(a.tau_hi_s)) l.size_hi_deg = angle(a.tau_hi_s) * to_deg;
+  l.arc_m = angle(a.tau_s) * race_radius(d.defect, g);
+  if (curve) {  // the size read off the model's curve
+    l.size_deg = a.size_deg;
+    l.size_lo_deg = a.size_lo_deg;
+    l.size_hi_deg = a.size_hi_deg;
+    l.arc_m = a.size_deg * kPi / 180 * race_radius(d.defect, g);
+  }
+  if (d.defect == "inner") {
+    if (!radial)
+      l.position_note = "not determined: under a balanced load every pass looks the same";
+    else if (!o.shaft_angle)
+      l.position_note =
+          "not determined: the record has no shaft angle (angle or tachometer column)";
+  } else {
+    l.position_note = radial ? "not determined: the pulse area mixes the pit's width with its "
+                               "place in the load zone"
+                             : "not determined: under a balanced load every place looks the same";
+  }
+  if (std::isfinite(a.position_deg)) {
+    l.position_deg = a.position_deg;
+    l.position_lo_deg = a.position_lo_deg;
+    l.position_hi_deg = a.position_hi_deg;
+    l.position_reference = "shaft zero";
+    l.position_note.clear();
+  }
+  return l;
 }
 
 }  // namespace ohmdem::post

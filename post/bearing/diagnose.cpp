@@ -260,7 +260,10 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     d.shaft_source = d.label + " comb";
   }
   d.detected = d.defect != "none";
-  if (opt.estimate_size) d.size = estimate_size(s, d, opt.geometry);
+  if (opt.estimate_size) {
+    d.size = estimate_size(s, d, opt.geometry);
+    d.located = locate_defect(s, d, opt);
+  }
   return d;
 }
 

@@ -27,6 +27,17 @@ struct DiagnoseOptions {
   Band band;                // envelope band; lo = hi = 0: chosen by the kurtogram
   int kurtogram_levels = 7;
   bool estimate_size = true;
+  // issue 26, the size from the pulses' area: the load mode ("force", "fixed", "radial"; empty:
+  // unknown), the relative level jump of one lost ball path (0: the theory of a balanced load,
+  // 1 / (Nb - 1), none under a radial load), the shaft angle per sample (rad) or null
+  std::string load;
+  double pulse_height = 0;
+  const std::vector<double> *shaft_angle = nullptr;
+  // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
+  // pulses) whatever the identification says; empty: the identified defect only
+  std::string assume_defect;
+  // the model's curve (bearing/pulse_area.h): sizes (deg) and fixed-window areas / level (s)
+  std::vector<double> curve_size_deg, curve_rel_area_s;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
   // Mains frequencies (Hz) whose harmonic combs are masked where they stand out (the supply's
@@ -79,6 +90,26 @@ struct SizeEstimate {
   std::size_t pulses = 0;
 };
 
+// Issue 26: the size with its interval and the position, and what the record leaves open.
+struct LocatedDefect {
+  bool valid = false;
+  std::string method;  // how the size was found, or why not
+  double size_deg = std::numeric_limits<double>::quiet_NaN();
+  double size_lo_deg = std::numeric_limits<double>::quiet_NaN();  // NaN: no bound
+  double size_hi_deg = std::numeric_limits<double>::quiet_NaN();
+  double arc_m = std::numeric_limits<double>::quiet_NaN();
+  double pulse_height = 0;    // the relative jump used
+  std::string height_source;  // "theory: ..." or "{diagnose.pulse_height}"
+  std::size_t passes = 0;
+  double window_rel_area_s = std::numeric_limits<double>::quiet_NaN();  // for the model's curve
+  double position_deg = std::numeric_limits<double>::quiet_NaN();
+  double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
+  double position_hi_deg = std::numeric_limits<double>::quiet_NaN();
+  std::string position_reference;  // "shaft zero", "load direction", or empty
+  std::string position_note;       // why not determined
+  std::string depth_note;          // what the record says of the depth
+};
+
 struct Diagnosis {
   // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
   // detection stage fired (a fault of unknown type); else "none"
@@ -105,6 +136,7 @@ struct Diagnosis {
   double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
   bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
   SizeEstimate size;
+  LocatedDefect located;
   // The shaft frequency from the spectrum's shaft harmonics (shaft_lines.h; the spectrum whose
   // shaft comb is stronger) when they stand out, else the given one; the lines masked (both
   // spectra) so that no defect comb claims them.

@@ -21,6 +21,14 @@ Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, 
   a.t0 = r.theta0 / kTwoPi;
   a.name = s.name;
   opt.fr = 1;
+  // the resampled record's own shaft angle (the given one indexes the original samples)
+  std::vector<double> angle;
+  if (opt.shaft_angle) {
+    angle.resize(a.x.size());
+    for (std::size_t i = 0; i < angle.size(); ++i)
+      angle[i] = r.theta0 + kTwoPi * static_cast<double>(i) / spr;
+    opt.shaft_angle = &angle;
+  }
   opt.band.lo /= fr;
   opt.band.hi /= fr;
   for (double &m : opt.mains_hz) m /= fr;  // the supply's lines, in orders

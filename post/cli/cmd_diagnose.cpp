@@ -2,7 +2,9 @@
 // ohmdem-post diagnose: detection (is something wrong), then the most likely bearing defect,
 // its score, evidence and size.
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include "bearing/diagnose.h"
 #include "bearing/order_diagnose.h"
@@ -67,6 +69,30 @@ std::string numerical_floor(const Signal &s, const RunMetadata &meta)
          "1-degree pit); the statistics below describe numerical blips, not a defect";
 }
 
+// Lines "SIZE_DEG AREA_S" ('#' comments), at least two, both columns increasing.
+void read_size_curve(const std::string &path, DiagnoseOptions &o)
+{
+  std::ifstream in(path);
+  if (!in) throw Error("diagnose: --size-curve " + path + ": cannot open the file");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    double sz = 0, ar = 0;
+    if (!(ls >> sz >> ar) || !std::isfinite(sz) || !std::isfinite(ar))
+      throw Error("diagnose: --size-curve " + path + ": expected lines 'SIZE_DEG AREA_S', got '" +
+                  line + "'");
+    if (!o.curve_size_deg.empty() &&
+        (sz <= o.curve_size_deg.back() || ar <= o.curve_rel_area_s.back()))
+      throw Error("diagnose: --size-curve " + path +
+                  ": sizes and areas must both increase from line to line");
+    o.curve_size_deg.push_back(sz);
+    o.curve_rel_area_s.push_back(ar);
+  }
+  if (o.curve_size_deg.size() < 2)
+    throw Error("diagnose: --size-curve " + path + ": needs at least two lines 'SIZE_DEG AREA_S'");
+}
+
 }  // namespace
 
 int run_diagnose(const std::vector<std::string> &argv)
@@ -87,7 +113,9 @@ int run_diagnose(const std::vector<std::string> &argv)
       "harmonic, 'other-bearing' if --other-bearing's comb explains the record better than\n"
       "any of this bearing's, else 'unidentified' if detection fired (a fault of unknown\n"
       "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
-      "estimated from the pulse widths of a level signal such as R(t).\n"
+      "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
+      "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
+      "from the shaft angle column under a radial load.\n"
       "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
   add_input_options(a);
   add_bearing_options(a);
@@ -116,6 +144,20 @@ int run_diagnose(const std::vector<std::string> &argv)
            "sampling rate of a --baseline without time stamps when it is not the record's: "
            "refused if it differs (resample it first with acquire)");
   a.flag("--no-size", "skip the defect size estimate");
+  a.option("--load", "MODE",
+           "how the bearing is loaded (force, fixed or radial; default: run.json's load): "
+           "the pulse-area size needs it");
+  a.option("--assume-defect", "KIND",
+           "size and place this race defect (inner or outer, at its kinematic frequency) "
+           "even when the identification names another or none");
+  a.option("--size-curve", "FILE",
+           "the model's curve from simulations of the same scene: lines 'SIZE_DEG AREA_S' (the "
+           "fixed-window pulse area over the level, JSON pulse_window_rel_area_s), both "
+           "increasing; the size is read off it");
+  a.option("--pulse-height", "H",
+           "relative jump of the level when the defect's ball loses contact (at the load "
+           "zone's centre under a radial load), from a simulation of the scene; default under "
+           "a balanced load: 1/(Nb-1)");
   a.flag("--keep-sliding",
          "analyse the sliding phase too (default: start at t_sliding_end "
          "of run.json)");
@@ -144,6 +186,19 @@ int run_diagnose(const std::vector<std::string> &argv)
   o.kurtogram_levels = levels_option(a);
   if (a.has("--band")) o.band = band_option(a);
   o.estimate_size = !a.has("--no-size");
+  o.load = a.has("--load") ? a.get("--load") : meta.load.value_or("");
+  if (!o.load.empty() && o.load != "force" && o.load != "fixed" && o.load != "radial")
+    throw Error("diagnose: --load must be force, fixed or radial, got '" + o.load + "'");
+  if (a.has("--pulse-height"))
+    o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
+  if (sa) o.shaft_angle = &sa->theta;
+  if (a.has("--size-curve")) read_size_curve(a.get("--size-curve"), o);
+  if (a.has("--assume-defect")) {
+    o.assume_defect = a.get("--assume-defect");
+    if (o.assume_defect != "inner" && o.assume_defect != "outer")
+      throw Error("diagnose: --assume-defect must be inner or outer, got '" + o.assume_defect +
+                  "'");
+  }
   o.false_alarm = a.number_in("--false-alarm", 1e-3, Range::open(0, 0.5), "a probability");
   if (a.has("--mains")) o.mains_hz = mains_option(a.get("--mains"));
   std::string other_source;
@@ -189,6 +244,8 @@ int run_diagnose(const std::vector<std::string> &argv)
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   name_flags(d.detection);
+  d.located.method = flag_named(d.located.method);
+  d.located.height_source = flag_named(d.located.height_source);
   if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);

@@ -176,4 +176,20 @@ AveragedPulse synchronous_pulse(const std::vector<double> &x, double rate, doubl
   return a;
 }
 
+double refine_repetition(const std::vector<double> &x, double rate, double f)
+{
+  const double cycles = static_cast<double>(x.size()) * f / rate;
+  const double eps = 0.05 / std::max(cycles, 1.0);  // drift of 1/20 period per step
+  double best_f = f, best = -1;
+  for (int i = -20; i <= 20; ++i) {
+    const double fi = f * (1 + i * eps);
+    const AveragedPulse a = synchronous_pulse(x, rate, fi);
+    if (a.contrast > best) {
+      best = a.contrast;
+      best_f = fi;
+    }
+  }
+  return best_f;
+}
+
 }  // namespace ohmdem::post

@@ -39,6 +39,10 @@ struct AveragedPulse {
 // deviation from the averaged waveform's median.
 AveragedPulse synchronous_pulse(const std::vector<double> &x, double rate, double f);
 
+// The repetition frequency near f (within +-1 period of drift over the record, 41 steps) whose
+// synchronous average has the highest contrast: slip moves the defect's passes off f.
+double refine_repetition(const std::vector<double> &x, double rate, double f);
+
 }  // namespace ohmdem::post
 
 #endif

@@ -98,6 +98,50 @@ const FamilyScore *chosen_family(const Diagnosis &d)
   return chosen;
 }
 
+Json number_or_null(double v)
+{
+  return std::isfinite(v) ? Json(v) : Json();
+}
+
+Json pair_or_null(double lo, double hi)
+{
+  if (!std::isfinite(lo) && !std::isfinite(hi)) return Json();
+  Json a = Json::array();
+  a.push_back(number_or_null(lo));
+  a.push_back(number_or_null(hi));
+  return a;
+}
+
+// Issue 26: the size with its interval (the pulse area's when it has one, else the width's
+// without an interval) and the position; what the record leaves open, said so.
+void located_json(Json &j, const Diagnosis &d)
+{
+  const LocatedDefect &l = d.located;
+  const bool area = l.valid;
+  j.set("size_deg", area ? Json(l.size_deg) : d.size.valid ? Json(d.size.size_deg) : Json());
+  j.set("size_interval_deg", area ? pair_or_null(l.size_lo_deg, l.size_hi_deg) : Json());
+  j.set("size_method", area ? l.method
+                       : d.size.valid
+                           ? "pulse width (" + d.size.method + "), no interval: " + l.method
+                           : l.method);
+  j.set("size_arc_m", area ? Json(l.arc_m) : d.size.valid ? Json(d.size.arc_m) : Json());
+  j.set("pulse_height_rel", area && l.pulse_height > 0 ? Json(l.pulse_height) : Json());
+  j.set("pulse_height_source", area ? Json(l.height_source) : Json());
+  j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
+  j.set("position_deg", number_or_null(l.position_deg));
+  j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
+  j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));
+  if (!l.position_note.empty()) j.set("position_note", l.position_note);
+  if (!l.depth_note.empty()) j.set("depth", l.depth_note);
+}
+
+std::string interval_text(double v, double lo, double hi, const std::string &unit)
+{
+  return format_number(v, 4) + " " + unit + " [" +
+         (std::isfinite(lo) ? format_number(lo, 4) : "-") + ", " +
+         (std::isfinite(hi) ? format_number(hi, 4) : "no upper bound") + "]";
+}
+
 }  // namespace
 
 Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
@@ -131,6 +175,7 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
   sz.set("pulses", d.size.pulses);
   j.set("size", sz);
+  located_json(j, d);
   Json band = Json::array();
   band.push_back(d.band.lo);
   band.push_back(d.band.hi);
@@ -179,6 +224,13 @@ Table diagnosis_row(const Diagnosis &d)
     row.emplace_back(test.applicable ? test.value : NAN);
     row.emplace_back(test.applicable ? test.threshold : NAN);
   }
+  // issue 26: the size's interval and the position, appended
+  const LocatedDefect &l = d.located;
+  t.columns.insert(t.columns.end(),
+                   {"size_area_deg", "size_low_deg", "size_high_deg", "position_deg",
+                    "position_low_deg", "position_high_deg", "position_reference"});
+  row.insert(row.end(), {l.valid ? l.size_deg : NAN, l.size_lo_deg, l.size_hi_deg, l.position_deg,
+                         l.position_lo_deg, l.position_hi_deg, l.position_reference});
   t.rows.push_back(row);
   return t;
 }
@@ -212,6 +264,25 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
          ")");
   else if (chosen)
     line("size:          n/a (" + d.size.method + ")");
+  if (d.located.valid)
+    line("size (area):   " +
+         interval_text(d.located.size_deg, d.located.size_lo_deg, d.located.size_hi_deg, "deg") +
+         " at 95 %, arc " + format_number(d.located.arc_m * 1e3, 4) + " mm (" + d.located.method +
+         "; " +
+         (d.located.pulse_height > 0 ? "jump " + format_number(d.located.pulse_height, 4) + ", "
+                                     : std::string()) +
+         d.located.height_source + ")");
+  else if (chosen && !d.located.method.empty() && d.located.method != "not applicable")
+    line("size (area):   n/a (" + d.located.method + ")");
+  if (std::isfinite(d.located.position_deg))
+    line("position:      " +
+         interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
+                       "deg") +
+         " from the " + d.located.position_reference);
+  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
+    line("position:      " + d.located.position_note);
+  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
+    line("depth:         " + d.located.depth_note);
   line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
        ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
        std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);

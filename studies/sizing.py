@@ -1,0 +1,235 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The sizing study (issue 26): how well `ohmdem-post diagnose` sizes and places a race defect
+from what an instrument records of the electrical channel.
+
+The SKF 6208 of the detectability study (500 rad/s) is simulated with inner and outer defects of
+0.3 to 3 deg under the radial load (pit at the load zone's centre; inner pits at several places
+on the ring) and under the fixed (balanced) load. The pits are 50 um deep: the ball reaches the
+floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/ohmdem-post.md,
+"Size and position". Each run is acquired at 10, 20 and 50 kHz, 16 bits,
+with the detectability study's low and high electrical noise, given a shaft-angle column (the
+deck's angle_inner, 500 rad/s x t) and diagnosed twice: 'jump' (area / (jump x level); the
+radial load's jump from one calibration run that is not among the cases, an outer pit of 0.7 deg
+at 1 MHz; the fixed load's the theory 1/(Nb-1)) and 'curve' (diagnose --size-curve: the model's
+curve from 1 MHz runs of the scene at sizes none of the cases has).
+  studies/sizing.py [--quick] OUT
+Writes OUT/sizing.csv (one row per case, instrument and method), OUT/sizing.md (the tables)
+and OUT/curve_<defect>_<load>.txt (the model's curves).
+"""
+import argparse
+import json
+import os
+import sys
+
+import common
+import detectability
+
+OMEGA = 500.0
+T_FROM, WINDOW = 0.05, 0.3
+DEPTH = 5e-5
+RATES = [1e4, 2e4, 5e4]
+NOISE = ["low", "high"]
+CALIBRATION = ("outer", 0.7, "radial", 90.0)
+# the model's curve: the same scene at sizes none of the cases has, 0.15 s at 1 MHz each
+CURVE_SIZES = [0.2, 0.4, 0.7, 1.5, 2.5, 4.0]
+
+
+def cases(quick):
+    c = []
+    sizes = [0.3, 1.0, 3.0] if quick else [0.3, 0.5, 1.0, 2.0, 3.0]
+    for defect in ("inner", "outer"):
+        for s in sizes:
+            c.append((defect, s, "radial", 90.0))
+        for s in ([1.0] if quick else [0.3, 1.0, 3.0]):
+            c.append((defect, s, "fixed", 90.0))
+    c += [("inner", 1.0, "radial", 200.0), ("inner", 0.5, "radial", 330.0)]
+    return c
+
+
+def simulate(out, case, tend):
+    defect, size, load, position = case
+    d = os.path.join(out, "sim", f"{defect}_{size:g}_{load}_p{position:g}")
+    if not os.path.exists(os.path.join(d, "run.json")):
+        os.makedirs(d, exist_ok=True)
+        cmd = common.deck_command(common.BEARING_DECK, [
+            "-var", "out", d, "-log", os.path.join(d, "log.liggghts"), "-screen", "none"] +
+            common.variables({"defect": defect, "size": size, "load": load, "position": position,
+                              "depth": DEPTH, "tend": tend, "tslide": T_FROM}))
+        common.run(cmd, os.path.join(d, "stdout.txt"), who="sizing")
+    return d
+
+
+def calibrate(out):
+    """The relative jump of R while the ball in the pit is off: the pulses' plateau over the
+    level before them, median over the passes (1 MHz)."""
+    import numpy as np
+    s = common.read_signal(os.path.join(simulate(out, CALIBRATION, T_FROM + 0.1), "signal.txt"),
+                           T_FROM)
+    r = s["R"]
+    level = np.median(r)
+    above = r > level * 1.05
+    starts = np.flatnonzero(np.diff(above.astype(int)) == 1)
+    jumps = [(r[i:i + 8].max() - np.median(r[max(i - 60, 0):i - 5])) / np.median(r[max(i - 60, 0):i - 5])
+             for i in starts if i > 60]
+    return float(np.median(jumps))
+
+
+def model_curve(out, defect, load, rate=None, noise=None):
+    """The fixed-window pulse area over the level against the size, from simulations of the
+    scene (pit at the load zone's centre) at 1 MHz, or passed through the instrument's chain
+    (rate, noise); cut where the area stops increasing."""
+    rows = []
+    for size in CURVE_SIZES:
+        sim = simulate(out, (defect, size, load, 90.0), T_FROM + 0.15)
+        record, column = os.path.join(sim, "signal.txt"), "R"
+        if rate:
+            record, column = os.path.join(out, "acq", f"curve_{defect}_{size:g}_{load}_r{rate:g}_"
+                                          f"{noise}.txt"), "V"
+            acquire_with_angle(sim, load, rate, noise, record)
+        r = common.post(["diagnose", "--format", "json", "--column", column, "--metadata",
+                         os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect",
+                         defect, "--pulse-height", "1", record], who="sizing")
+        a = json.loads(r.stdout).get("pulse_window_rel_area_s")
+        if a is None or (rows and a <= rows[-1][1]):
+            break
+        rows.append((size, a))
+    tag = f"_r{rate:g}_{noise}" if rate else ""
+    path = os.path.join(out, f"curve_{defect}_{load}{tag}.txt")
+    with open(path, "w") as f:
+        f.write(f"# {defect} defect, {load} load{', ' + tag[1:] if tag else ', 1 MHz'}: size_deg, "
+                "fixed-window pulse area / level (s)\n")
+        for size, a in rows:
+            f.write(f"{size:g} {a!r}\n")
+    return path, rows
+
+
+def acquire_with_angle(sim, load, rate, noise, dest):
+    """The electrical channel acquired, plus the shaft angle the deck's angle_inner holds. The
+    fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range."""
+    ch = detectability.CHANNELS["R"]
+    lo, hi = ch["range"] if load == "radial" else (0.0, 0.2)
+    tmp = dest + ".acq"
+    common.post(["acquire", "--column", "R", "--scale", repr(ch["scale"]), "--from", repr(T_FROM),
+                 "--lowpass", repr(0.4 * rate), "--order", "4", "--rate", repr(rate), "--bits",
+                 "16", "--range", repr(lo), repr(hi), "--noise-density",
+                 repr(ch["noise"][noise]), "--seed", "1", "--name", "V", "--unit", "V",
+                 "--output", tmp, os.path.join(sim, "signal.txt")], who="sizing")
+    with open(tmp) as f, open(dest, "w") as g:
+        for line in f:
+            if line.startswith("#"):
+                g.write(line if not line.startswith("# time") else "# time V angle_inner\n")
+            else:
+                t, v = line.split()
+                g.write(f"{t} {v} {OMEGA * float(t)!r}\n")
+    os.remove(tmp)
+
+
+def diagnose(sim, acq, defect, load, height, curve=None):
+    """The size and place of the run's defect (--assume-defect: the study measures the sizing;
+    the identification is in the CSV)."""
+    args = ["diagnose", "--format", "json", "--column", "V", "--metadata",
+            os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect", defect, acq]
+    if curve:
+        args += ["--size-curve", curve]
+    elif load == "radial":
+        args += ["--pulse-height", repr(height)]
+    r = common.post(args, who="sizing", allow_fail=True)
+    return json.loads(r.stdout) if r.returncode == 0 else {"defect": "error"}
+
+
+def row(d, case, rate, noise, method):
+    """One CSV row: the estimate against the size and place the deck was given."""
+    defect, size, load, position = case
+    est = d.get("size_deg") if d.get("size_interval_deg") else None
+    iv = d.get("size_interval_deg") or [None, None]
+    covers = est is not None and iv[0] is not None and iv[0] <= size and \
+        (iv[1] is None or size <= iv[1])
+    pos = d.get("position_deg") if est is not None else None
+    perr = None if pos is None else (pos - position + 180) % 360 - 180
+    return {"defect": defect, "size_deg": size, "load": load, "position_deg": position,
+            "rate_hz": rate, "noise": noise, "method": method, "diagnosis": d["defect"],
+            "size_deg_est": est, "low": iv[0], "high": iv[1],
+            "error_pct": None if est is None else 100 * (est / size - 1), "covers": covers,
+            "position_est_deg": pos, "position_error_deg": perr}
+
+
+def summary(rows):
+    """Per (load, defect kind, rate, noise): cases sized, median and largest |error| (%),
+    coverage of the interval (%), largest inner position error (deg)."""
+    out = {}
+    for r in rows:
+        out.setdefault((r["method"], r["load"], r["defect"], r["rate_hz"], r["noise"]),
+                       []).append(r)
+    lines = ["| size from | load | defect | rate (Hz) | noise | sized | median abs error | "
+             "largest abs error | interval covers | largest position error (deg) |",
+             "|---" * 10 + "|"]
+    for (method, load, defect, rate, noise), rs in sorted(out.items()):
+        sized = [r for r in rs if r["size_deg_est"] is not None]
+        errs = sorted(abs(r["error_pct"]) for r in sized)
+        cover = [r["covers"] for r in sized]
+        pos = [abs(r["position_error_deg"]) for r in sized if r["position_error_deg"] is not None]
+        med = f"{errs[len(errs) // 2]:.1f} %" if errs else "-"
+        big = f"{errs[-1]:.1f} %" if errs else "-"
+        cov = f"{100 * sum(cover) / len(cover):.0f} %" if cover else "-"
+        p = f"{max(pos):.1f}" if pos else "-"
+        lines.append(f"| {method} | {load} | {defect} | {rate:g} | {noise} | {len(sized)}/{len(rs)} | {med} | "
+                     f"{big} | {cov} | {p} |")
+    return lines
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--quick", action="store_true", help="fewer sizes")
+    ap.add_argument("out")
+    a = ap.parse_args(argv)
+    os.makedirs(os.path.join(a.out, "acq"), exist_ok=True)
+    height = calibrate(a.out)
+    curves = {(d, l): model_curve(a.out, d, l) for d in ("inner", "outer")
+              for l in ("radial", "fixed")}
+    chain_curves = {}
+    rows = []
+    for case in cases(a.quick):
+        defect, size, load, position = case
+        sim = simulate(a.out, case, T_FROM + WINDOW)
+        for rate in RATES:
+            for noise in NOISE:
+                acq = os.path.join(a.out, "acq", f"{defect}_{size:g}_{load}_p{position:g}_"
+                                   f"r{rate:g}_{noise}.txt")
+                acquire_with_angle(sim, load, rate, noise, acq)
+                for method in ("jump", "curve", "chain curve"):
+                    curve = None
+                    if method == "curve":
+                        curve = curves[(defect, load)][0]
+                    elif method == "chain curve":
+                        key = (defect, load, rate, noise)
+                        if key not in chain_curves:
+                            chain_curves[key] = model_curve(a.out, defect, load, rate, noise)
+                        curve = chain_curves[key][0]
+                    rows.append(row(diagnose(sim, acq, defect, load, height, curve), case, rate,
+                                    noise, method))
+    cols = list(rows[0].keys())
+    with open(os.path.join(a.out, "sizing.csv"), "w") as f:
+        f.write(",".join(cols) + "\n")
+        for r in rows:
+            f.write(",".join("" if r[c] is None else f"{r[c]:.6g}" if isinstance(r[c], float)
+                             else str(r[c]) for c in cols) + "\n")
+    lines = [f"# Sizing study", "", f"Regenerated by `studies/sizing.py {'--quick ' if a.quick else ''}"
+             f"OUT`. Pits {DEPTH * 1e6:g} um deep; radial-load pulse height {height:.4f} (calibration "
+             f"run: {CALIBRATION[0]} {CALIBRATION[1]} deg, 1 MHz); fixed load: 1/(Nb-1). "
+             "'jump': area / (jump x level); 'curve': the fixed-window area on the model's curve "
+             "('chain curve': the same runs acquired by the record's instrument) "
+             "(1 MHz runs of the scene at " + ", ".join(f"{x:g}" for x in CURVE_SIZES) +
+             " deg; the curves below, cut where the area stops increasing).", ""]
+    for (d, l), (path, pts) in sorted(curves.items()):
+        lines.append(f"- curve {d} {l}: " + ", ".join(f"{sz:g} deg -> {ar * 1e6:.2f} us"
+                                                       for sz, ar in pts))
+    lines.append("")
+    lines += summary(rows)
+    with open(os.path.join(a.out, "sizing.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The size from the pulse area (post/bearing/pulse_area.h) on synthetic records: rectangular
+// jumps of h times the level, lasting tau, through the instrument chain of dsp/acquire (a
+// Butterworth anti-alias filter at the input rate, then sampling). The reference is the tau
+// the pulses were made with: the filter's gain at 0 Hz is 1, so it keeps their area.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bearing/pulse_area.h"
+#include "dsp/acquire.h"
+#include "test_constants.h"
+
+namespace ohmdem::post {
+namespace {
+
+using ohmdem::test::kPi;
+
+// Level 0.05 (V = I R), pulses h level high for tau at f, starting at phase0 / f; with `zone`
+// the height follows cos^2 of the shaft angle 2 pi fr t + position - 90 deg (an inner defect
+// under a radial load, its zone's centre at 90 deg). 1 MHz, then acquired at `rate`.
+Signal record(double tau, double f, double rate, double fr = 0, double position_deg = 0)
+{
+  const double fs = 1e6, level = 0.05, h = 0.45;
+  Signal in;
+  in.rate = fs;
+  const std::size_t n = 300000;
+  in.x.assign(n, level);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / fs;
+    const double u = std::fmod(t * f + 0.3, 1.0) / f;
+    double k = 1;
+    if (fr > 0) {
+      const double c = std::cos(2 * kPi * fr * t + (position_deg - 90) * kPi / 180);
+      k = c > 0 ? c * c : 0;
+    }
+    if (u < tau) in.x[i] += k * h * level;
+  }
+  AcquireSettings a;
+  a.lowpass = 0.4 * rate;
+  a.rate = rate;
+  a.noise_rms = 1e-6;
+  return acquire(in, a).signal;
+}
+
+TEST(PulseArea, AreaOverHeightIsThePulseLengthAtEveryRate)
+{
+  PulseAreaSettings s;
+  s.rel_height = 0.45;
+  for (double rate : {1e4, 2e4, 5e4})
+    for (double tau : {20e-6, 60e-6, 200e-6}) {
+      const Signal r = record(tau, 409.7, rate);
+      const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+      ASSERT_TRUE(e.valid) << e.note;
+      EXPECT_NEAR(e.tau_s / tau, 1, 0.03) << rate << " Hz, tau " << tau;
+      EXPECT_LE(e.tau_lo_s, e.tau_s);
+      EXPECT_GE(e.tau_hi_s, e.tau_s);
+      EXPECT_GT(e.passes, 100U);
+    }
+}
+
+TEST(PulseArea, InnerDefectUnderRadialLoadPeakAndPosition)
+{
+  // the inner ring turns at fr: the pass at the zone's centre carries the full jump
+  const double fr = 500 / (2 * kPi), tau = 60e-6;
+  const Signal r = record(tau, 625.1, 2e4, fr, 40);
+  std::vector<double> theta(r.x.size());
+  for (std::size_t i = 0; i < theta.size(); ++i) theta[i] = 2 * kPi * fr * r.time(i);
+  PulseAreaSettings s;
+  s.rel_height = 0.45;
+  s.load_zone = true;
+  s.fr = fr;
+  s.shaft_angle = &theta;
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 625.1, "inner", s);
+  ASSERT_TRUE(e.valid) << e.note;
+  EXPECT_NEAR(e.tau_s / tau, 1, 0.05);
+  EXPECT_NEAR(std::remainder(e.position_deg - 40, 360), 0, 2);
+  // without the shaft angle the position is not determined
+  s.shaft_angle = nullptr;
+  const PulseAreaSize n = size_from_pulse_area(r.x, r.rate, r.t0, 625.1, "inner", s);
+  EXPECT_TRUE(std::isnan(n.position_deg));
+}
+
+TEST(PulseArea, OuterDefectUnderRadialLoadIsALowerBound)
+{
+  PulseAreaSettings s;
+  s.rel_height = 0.45;
+  s.load_zone = true;
+  const Signal r = record(60e-6, 409.7, 2e4);
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  ASSERT_TRUE(e.valid);
+  EXPECT_TRUE(std::isinf(e.tau_hi_s));
+}
+
+TEST(PulseArea, RefusesARecordSwingingAboutZero)
+{
+  // an accelerometer's record: the same pulses about a zero level
+  Signal r = record(60e-6, 409.7, 2e4);
+  for (double &v : r.x) v -= 0.05;
+  PulseAreaSettings s;
+  s.rel_height = 0.45;
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  EXPECT_FALSE(e.valid);
+  EXPECT_NE(e.note.find("not a level record"), std::string::npos);
+}
+
+// The model's curve: the fixed-window area of 1 MHz records of known pulse lengths, then a
+// 20 kHz record of another length read off it (the curve's "size" here: tau in us).
+TEST(PulseArea, SizeReadOffTheModelsCurve)
+{
+  PulseAreaSettings s;
+  for (double tau : {20.0, 60.0, 120.0, 200.0}) {
+    const Signal r = record(tau * 1e-6, 409.7, 1e6);
+    s.rel_height = 1;
+    const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+    ASSERT_TRUE(std::isfinite(e.window_rel_area_s));
+    // a rectangle's area over the level: its height times its length
+    EXPECT_NEAR(e.window_rel_area_s / (0.45 * tau * 1e-6), 1, 0.01) << tau;
+    s.curve_size_deg.push_back(tau);
+    s.curve_rel_area_s.push_back(e.window_rel_area_s);
+  }
+  s.rel_height = 0;
+  const Signal r = record(90e-6, 409.7, 2e4);
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  ASSERT_TRUE(e.valid) << e.note;
+  EXPECT_NEAR(e.size_deg, 90, 3);
+  EXPECT_LE(e.size_lo_deg, e.size_deg);
+  EXPECT_GE(e.size_hi_deg, e.size_deg);
+  // beyond the curve: no size
+  const Signal big = record(300e-6, 409.7, 2e4);
+  EXPECT_FALSE(size_from_pulse_area(big.x, big.rate, big.t0, 409.7, "outer", s).valid);
+}
+
+TEST(PulseArea, NoModelHeightNoSize)
+{
+  const Signal r = record(60e-6, 409.7, 2e4);
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", {});
+  EXPECT_FALSE(e.valid);
+  EXPECT_EQ(e.note, "no model pulse height");
+}
+
+}  // namespace
+}  // namespace ohmdem::post
