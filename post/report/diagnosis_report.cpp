@@ -190,6 +190,8 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("domain", c.in_orders ? "orders" : "time");
   j.set("bearing", c.options.geometry.name);
   if (c.run_defect) j.set("run_defect", *c.run_defect);
+  // A simulated signal at the numerical floor: its statistics describe numerical blips.
+  j.set("numerical_floor", c.numerical_floor.empty() ? Json() : Json(c.numerical_floor));
   j.set("meta", meta_json(meta));
   return j;
 }

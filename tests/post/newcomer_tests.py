@@ -56,6 +56,12 @@ def diagnose_floor(a, work):
           f"healthy (exit {r.returncode}): "
           f"{[l for l in r.stdout.splitlines() if l.startswith(('floor', 'verdict'))]}")
     failed |= not ok
+    r = subprocess.run([a.post, "diagnose", "--format", "json",
+                        os.path.join(work, "healthy", "signal.txt")], capture_output=True, text=True)
+    floor = json.loads(r.stdout).get("numerical_floor") if r.returncode == 0 else None
+    ok = isinstance(floor, str) and "numerical floor" in floor
+    print(("ok   " if ok else "FAIL ") + f"the JSON carries it: numerical_floor = {floor!r}")
+    failed |= not ok
     noisy = [1.3838 * (1 + 1e-2 * rng.gauss(0, 1)) for _ in range(4000)]
     r = subprocess.run([a.post, "diagnose", run_folder(work, "noisy", noisy)],
                        capture_output=True, text=True)
