@@ -136,13 +136,12 @@ double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context,
 // The per-contact physics, one contact at a time: a pressed contact's film and admittance
 // (its metallic part is half the ball's dry path: 2 g_ball, the two in series give g_ball),
 // or the capacitance of the gap to a race the ball does not press.
-LubricatedContact LubricatedBearing::contact(int i, int side, double g_ball,
-                                             lub::ContactAdmittance &film)
+void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmittance &film,
+                                LubricatedContact &out)
 {
   const FixBearingRace &race = *race_[side];
   const ohmdem::RaceContactView view = race.contact_of(i);
   const double *x = atom->x[i], *v = atom->v[i];
-  LubricatedContact out;
   out.tag = static_cast<std::int64_t>(atom->tag[i]);
   out.side = side;
   if (!(view.fn() > 0.0)) {
@@ -152,7 +151,7 @@ LubricatedContact LubricatedBearing::contact(int i, int side, double g_ball,
     out.y = {0.0, omega() * out.c};
     out.h_central = out.h_min = gap;
     out.lambda = gap / settings_.roughness;
-    return out;
+    return;
   }
   const double speed =
       entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), race);
@@ -167,7 +166,6 @@ LubricatedContact LubricatedBearing::contact(int i, int side, double g_ball,
   out.lambda = c.lambda;
   out.c = c.capacitance();
   out.g = c.g;
-  return out;
 }
 
 void LubricatedBearing::break_down(LubricatedContact pair[2],
@@ -201,10 +199,12 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     // The closed form's conductance of this step where it has one (NaN: it has none).
     const double g_ball =
         g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
-    lub::ContactAdmittance film[2];
+    // The films of the ball's pressed contacts (break_down reads only those): kept between
+    // balls rather than zeroed for each.
+    lub::ContactAdmittance *const film = films_;
     for (int side = 0; side < 2; ++side) {
-      contacts_.push_back(contact(i, side, g_ball, film[side]));
-      const LubricatedContact &c = contacts_.back();
+      LubricatedContact &c = contacts_.emplace_back();
+      contact(i, side, g_ball, film[side], c);
       if (!c.loaded) continue;
       const int k = inner_[side];
       hmin[k] = std::min(hmin[k], c.h_min);

@@ -80,11 +80,11 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // The per-contact physics: the record of ball i's contact with race `side`; g_ball is the
-  // ball's dry (metallic) conductance between its two races; `film` gets a pressed
-  // contact's admittance (what film breakdown needs).
-  LubricatedContact contact(int i, int side, double g_ball,
-                            ohmdem::lubrication::ContactAdmittance &film);
+  // The per-contact physics: the record `out` (fresh) of ball i's contact with race `side`; g_ball
+  // is the ball's dry (metallic) conductance between its two races; `film` gets a pressed contact's
+  // admittance (what film breakdown needs).
+  void contact(int i, int side, double g_ball, ohmdem::lubrication::ContactAdmittance &film,
+               LubricatedContact &out);
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
   // field times its gap conducts through its metal (doc/lubricated_contact.md).
   void break_down(LubricatedContact pair[2],
@@ -100,6 +100,7 @@ class LubricatedBearing : protected Pointers {
   const FixBearingRace *race_[2] = {nullptr, nullptr};
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
+  ohmdem::lubrication::ContactAdmittance films_[2];  // scratch of evaluate()
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;

@@ -15,6 +15,19 @@ namespace ohmdem::lubrication {
 using gap_forms::form_mean;
 using gap_forms::FormMean;
 
+namespace {
+// e^z for |z| < 0.25 by its Taylor series to z^13 (z^14/14! < 1e-19): no range reduction.
+double exp_small(double z)
+{
+  double p = 1.0 / 6227020800.0;
+  for (const double c :
+       {1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
+        1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0})
+    p = c + z * p;
+  return p;
+}
+}  // namespace
+
 RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
 {
   // ehl_film.cpp's prefactors and ellipticity factors, k = a/b (load-independent).
@@ -38,11 +51,17 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
     wt_[2 * i] = w[i] * t_[2 * i];
     wt_[2 * i + 1] = w[i] * t_[2 * i + 1];
   }
+  // As partial fractions, eps = be/de + (al - be ga/de)/(ga + de q): one division per node.
   const double kcm = (in.eps_r - 1.0) / (in.eps_r + 2.0);
-  al_ = 1.0 + 2.0 * kcm;
-  be_ = 1.7 + 4.6 * kcm;
-  ga_ = 1.0 - kcm;
-  de_ = 1.7 - 2.3 * kcm;
+  const double al = 1.0 + 2.0 * kcm, be = 1.7 + 4.6 * kcm, ga = 1.0 - kcm, de = 1.7 - 2.3 * kcm;
+  ga_ = ga;
+  double sum_wt = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    sum_wt += wt_[i];
+    dt_[i] = de * t_[i];
+  }
+  eps_const_ = be / de * sum_wt;
+  eps_pole_ = al - be * ga / de;
   // The gap integral's race terms.
   p_ = 2.0 * in.rx;
   q_ = 2.0 * in.ry;
@@ -53,16 +72,23 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
   scale_ = kEpsilon0 * in.eps_r * std::sqrt(in.rx * in.ry) * 2.0 * kPi;
 }
 
-ContactAdmittance RaceAdmittance::contact(double fn, double speed, double g_dry,
-                                          double recess) const
+void RaceAdmittance::contact(double fn, double speed, double g_dry, double recess,
+                             ContactAdmittance &c) const
 {
-  ContactAdmittance c;
   const double cb = cbrt_fast(fn);
   const double a = in_.a_coef * cb, b = in_.b_coef * cb;  // HertzContact::ellipse
+  c.film = Film{};
+  c.c_hertz = 0.0;
   if (speed > 0.0 && fn > 0.0) {
     const double ls = log_fast(speed), lw = log_fast(fn);
-    c.film.central = central_ * exp_fast(0.67 * ls - 0.067 * lw) * ell_central_;
-    c.film.minimum = minimum_ * exp_fast(0.68 * ls - 0.073 * lw) * ell_minimum_;
+    const double central_power = exp_fast(0.67 * ls - 0.067 * lw);
+    c.film.central = central_ * central_power * ell_central_;
+    // h_min / h_c = (its prefactors) exp(0.01 ls - 0.006 lw): a small argument, a short series.
+    const double z = 0.01 * ls - 0.006 * lw;
+    c.film.minimum =
+        minimum_ *
+        (std::fabs(z) < 0.25 ? central_power * exp_small(z) : exp_fast(0.68 * ls - 0.073 * lw)) *
+        ell_minimum_;
   }
   c.lambda = film_parameter(c.film.minimum, in_.sigma);
   c.gap = c.film.minimum + recess;
@@ -81,8 +107,9 @@ ContactAdmittance RaceAdmittance::contact(double fn, double speed, double g_dry,
   c.g = c.metallic * g_dry;
   if (film && free > 0.0) {
     const double q0 = 1.5 * fn / area * 1e-9;  // Hertz peak pressure (GPa)
-    double eps = 0.0;
-    for (int i = 0; i < 8; ++i) eps += wt_[i] * (al_ + be_ * q0 * t_[i]) / (ga_ + de_ * q0 * t_[i]);
+    double sum = 0.0;
+    for (int i = 0; i < 8; ++i) sum += wt_[i] / (ga_ + q0 * dt_[i]);
+    const double eps = eps_const_ + eps_pole_ * sum;
     c.c_hertz = free * kEpsilon0 * eps * area / h;
     c.g += free * leak;
   }
@@ -90,7 +117,7 @@ ContactAdmittance RaceAdmittance::contact(double fn, double speed, double g_dry,
   const double h0 = std::max(c.film.central, in_.sigma) + recess;
   if (!(in_.r_wet > a && in_.r_wet > b && a > 0.0 && b > 0.0)) {
     c.c_outer = gap_capacitance(GapGeometry{h0, in_.rx, in_.ry, a, b, in_.r_wet}, in_.eps_r);
-    return c;
+    return;
   }
   const FormMean out = form_mean(std::sqrt(h0 * p_ + r2_), std::sqrt(h0 * q_ + r2_));
   const double sp = std::sqrt(p_) / b, sq = std::sqrt(q_) / a;
@@ -98,7 +125,6 @@ ContactAdmittance RaceAdmittance::contact(double fn, double speed, double g_dry,
   const FormMean pq_in = form_mean(sp, sq);
   const double x = out.s * pq_in.s / (pq_s_ * in.s), y = out.y * pq_in.y / (pq_y_ * in.y);
   c.c_outer = scale_ * (2.0 * log_fast(x) + gap_forms::aliasing(y, log_fast));
-  return c;
 }
 
 double RaceAdmittance::idle(double gap) const

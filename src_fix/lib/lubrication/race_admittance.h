@@ -35,7 +35,14 @@ class RaceAdmittance {
   // erfc when erfc(x) <= e^(-x^2) / (x sqrt(pi)) (x > 0) is below both 2^-54 (then 1 - f is 1
   // exactly, so C does not change in any bit) and 1e-17 of the leakage over g_dry (then G
   // changes by less than 1e-17 relative).
-  ContactAdmittance contact(double fn, double speed, double g_dry, double recess) const;
+  // Written into c (every field): the bearing's loop fills its records in place.
+  void contact(double fn, double speed, double g_dry, double recess, ContactAdmittance &c) const;
+  ContactAdmittance contact(double fn, double speed, double g_dry, double recess) const
+  {
+    ContactAdmittance c;
+    contact(fn, speed, g_dry, recess, c);
+    return c;
+  }
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
 
@@ -44,9 +51,10 @@ class RaceAdmittance {
   double central_ = 0, minimum_ = 0;  // Hamrock-Dowson prefactor times ellipticity factor
   double ell_central_ = 0, ell_minimum_ = 0;
   double area_coef_ = 0;  // pi a b at 1 N
-  // The pressure-raised permittivity: nodes t and weights w t, eps = (al + be q)/(ga + de q).
-  std::array<double, 8> t_{}, wt_{};
-  double al_ = 0, be_ = 0, ga_ = 0, de_ = 0;
+  // The pressure-raised permittivity: nodes t and weights w t, eps = (al + be q)/(ga + de q)
+  // = eps_const_ / sum(w t) + eps_pole_ / (ga + de q); dt_ = de t.
+  std::array<double, 8> t_{}, wt_{}, dt_{};
+  double ga_ = 0, eps_const_ = 0, eps_pole_ = 0;
   // The gap integral (contact_admittance.cpp, gap_capacitance): 2 rx, 2 ry, r_wet^2, the
   // form means of (sqrt(2 rx), sqrt(2 ry)), and eps0 eps_r sqrt(rx ry) 2 pi.
   double p_ = 0, q_ = 0, r2_ = 0, pq_s_ = 0, pq_y_ = 1, scale_ = 0;
