@@ -331,7 +331,10 @@ void ComputeNetworkResistance::evaluate()
   }
   report(r);
   const bool due = exports_->due(update->ntimestep);
-  if (lubricated_) lube_result_ = lubricated_->evaluate(context_, due);
+  if (lubricated_)
+    lube_result_ = lubricated_->evaluate(
+        context_, due,
+        last_path_ == closed_form_path_.get() ? closed_form_path_->ball_conductances() : nullptr);
   if (last_path_ == gathered_.get() && comm->me == 0) {
     // With a lubricant the netlist is the AC one of the impedance (lubricated_network.h).
     auto ac = [&](std::ostream &os) {

@@ -18,6 +18,7 @@
 #include "common/constants.h"
 #include "error.h"
 #include "lubrication/contact_admittance.h"
+#include "lubrication/race_admittance.h"
 
 using namespace LAMMPS_NS;
 namespace lub = ohmdem::lubrication;
@@ -82,6 +83,28 @@ void LubricatedBearing::set_geometry(const ResistanceContext &context)
                                   contacts.race_geometry(low),
                                   context.gamma_type[races[high]->race_type()],
                                   context.gamma_type[races[low]->race_type()], context.gamma_type);
+  // What a race's contacts share (lib/lubrication/race_admittance.h): once per run.
+  for (int side = 0; side < 2; ++side) {
+    const int k = side == 0 ? high : low;
+    race_[side] = races[k];
+    const ohmdem::HertzContact &hertz = contacts.race_geometry(k);
+    const ohmdem::CurvatureSums sums = hertz.sums();
+    const ohmdem::ContactEllipse unit = hertz.ellipse(1.0);  // a = a(1 N) fn^(1/3)
+    lub::RaceInput in;
+    in.rx = 1.0 / sums.A;
+    in.ry = 1.0 / sums.B;
+    in.e_prime = 2.0 * hertz.E_eff();
+    in.a_coef = unit.a;
+    in.b_coef = unit.b;
+    in.eta = state_.eta;
+    in.alpha = state_.alpha;
+    in.sigma = settings_.roughness;
+    in.r_wet = settings_.wetted;
+    in.eps_r = state_.eps_r;
+    in.resistivity = state_.resistivity;
+    film_[side] = lub::RaceAdmittance(in);
+    inner_[side] = races[k]->is_inner() ? 0 : 1;
+  }
 }
 
 LubricatedBearing::~LubricatedBearing() = default;
@@ -113,50 +136,28 @@ double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context,
 // The per-contact physics, one contact at a time: a pressed contact's film and admittance
 // (its metallic part is half the ball's dry path: 2 g_ball, the two in series give g_ball),
 // or the capacitance of the gap to a race the ball does not press.
-LubricatedContact LubricatedBearing::contact(const ResistanceContext &context, int i, int side,
-                                             double g_ball, lub::ContactAdmittance &film)
+void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmittance &film,
+                                LubricatedContact &out)
 {
-  ContactSet &contacts = *context.contacts;
-  const int k = side == 0 ? context.high.index : context.low.index;
-  const FixBearingRace &race = *contacts.races()[k];
+  const FixBearingRace &race = *race_[side];
   const ohmdem::RaceContactView view = race.contact_of(i);
   const double *x = atom->x[i], *v = atom->v[i];
-  const double r = atom->radius[i];
-  const ohmdem::HertzContact &hertz = contacts.race_geometry(k);
-  const ohmdem::CurvatureSums sums = hertz.sums();
-  const double rx = 1.0 / sums.A, ry = 1.0 / sums.B;
-  LubricatedContact out;
   out.tag = static_cast<std::int64_t>(atom->tag[i]);
   out.side = side;
   if (!(view.fn() > 0.0)) {
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
-    const double gap = std::max(race_gap(x, r, race), 0.0) + race.recess_of(i);
-    out.c =
-        lub::idle_gap_capacitance(gap, rx, ry, settings_.wetted, state_.eps_r, settings_.roughness);
+    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + race.recess_of(i);
+    out.c = film_[side].idle(gap);
     out.y = {0.0, omega() * out.c};
     out.h_central = out.h_min = gap;
     out.lambda = gap / settings_.roughness;
-    return out;
+    return;
   }
-  const ohmdem::ContactEllipse e = hertz.ellipse(view.fn());
-  lub::ContactInput in;
-  in.film.load = view.fn();
-  in.film.speed = entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), race);
-  in.film.rx = rx;
-  in.film.ry = ry;
-  in.film.e_prime = 2.0 * hertz.E_eff();
-  in.film.eta = state_.eta;
-  in.film.alpha = state_.alpha;
-  in.film.k = e.a / e.b;
-  in.a = e.a;
-  in.b = e.b;
-  in.sigma = settings_.roughness;
-  in.r_wet = settings_.wetted;
-  in.eps_r = state_.eps_r;
-  in.resistivity = state_.resistivity;
-  in.g_dry = view.conducts() ? 2.0 * g_ball : 0.0;  // a defect zone: no metal
-  in.recess = race.recess_of(i);                    // over a pit the gap grows
-  film = lub::contact_admittance(in);
+  const double speed =
+      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), race);
+  film = film_[side].contact(view.fn(), speed,
+                             view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+                             race.recess_of(i));                    // over a pit the gap grows
   const lub::ContactAdmittance &c = film;
   out.loaded = true;
   out.y = c.y(omega());
@@ -165,7 +166,6 @@ LubricatedContact LubricatedBearing::contact(const ResistanceContext &context, i
   out.lambda = c.lambda;
   out.c = c.capacitance();
   out.g = c.g;
-  return out;
 }
 
 void LubricatedBearing::break_down(LubricatedContact pair[2],
@@ -185,10 +185,10 @@ void LubricatedBearing::break_down(LubricatedContact pair[2],
   }
 }
 
-LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, bool gather)
+LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
+                                             const double *g_dry)
 {
   if (!geometry_ready_) set_geometry(context);
-  const auto &races = context.contacts->races();
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 
@@ -196,13 +196,17 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   balls_.clear();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
-    const double g_ball = ball_dry_conductance(context, i);
-    lub::ContactAdmittance film[2];
+    // The closed form's conductance of this step where it has one (NaN: it has none).
+    const double g_ball =
+        g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
+    // The films of the ball's pressed contacts (break_down reads only those): kept between
+    // balls rather than zeroed for each.
+    lub::ContactAdmittance *const film = films_;
     for (int side = 0; side < 2; ++side) {
-      contacts_.push_back(contact(context, i, side, g_ball, film[side]));
-      const LubricatedContact &c = contacts_.back();
+      LubricatedContact &c = contacts_.emplace_back();
+      contact(i, side, g_ball, film[side], c);
       if (!c.loaded) continue;
-      const int k = races[side == 0 ? context.high.index : context.low.index]->is_inner() ? 0 : 1;
+      const int k = inner_[side];
       hmin[k] = std::min(hmin[k], c.h_min);
       lambda_min = std::min(lambda_min, c.lambda);
     }

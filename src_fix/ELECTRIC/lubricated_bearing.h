@@ -19,6 +19,7 @@
 #include "conduction/conduction_model.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/lubricant.h"
+#include "lubrication/race_admittance.h"
 #include "pointers.h"
 
 namespace LAMMPS_NS {
@@ -54,6 +55,7 @@ struct LubricatedContact {
   double c = 0, g = 0;                          // capacitance (F), conductance (S)
 };
 
+class FixBearingRace;
 class LubricatedNetwork;
 
 class LubricatedBearing : protected Pointers {
@@ -67,8 +69,10 @@ class LubricatedBearing : protected Pointers {
   void init(const ResistanceContext &context);
   ~LubricatedBearing() override;
   // Collective: this step's impedance; `gather` (an export step) also gathers the records
-  // of all processes (network()) when the closed form runs.
-  LubricatedResult evaluate(const ResistanceContext &context, bool gather = false);
+  // of all processes (network()) when the closed form runs. g_dry: the dry closed form's
+  // conductance of this step per local atom (NaN where it has none), or null.
+  LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
+                            const double *g_dry = nullptr);
   // This process's records of the last evaluation (two per ball, high race first).
   const std::vector<LubricatedContact> &contacts() const { return contacts_; }
   const LubricatedNetwork &network() const { return *network_; }
@@ -76,11 +80,11 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // The per-contact physics: the record of ball i's contact with race `side`; g_ball is the
-  // ball's dry (metallic) conductance between its two races; `film` gets a pressed
-  // contact's admittance (what film breakdown needs).
-  LubricatedContact contact(const ResistanceContext &context, int i, int side, double g_ball,
-                            ohmdem::lubrication::ContactAdmittance &film);
+  // The per-contact physics: the record `out` (fresh) of ball i's contact with race `side`; g_ball
+  // is the ball's dry (metallic) conductance between its two races; `film` gets a pressed contact's
+  // admittance (what film breakdown needs).
+  void contact(int i, int side, double g_ball, ohmdem::lubrication::ContactAdmittance &film,
+               LubricatedContact &out);
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
   // field times its gap conducts through its metal (doc/lubricated_contact.md).
   void break_down(LubricatedContact pair[2],
@@ -92,6 +96,11 @@ class LubricatedBearing : protected Pointers {
   std::string path_;
   ohmdem::lubrication::LubricantState state_;
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
+  // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
+  const FixBearingRace *race_[2] = {nullptr, nullptr};
+  ohmdem::lubrication::RaceAdmittance film_[2];
+  int inner_[2] = {0, 1};
+  ohmdem::lubrication::ContactAdmittance films_[2];  // scratch of evaluate()
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;

@@ -56,9 +56,12 @@ bool ClosedFormPath::evaluate(double *phi, PathResult &result)
 
   balls_.resize(nlocal);
   ohmdem::TaggedValues<3> *out = balls_.data();
+  g_local_.resize(nlocal);
+  double *const g_local = g_local_.data();
   int nballs = 0, other = 0;
   for (int i = 0; i < nlocal; ++i) {
     phi[i] = 0.0;  // potential / V_high, scaled once R is known
+    g_local[i] = std::numeric_limits<double>::quiet_NaN();
     if (!(mask[i] & bit)) continue;
     for (const FixBearingRace *race : other_races_)
       if (race->contact_of(i).conducts()) ++other;
@@ -76,6 +79,7 @@ bool ClosedFormPath::evaluate(double *phi, PathResult &result)
     const double w[3] = {cl.point_x() - x[i][0], cl.point_y() - x[i][1], 0.0};
     const double conductance = model.conductance(type[i], gamma, radius[i], ch.fn(), cl.fn(), u, w);
     phi[i] = 0.5;
+    g_local[i] = conductance;
     out[nballs++] = {static_cast<std::int64_t>(tag[i]), {conductance, 1.0, 0.0}};
   }
   balls_.resize(nballs);

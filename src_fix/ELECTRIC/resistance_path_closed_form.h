@@ -30,6 +30,10 @@ class ClosedFormPath : public ResistancePath, protected Pointers {
   bool evaluate(double *phi, PathResult &result) override;
   // Each ball joining both races is one resistor carrying g_ball * V.
   void contact_flows(std::vector<ohmdem::ContactFlow> &rows) override;
+  // Per local atom, the conductance of a ball joining both races at the last evaluation (NaN
+  // for any other atom): the lubricated bearing's metallic path reads it instead of
+  // computing it again.
+  const double *ball_conductances() const { return g_local_.data(); }
 
  private:
   void set_geometry();  // at the first evaluation: the races' geometry is known then
@@ -41,6 +45,7 @@ class ClosedFormPath : public ResistancePath, protected Pointers {
   // Per local ball: conductance, 1 if it joins the races, 1 if a dead end.
   std::vector<ohmdem::TaggedValues<3> > balls_;
   ohmdem::OrderedGather<3> balls_gather_;
+  std::vector<double> g_local_;
   double resistance_ = 0;  // of the last evaluation
 };
 

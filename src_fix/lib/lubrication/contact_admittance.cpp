@@ -8,14 +8,14 @@
 #include <limits>
 
 #include "common/constants.h"
+#include "lubrication/gap_forms.h"
 #include "lubrication/keyed_cache.h"
 
 namespace ohmdem::lubrication {
 
-namespace {
-// Midpoints of a quarter turn: the gap integrand is even in x and in y.
-constexpr int kQuarter = 32;
-}  // namespace
+using gap_forms::form_mean;
+using gap_forms::FormMean;
+using gap_forms::kQuarter;
 
 double permittivity_at_pressure(double eps_r, double p)
 {
@@ -91,33 +91,6 @@ const RaceGap &race_gap(double rx, double ry, double r_wet)
 }
 using Boundary = std::array<double, kQuarter>;
 
-// The midpoint rule on M = 4 kQuarter angles applied to ln(A cos^2 + B sin^2), in closed
-// form: with sA = sqrt A, sB = sqrt B, A cos^2 + B sin^2 = ((sA + sB)/2)^2 |1 + rho e^(2i phi)|^2,
-// rho = (sA - sB)/(sA + sB), and the mean of cos(2 n phi) over the midpoints is (-1)^k for
-// 2n = k M, else 0, so the rule gives 2 ln((sA + sB)/2) + (4/M) ln(1 + rho^(M/2)) -- the
-// exact integral plus the rule's own aliasing term, i.e. the same number as the sum of the
-// M logarithms. Returns sA + sB and 1 + rho^(M/2).
-struct FormMean {
-  double s = 0, y = 1;
-};
-// ln(y) / kQuarter for the aliasing terms' y = 1 + eps: mostly |eps| < 1e-6, where four
-// terms of the series leave an error below eps^5 / 5 (1e-31): no logarithm.
-double aliasing(double y)
-{
-  const double e = y - 1.0;
-  if (std::fabs(e) < 1e-6) return e * (1.0 - e * (0.5 - e * (1.0 / 3.0 - 0.25 * e))) / kQuarter;
-  return std::log(y) / kQuarter;
-}
-
-FormMean form_mean(double sa, double sb)
-{
-  static_assert(kQuarter == 32, "rho^(M/2) = rho^64 below");
-  const double s = sa + sb;
-  double r = (sa - sb) / s;
-  for (int i = 0; i < 6; ++i) r *= r;
-  return {s, 1.0 + r};
-}
-
 // sum over the angles of ln((h0 + s_out^2)/(h0 + s_in^2)), a logarithm per angle.
 double log_sum(const GapGeometry &g, const Boundary &s_out2)
 {
@@ -149,14 +122,16 @@ double gap_capacitance(const GapGeometry &g, double eps_r)
   const FormMean pq = form_mean(race.sqrt_p, race.sqrt_q);
   if (!(g.a > 0.0 && g.b > 0.0)) {
     const double x = out.s / (pq.s * std::sqrt(g.h0)), y = out.y / pq.y;
-    return scale * (2.0 * std::log(x) + aliasing(y));
+    return scale *
+           (2.0 * std::log(x) + gap_forms::aliasing(y, [](double v) { return std::log(v); }));
   }
   if (g.r_wet > g.a && g.r_wet > g.b) {
     const double sp = std::sqrt(p) / g.b, sq = std::sqrt(q) / g.a;  // sqrt P', sqrt Q'
     const FormMean in = form_mean(std::sqrt(g.h0 * sp * sp + 1.0), std::sqrt(g.h0 * sq * sq + 1.0));
     const FormMean pq_in = form_mean(sp, sq);
     const double x = out.s * pq_in.s / (pq.s * in.s), y = out.y * pq_in.y / (pq.y * in.y);
-    return scale * (2.0 * std::log(x) + aliasing(y));
+    return scale *
+           (2.0 * std::log(x) + gap_forms::aliasing(y, [](double v) { return std::log(v); }));
   }
   // The ellipse reaches past the wetted circle: angle by angle, as the logarithm of one
   // product (every factor >= 1) without a division: with e = 1/s_in^2,

@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// A race's contacts with its constants computed once; see race_admittance.h.
+#include "lubrication/race_admittance.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/constants.h"
+#include "common/fast_cbrt.h"
+#include "common/fast_exp_log.h"
+#include "lubrication/gap_forms.h"
+
+namespace ohmdem::lubrication {
+
+using gap_forms::form_mean;
+using gap_forms::FormMean;
+
+namespace {
+// e^z for |z| < 0.25 by its Taylor series to z^13 (z^14/14! < 1e-19): no range reduction.
+double exp_small(double z)
+{
+  double p = 1.0 / 6227020800.0;
+  for (const double c :
+       {1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
+        1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0})
+    p = c + z * p;
+  return p;
+}
+}  // namespace
+
+RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
+{
+  // ehl_film.cpp's prefactors and ellipticity factors, k = a/b (load-independent).
+  const double eta = in.eta, e = in.e_prime, rx = in.rx, alpha = in.alpha;
+  const double lu = std::log(eta / (e * rx)), lg = std::log(alpha * e),
+               lw = std::log(1.0 / (e * rx * rx));
+  central_ = rx * 2.69 * std::exp(0.67 * lu + 0.53 * lg - 0.067 * lw);
+  minimum_ = rx * 3.63 * std::exp(0.68 * lu + 0.49 * lg - 0.073 * lw);
+  const double k = in.a_coef / in.b_coef;
+  ell_central_ = 1.0 - 0.61 * std::exp(-0.73 * k);
+  ell_minimum_ = 1.0 - std::exp(-0.68 * k);
+  area_coef_ = kPi * in.a_coef * in.b_coef;
+  // hertz_mean_permittivity's nodes; (d + 2 K n)/(d - K n) with d = 1 + 1.7 q, n = 1 + 2.3 q.
+  const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
+                       0.9602898564975363};
+  const double w[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745,
+                       0.1012285362903763};
+  for (int i = 0; i < 4; ++i) {
+    t_[2 * i] = 0.5 * (1.0 - x[i]);
+    t_[2 * i + 1] = 0.5 * (1.0 + x[i]);
+    wt_[2 * i] = w[i] * t_[2 * i];
+    wt_[2 * i + 1] = w[i] * t_[2 * i + 1];
+  }
+  // As partial fractions, eps = be/de + (al - be ga/de)/(ga + de q): one division per node.
+  const double kcm = (in.eps_r - 1.0) / (in.eps_r + 2.0);
+  const double al = 1.0 + 2.0 * kcm, be = 1.7 + 4.6 * kcm, ga = 1.0 - kcm, de = 1.7 - 2.3 * kcm;
+  ga_ = ga;
+  double sum_wt = 0.0;
+  for (int i = 0; i < 8; ++i) {
+    sum_wt += wt_[i];
+    dt_[i] = de * t_[i];
+  }
+  eps_const_ = be / de * sum_wt;
+  eps_pole_ = al - be * ga / de;
+  // The gap integral's race terms.
+  p_ = 2.0 * in.rx;
+  q_ = 2.0 * in.ry;
+  r2_ = in.r_wet * in.r_wet;
+  const FormMean pq = form_mean(std::sqrt(p_), std::sqrt(q_));
+  pq_s_ = pq.s;
+  pq_y_ = pq.y;
+  scale_ = kEpsilon0 * in.eps_r * std::sqrt(in.rx * in.ry) * 2.0 * kPi;
+}
+
+void RaceAdmittance::contact(double fn, double speed, double g_dry, double recess,
+                             ContactAdmittance &c) const
+{
+  const double cb = cbrt_fast(fn);
+  const double a = in_.a_coef * cb, b = in_.b_coef * cb;  // HertzContact::ellipse
+  c.film = Film{};
+  c.c_hertz = 0.0;
+  if (speed > 0.0 && fn > 0.0) {
+    const double ls = log_fast(speed), lw = log_fast(fn);
+    const double central_power = exp_fast(0.67 * ls - 0.067 * lw);
+    c.film.central = central_ * central_power * ell_central_;
+    // h_min / h_c = (its prefactors) exp(0.01 ls - 0.006 lw): a small argument, a short series.
+    const double z = 0.01 * ls - 0.006 * lw;
+    c.film.minimum =
+        minimum_ *
+        (std::fabs(z) < 0.25 ? central_power * exp_small(z) : exp_fast(0.68 * ls - 0.073 * lw)) *
+        ell_minimum_;
+  }
+  c.lambda = film_parameter(c.film.minimum, in_.sigma);
+  c.gap = c.film.minimum + recess;
+  c.g_dry = g_dry;
+  const double area = kPi * a * b;
+  const double h = c.film.central + recess;
+  const bool film = h > 0.0 && area > 0.0;
+  const double leak = film ? area / (in_.resistivity * h) : 0.0;
+  // The metallic fraction, or 0 when it cannot matter (race_admittance.h).
+  const double xm = (recess > 0.0 ? film_parameter(c.gap, in_.sigma) : c.lambda) / std::sqrt(2.0);
+  // (2^-54 needs x > 5.9: below 5.5 the bound is not worth its exponential.)
+  const double bound = xm > 5.5 ? exp_fast(-xm * xm) / (xm * std::sqrt(kPi)) : 1.0;
+  const bool negligible = bound <= 0x1p-54 && bound * g_dry <= 1e-17 * leak;
+  c.metallic = negligible ? 0.0 : std::erfc(xm);
+  const double free = 1.0 - c.metallic;
+  c.g = c.metallic * g_dry;
+  if (film && free > 0.0) {
+    const double q0 = 1.5 * fn / area * 1e-9;  // Hertz peak pressure (GPa)
+    double sum = 0.0;
+    for (int i = 0; i < 8; ++i) sum += wt_[i] / (ga_ + q0 * dt_[i]);
+    const double eps = eps_const_ + eps_pole_ * sum;
+    c.c_hertz = free * kEpsilon0 * eps * area / h;
+    c.g += free * leak;
+  }
+  // gap_capacitance's closed form while the wetted circle holds the ellipse.
+  const double h0 = std::max(c.film.central, in_.sigma) + recess;
+  if (!(in_.r_wet > a && in_.r_wet > b && a > 0.0 && b > 0.0)) {
+    c.c_outer = gap_capacitance(GapGeometry{h0, in_.rx, in_.ry, a, b, in_.r_wet}, in_.eps_r);
+    return;
+  }
+  const FormMean out = form_mean(std::sqrt(h0 * p_ + r2_), std::sqrt(h0 * q_ + r2_));
+  const double sp = std::sqrt(p_) / b, sq = std::sqrt(q_) / a;
+  const FormMean in = form_mean(std::sqrt(h0 * sp * sp + 1.0), std::sqrt(h0 * sq * sq + 1.0));
+  const FormMean pq_in = form_mean(sp, sq);
+  const double x = out.s * pq_in.s / (pq_s_ * in.s), y = out.y * pq_in.y / (pq_y_ * in.y);
+  c.c_outer = scale_ * (2.0 * log_fast(x) + gap_forms::aliasing(y, log_fast));
+}
+
+double RaceAdmittance::idle(double gap) const
+{
+  const double h0 = std::max(gap, in_.sigma);
+  const FormMean out = form_mean(std::sqrt(h0 * p_ + r2_), std::sqrt(h0 * q_ + r2_));
+  const double x = out.s / (pq_s_ * std::sqrt(h0)), y = out.y / pq_y_;
+  return scale_ * (2.0 * log_fast(x) + gap_forms::aliasing(y, log_fast));
+}
+
+}  // namespace ohmdem::lubrication

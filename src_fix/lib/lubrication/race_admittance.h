@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The contacts of one race, evaluated for every ball at every step: contact_admittance() and
+// idle_gap_capacitance() with everything that depends only on the race and the oil computed
+// once (the Hamrock-Dowson prefactors and ellipticity factors, the Hertz ellipse at 1 N, the
+// gap integral's race terms, the permittivity's Gauss nodes), the inline logarithm and
+// exponential of common/fast_exp_log.h, and no erfc where the metallic fraction cannot change
+// the result (below). Same equations as contact_admittance.h; the results agree with it to a
+// few ulp (tests/lib/lubrication/test_race_admittance.cpp). Plain C++;
+// doc/lubricated_contact.md, "Speed".
+#ifndef OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
+#define OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
+
+#include <array>
+
+#include "lubrication/contact_admittance.h"
+
+namespace ohmdem::lubrication {
+
+// A race's constants for one run.
+struct RaceInput {
+  double rx = 0, ry = 0;          // effective radii (m), rolling direction and across it
+  double e_prime = 0;             // E' (Pa)
+  double a_coef = 0, b_coef = 0;  // Hertz semi-axes at 1 N (m): a = a_coef fn^(1/3)
+  double eta = 0, alpha = 0;      // oil at the temperature
+  double sigma = 0, r_wet = 0, eps_r = 0, resistivity = 0;  // as in ContactInput
+};
+
+class RaceAdmittance {
+ public:
+  RaceAdmittance() = default;
+  explicit RaceAdmittance(const RaceInput &in);
+  // contact_admittance() of a contact of this race under the load fn > 0 (N) at the mean
+  // entrainment speed `speed` (m/s), its Hertz ellipse a = a_coef fn^(1/3), b = b_coef fn^(1/3).
+  // The metallic fraction f = erfc(x) (x = gap / (sigma sqrt 2)) is set to 0 without calling
+  // erfc when erfc(x) <= e^(-x^2) / (x sqrt(pi)) (x > 0) is below both 2^-54 (then 1 - f is 1
+  // exactly, so C does not change in any bit) and 1e-17 of the leakage over g_dry (then G
+  // changes by less than 1e-17 relative).
+  // Written into c (every field): the bearing's loop fills its records in place.
+  void contact(double fn, double speed, double g_dry, double recess, ContactAdmittance &c) const;
+  ContactAdmittance contact(double fn, double speed, double g_dry, double recess) const
+  {
+    ContactAdmittance c;
+    contact(fn, speed, g_dry, recess, c);
+    return c;
+  }
+  // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
+  double idle(double gap) const;
+
+ private:
+  RaceInput in_;
+  double central_ = 0, minimum_ = 0;  // Hamrock-Dowson prefactor times ellipticity factor
+  double ell_central_ = 0, ell_minimum_ = 0;
+  double area_coef_ = 0;  // pi a b at 1 N
+  // The pressure-raised permittivity: nodes t and weights w t, eps = (al + be q)/(ga + de q)
+  // = eps_const_ / sum(w t) + eps_pole_ / (ga + de q); dt_ = de t.
+  std::array<double, 8> t_{}, wt_{}, dt_{};
+  double ga_ = 0, eps_const_ = 0, eps_pole_ = 0;
+  // The gap integral (contact_admittance.cpp, gap_capacitance): 2 rx, 2 ry, r_wet^2, the
+  // form means of (sqrt(2 rx), sqrt(2 ry)), and eps0 eps_r sqrt(rx ry) 2 pi.
+  double p_ = 0, q_ = 0, r2_ = 0, pq_s_ = 0, pq_y_ = 1, scale_ = 0;
+};
+
+}  // namespace ohmdem::lubrication
+
+#endif
