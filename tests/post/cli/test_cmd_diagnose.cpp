@@ -105,8 +105,8 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   const Json fixed = diagnose("inner_3_fixed_p90", "");
   EXPECT_EQ(fixed.find("defect")->string(), "inner");
   EXPECT_NEAR(fixed.find("size_deg")->number(), 3.0, 0.15);
-  // the same read off the model's curve (doc/report/sizing/curve_inner_fixed.txt: 1 MHz runs of
-  // the scene at 0.2 to 4 deg)
+  // the same read off the model's curve (the study's first curve_inner_fixed.txt: 1 MHz runs of
+  // the scene at 0.2, 0.4, 0.7, 1.5, 2.5, 4 deg)
   const Json curve =
       diagnose("inner_3_fixed_p90", "--size-curve " + data + "curve_inner_fixed.txt");
   EXPECT_NEAR(curve.find("size_deg")->number(), 3.0, 0.06);
