@@ -12,7 +12,9 @@ with the detectability study's low and high electrical noise, given a shaft-angl
 deck's angle_inner, 500 rad/s x t) and diagnosed twice: 'jump' (area / (jump x level); the
 radial load's jump from one calibration run that is not among the cases, an outer pit of 0.7 deg
 at 1 MHz; the fixed load's the theory 1/(Nb-1)) and 'curve' (diagnose --size-curve: the model's
-curve from 1 MHz runs of the scene at sizes none of the cases has).
+curve from 1 MHz runs of the scene at sizes none of the cases has; 'chain curve': the same runs
+through the record's instrument, the interval with the curve's own error measured on runs at
+still other sizes, --size-model-error).
   studies/sizing.py [--quick] OUT
 Writes OUT/sizing.csv (one row per case, instrument and method), OUT/sizing.md (the tables)
 and OUT/curve_<defect>_<load>.txt (the model's curves).
