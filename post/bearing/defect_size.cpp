@@ -125,6 +125,7 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   ps.shaft_angle = o.shaft_angle;
   ps.curve_size_deg = o.curve_size_deg;
   ps.curve_rel_area_s = o.curve_rel_area_s;
+  ps.curve_rel_error = o.curve_rel_error;
   const PulseAreaSize a = size_from_pulse_area(s.x, s.rate, s.t0, d.frequency_hz, d.defect, ps);
   l.method = a.note;
   if (d.defect != found.defect)

@@ -38,6 +38,9 @@ struct DiagnoseOptions {
   std::string assume_defect;
   // the model's curve (bearing/pulse_area.h): sizes (deg) and fixed-window areas / level (s)
   std::vector<double> curve_size_deg, curve_rel_area_s;
+  // the curve's own error: relative standard deviation of its area (0: the interval is the
+  // pass-to-pass scatter only)
+  double curve_rel_error = 0;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
   // Mains frequencies (Hz) whose harmonic combs are masked where they stand out (the supply's

@@ -157,10 +157,17 @@ PulseAreaSize from_curve(PulseAreaSize e, const PulseAreaSettings &s, double tq)
     e.note = "the fixed window does not fit the defect's period";
     return e;
   }
-  const double a = e.window_rel_area_s, d = tq * e.window_se_s;
+  const double a = e.window_rel_area_s;
+  double d = tq * e.window_se_s;
+  if (s.curve_rel_error > 0) {  // the model's error, as a normal deviate at the same level
+    const double z = student_t_isf((1 - s.confidence) / 2, 1e9) * s.curve_rel_error * a;
+    d = std::hypot(d, z);
+  }
   e.size_deg = size_on_curve(s, a);
   e.size_lo_deg = size_on_curve(s, a - d);
   e.size_hi_deg = size_on_curve(s, a + d);
+  if (s.curve_rel_error > 0 && a - d < s.curve_rel_area_s.front())
+    e.size_lo_deg = std::max(0.0, s.curve_size_deg.front() * (a - d) / s.curve_rel_area_s.front());
   e.valid = std::isfinite(e.size_deg);
   e.note = e.valid ? "fixed-window pulse area on the model's curve, " + std::to_string(e.passes) +
                          " passes"

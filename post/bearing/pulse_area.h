@@ -33,6 +33,11 @@ struct PulseAreaSettings {
   // of the fixed-window area / level (window_rel_area_s below) against the size (deg), sizes
   // increasing, areas increasing. When given, the size is read off it (rel_height unused).
   std::vector<double> curve_size_deg, curve_rel_area_s;
+  // The curve's own error (the model's, calibrated on simulations the cases never use): the
+  // relative standard deviation of its area, combined with the pass-to-pass scatter in the
+  // interval. With it, an interval reaching below the curve's first point extends to the origin
+  // (area proportional to the size there); one reaching past its last point is open above.
+  double curve_rel_error = 0;
 };
 
 // The fixed window: from 100 us before the pulse's start (the folded average's first bin beyond

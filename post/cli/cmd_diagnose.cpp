@@ -154,6 +154,10 @@ int run_diagnose(const std::vector<std::string> &argv)
            "the model's curve from simulations of the same scene: lines 'SIZE_DEG AREA_S' (the "
            "fixed-window pulse area over the level, JSON pulse_window_rel_area_s), both "
            "increasing; the size is read off it");
+  a.option("--size-model-error", "REL",
+           "the --size-curve's own error, the relative standard deviation of its area (from "
+           "simulations the curve does not use; sizing.py writes it in the curve's header): "
+           "the size's interval includes it (default 0: the pass-to-pass scatter only)");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -193,6 +197,12 @@ int run_diagnose(const std::vector<std::string> &argv)
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
   if (a.has("--size-curve")) read_size_curve(a.get("--size-curve"), o);
+  if (a.has("--size-model-error")) {
+    if (!a.has("--size-curve"))
+      throw Error("diagnose: --size-model-error needs --size-curve (it is the curve's error)");
+    o.curve_rel_error =
+        a.number_in("--size-model-error", 0, Range::closed(0, 1), "a relative error");
+  }
   if (a.has("--assume-defect")) {
     o.assume_defect = a.get("--assume-defect");
     if (o.assume_defect != "inner" && o.assume_defect != "outer")

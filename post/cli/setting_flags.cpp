@@ -44,6 +44,7 @@ const SettingFlags &setting_flags()
       {"diagnose.load", "--load"},
       {"diagnose.assume_defect", "--assume-defect"},
       {"diagnose.size_curve", "--size-curve"},
+      {"diagnose.curve_rel_error", "--size-model-error"},
       {"diagnose.pulse_height", "--pulse-height"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},

@@ -131,6 +131,40 @@ TEST(PulseArea, SizeReadOffTheModelsCurve)
   EXPECT_FALSE(size_from_pulse_area(big.x, big.rate, big.t0, 409.7, "outer", s).valid);
 }
 
+// The curve's own error widens the interval: rectangles give a curve proportional to tau, so
+// an area known within +-z e (z = 1.96 at 95 %, the pass scatter being ~1e-3 here) reads tau
+// (1 -+ z e) (reference: that proportionality, not the code's interpolation).
+TEST(PulseArea, CurveErrorInTheInterval)
+{
+  PulseAreaSettings s;
+  s.rel_height = 1;
+  for (double tau : {20.0, 60.0, 120.0, 200.0}) {
+    const Signal r = record(tau * 1e-6, 409.7, 1e6);
+    const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+    s.curve_size_deg.push_back(tau);
+    s.curve_rel_area_s.push_back(e.window_rel_area_s);
+  }
+  s.rel_height = 0;
+  s.curve_rel_error = 0.1;
+  const Signal r = record(90e-6, 409.7, 2e4);
+  const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 409.7, "outer", s);
+  ASSERT_TRUE(e.valid) << e.note;
+  EXPECT_NEAR(e.size_lo_deg, e.size_deg * (1 - 0.196), 1.5);
+  EXPECT_NEAR(e.size_hi_deg, e.size_deg * (1 + 0.196), 1.5);
+  // below the curve's first point the interval reaches toward the origin; past its last it is
+  // open above
+  s.curve_rel_error = 0.45;
+  const Signal small = record(25e-6, 409.7, 2e4);
+  const PulseAreaSize l = size_from_pulse_area(small.x, small.rate, small.t0, 409.7, "outer", s);
+  ASSERT_TRUE(l.valid) << l.note;
+  EXPECT_NEAR(l.size_lo_deg, l.size_deg * (1 - 1.96 * 0.45), 1.0);
+  EXPECT_GE(l.size_lo_deg, 0);
+  const Signal large = record(150e-6, 409.7, 2e4);
+  const PulseAreaSize h = size_from_pulse_area(large.x, large.rate, large.t0, 409.7, "outer", s);
+  ASSERT_TRUE(h.valid) << h.note;
+  EXPECT_TRUE(std::isnan(h.size_hi_deg));
+}
+
 TEST(PulseArea, NoModelHeightNoSize)
 {
   const Signal r = record(60e-6, 409.7, 2e4);

@@ -105,12 +105,26 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   const Json fixed = diagnose("inner_3_fixed_p90", "");
   EXPECT_EQ(fixed.find("defect")->string(), "inner");
   EXPECT_NEAR(fixed.find("size_deg")->number(), 3.0, 0.15);
-  // the same read off the model's curve (doc/report/sizing/curve_inner_fixed.txt: 1 MHz runs of
-  // the scene at 0.2 to 4 deg)
+  // the same read off the model's curve (the study's first curve_inner_fixed.txt: 1 MHz runs of
+  // the scene at 0.2, 0.4, 0.7, 1.5, 2.5, 4 deg)
   const Json curve =
       diagnose("inner_3_fixed_p90", "--size-curve " + data + "curve_inner_fixed.txt");
   EXPECT_NEAR(curve.find("size_deg")->number(), 3.0, 0.06);
   EXPECT_NE(curve.find("pulse_height_source")->string().find("--size-curve"), std::string::npos);
+  // with the curve's own error (5 %, relative SD of its area) the interval holds +-1.96 x 5 % of
+  // the area around it: the curve is nearly proportional there, so about +-0.3 deg
+  const Json wide =
+      diagnose("inner_3_fixed_p90",
+               "--size-curve " + data + "curve_inner_fixed.txt --size-model-error 0.05");
+  const Json &iv = *wide.find("size_interval_deg");
+  EXPECT_NEAR(iv[0].number(), 3.0 - 0.29, 0.1);
+  EXPECT_NEAR(iv[1].number(), 3.0 + 0.29, 0.1);
+  const CliRun alone =
+      run("diagnose " + data + "inner_3_fixed_p90_20kHz.txt --column V --metadata " + data +
+          "inner_3_fixed_p90.json --size-model-error 0.05");
+  EXPECT_NE(alone.status, 0);
+  EXPECT_NE(alone.out.find("--size-model-error needs --size-curve"), std::string::npos)
+      << alone.out;
   // radial load, 0.5 deg inner pit at 330 deg on the ring: the jump from the calibration run,
   // the place from the shaft angle column
   const Json inner =
