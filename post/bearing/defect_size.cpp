@@ -6,6 +6,7 @@
 
 #include "bearing/pulse_area.h"
 #include "core/constants.h"
+#include "core/sampled_signal.h"
 #include "dsp/pulses.h"
 
 namespace ohmdem::post {
@@ -135,6 +136,24 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   if (!a.valid) return l;
   const double to_deg = 180 / kPi;
   const auto angle = [&](double tau) { return defect_angle(d.defect, d.frequency_hz, tau, g.nb); };
+  // Without the model's curve the size rests on the theory's flat jump: the pulse is h level
+  // high for the whole crossing. Where the record resolves the pulse (kResolved samples or more)
+  // its width checks that: a pit the ball partly drops into, or a ring that rings after the
+  // exit (the deck's default 5 um pits), gives an area that is not h times the width, and the
+  // theory's size would be confidently wrong.
+  constexpr double kResolved = 10, kFlatTolerance = 0.25;
+  if (!curve && d.defect == found.defect && found.size.valid &&
+      found.size.pulse_width_s * s.rate >= kResolved &&
+      std::fabs(a.tau_s / found.size.pulse_width_s - 1) > kFlatTolerance) {
+    l.method =
+        "not determined: the pulses are not the flat jump the theory assumes (their area "
+        "gives " +
+        format_number(angle(a.tau_s) * to_deg, 3) + " deg, their width " +
+        format_number(found.size.size_deg, 3) +
+        " deg: the ball drops into the pit or the ring rings after the exit); give the "
+        "model's curve ({diagnose.size_curve}, studies/sizing.py)";
+    return l;
+  }
   l.valid = true;
   l.size_deg = angle(a.tau_s) * to_deg;
   l.size_lo_deg = angle(a.tau_lo_s) * to_deg;

@@ -88,6 +88,42 @@ TEST(Cli, DiagnoseSizeIntervalAndPosition)
   EXPECT_NE(bad.out.find("--load must be force, fixed or radial"), std::string::npos);
 }
 
+// Without the model's curve the area rests on the theory's flat jump: a pulse half that high
+// (an area giving 0.5 deg where the width gives 1 deg, as the deck's 5 um pits with their exit
+// dip give) is not sized by the theory: the size is the width's, with no interval, and the
+// curve is named instead of a wrong area size.
+TEST(Cli, DiagnoseRefusesTheTheorysSizeWhenThePulseIsNotItsJump)
+{
+  const std::string dir = make_run_dir("run_area_half_jump", "inner");
+  std::ifstream in(dir + "/signal.txt");
+  std::ostringstream out;
+  std::string line;
+  std::getline(in, line);
+  out << line << "\n";
+  const double level = test::DefectSpec{}.level;  // the synthetic run's level (synth.h)
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    double t, w, fi, fo, n, r, m;
+    ls >> t >> w >> fi >> fo >> n >> r >> m;
+    if (t >= 0.005 && r > level) r = level + (r - level) / 2;
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", t, w, fi, fo, n, r, m);
+    out << buf;
+  }
+  in.close();
+  std::ofstream(dir + "/signal.txt") << out.str();
+  const CliRun r = run("diagnose " + dir + "/signal.txt --format json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json j = Json::parse(r.out, "diagnose output");
+  EXPECT_EQ(j.find("defect")->string(), "inner");
+  // the size falls back to the pulse width's, with no interval
+  EXPECT_NEAR(j.find("size_deg")->number(), 1.0, 0.05) << r.out;
+  EXPECT_TRUE(j.find("size_interval_deg")->is_null());
+  const std::string method = j.find("size_method")->string();
+  EXPECT_NE(method.find("not the flat jump"), std::string::npos) << method;
+  EXPECT_NE(method.find("--size-curve"), std::string::npos) << method;
+}
+
 // Issue 26 on held-out simulated records (tests/post/data/sizing: the sizing study's runs of the
 // 6208 at 500 rad/s, 50 um pits, acquired at 20 kHz, 16 bits, low noise, first 0.15 s; not used
 // to build the estimator). The reference is the size and place the deck was given; the bounds
