@@ -30,6 +30,13 @@ struct Film {
 // or w <= 0 (no load: the caller models the gap instead).
 Film hamrock_dowson(const FilmInput &in);
 
+// The parts of those films that do not depend on the contact's load and speed: the
+// prefactors rx 2.69 (eta/(E' rx))^0.67 G^0.53 (1/(E' rx^2))^-0.067 (and the minimum's) and the
+// ellipticity factors. hamrock_dowson multiplies them by u^0.67 w^-0.067 (u^0.68 w^-0.073);
+// a race's contacts share them (race_admittance.h).
+Film film_prefactors(double eta, double e_prime, double rx, double alpha);
+Film ellipticity_factors(double k);
+
 // lambda = h_min / sigma, sigma = sqrt(Rq1^2 + Rq2^2) the composite RMS roughness (> 0).
 inline double film_parameter(double h_min, double sigma)
 {

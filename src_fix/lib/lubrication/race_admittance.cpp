@@ -30,15 +30,13 @@ double exp_small(double z)
 
 RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
 {
-  // ehl_film.cpp's prefactors and ellipticity factors, k = a/b (load-independent).
-  const double eta = in.eta, e = in.e_prime, rx = in.rx, alpha = in.alpha;
-  const double lu = std::log(eta / (e * rx)), lg = std::log(alpha * e),
-               lw = std::log(1.0 / (e * rx * rx));
-  central_ = rx * 2.69 * std::exp(0.67 * lu + 0.53 * lg - 0.067 * lw);
-  minimum_ = rx * 3.63 * std::exp(0.68 * lu + 0.49 * lg - 0.073 * lw);
-  const double k = in.a_coef / in.b_coef;
-  ell_central_ = 1.0 - 0.61 * std::exp(-0.73 * k);
-  ell_minimum_ = 1.0 - std::exp(-0.68 * k);
+  // The films' prefactors and ellipticity factors, k = a/b (load-independent).
+  const Film pre = film_prefactors(in.eta, in.e_prime, in.rx, in.alpha);
+  const Film ell = ellipticity_factors(in.a_coef / in.b_coef);
+  central_ = pre.central;
+  minimum_ = pre.minimum;
+  ell_central_ = ell.central;
+  ell_minimum_ = ell.minimum;
   area_coef_ = kPi * in.a_coef * in.b_coef;
   // hertz_mean_permittivity's nodes; (d + 2 K n)/(d - K n) with d = 1 + 1.7 q, n = 1 + 2.3 q.
   const double x[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267,
