@@ -14,6 +14,7 @@
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/text_scan.h"
+#include "dsp/stats.h"
 #include "report/diagnosis_report.h"
 
 namespace ohmdem::post::cli {
@@ -57,14 +58,11 @@ std::string numerical_floor(const Signal &s, const RunMetadata &meta)
 {
   constexpr double kFloor = 1e-5;
   if (!meta.present() || s.x.empty()) return "";
-  double mean = 0, var = 0;
-  for (double x : s.x) mean += x;
-  mean /= static_cast<double>(s.x.size());
-  for (double x : s.x) var += (x - mean) * (x - mean);
-  const double spread = std::sqrt(var / static_cast<double>(s.x.size())) / std::fabs(mean);
+  const Indicators ind = indicators(s.x);
+  const double spread = ind.std / std::fabs(ind.mean);
   if (!(spread < kFloor)) return "";
   return s.name + " varies by " + format_number(spread, 2) + " of its mean (std " +
-         format_number(spread * std::fabs(mean), 2) +
+         format_number(ind.std, 2) +
          "): the numerical floor of the simulation, far below a defect's signature (1e-2 for a "
          "1-degree pit); the statistics below describe numerical blips, not a defect";
 }
