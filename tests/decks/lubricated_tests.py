@@ -6,16 +6,14 @@ out here from the run's own loads and speeds (not through the engine's code); th
 against the capacitor's -pi/2; `lubricant none` against the dry run, byte for byte.
 Usage: lubricated_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
-import argparse
 import json
 import math
 import os
-import tempfile
 
 import numpy as np
 
-from bearing_tests import Runner, read_signal
-from deck_checks import check, finish
+from bearing_tests import read_signal, run_named_test
+from deck_checks import check
 
 # SKF 6208 (the deck's default, the paper's Table 1) and the deck's steel.
 RB, RINN, REXT, RCINN, RCEXT = 0.0063, 0.024, 0.0366, 0.00655, 0.00665
@@ -150,19 +148,7 @@ def test_mpi(r):
           "lubricated: signal.txt identical with 1 and 2 processes")
 
 
-def main():
-    p = argparse.ArgumentParser()
-    p.add_argument("test")
-    p.add_argument("--exe", required=True)
-    p.add_argument("--src", required=True)
-    a = p.parse_args()
-    keep = os.environ.get("OHMDEM_KEEP_TEST_DIR")
-    with tempfile.TemporaryDirectory(prefix=f"ohmdem_lub_{a.test}_", dir=keep) as wd:
-        r = Runner(os.path.abspath(a.exe), os.path.abspath(a.src), wd)
-        {"paper_point": test_paper_point, "none_unchanged": test_none_unchanged,
-         "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi}[a.test](r)
-    finish()
-
-
 if __name__ == "__main__":
-    main()
+    run_named_test({"paper_point": test_paper_point, "none_unchanged": test_none_unchanged,
+                    "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi},
+                   "ohmdem_lub_")
