@@ -7,6 +7,7 @@
 #include "core/constants.h"
 #include "dsp/detect_laws.h"
 #include "dsp/pulses.h"
+#include "dsp/stats.h"
 
 namespace ohmdem::post {
 
@@ -245,12 +246,8 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
   }
   // a level record (R, I R) sits well above zero and jumps up; a vibration record swings about
   // zero: its pulse area means nothing
-  double mean = 0, var = 0;
-  for (double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  for (double v : x) var += (v - mean) * (v - mean);
   const double level = median(x) - s.level_offset;
-  if (!(level > 0) || level < 2 * std::sqrt(var / static_cast<double>(x.size()))) {
+  if (!(level > 0) || level < 2 * indicators(x).std) {
     e.note = "not a level record (R or I R): the pulse area needs a level well above zero";
     return e;
   }
