@@ -77,6 +77,14 @@ class FixBearingRace : public FixBearingBody {
     vx = vcx_ - w * (py - cy_);
     vy = vcy_ + w * (px - cx_);
   }
+  // surface_velocity's terms, for a loop over many points: the ring's angular speed and its
+  // centre's velocity on this step.
+  void rigid_motion(double &w, double &vcx, double &vcy) const
+  {
+    w = target_omega(time_);
+    vcx = vcx_;
+    vcy = vcy_;
+  }
   ohmdem::BearingSurface surface() const override;
   int race_type() const { return settings_.race_type; }
 

@@ -28,23 +28,20 @@ namespace {
 // The mean entrainment speed of a ball-race contact at point p: the tangential component of
 // the mean of the two surfaces' velocities, relative to the contact point, which travels with
 // the ball's orbit about the ring centre c. Pure rolling on a fixed outer ring gives
-// (omega_i - omega_cage) R_i at the inner contact.
+// (omega_i - omega_cage) R_i at the inner contact. The ring's velocity at p is
+// FixBearingRace::surface_velocity's, from its terms taken once per race and step (m).
 double entrainment_speed(const double *x, const double *v, double omega_z, double px, double py,
-                         const FixBearingRace &race)
+                         const RaceMotion &m)
 {
-  double cx, cy, rvx, rvy;
-  race.centre(cx, cy);
-  race.surface_velocity(px, py, rvx, rvy);
+  const double rvx = m.vcx - m.w * (py - m.cy), rvy = m.vcy + m.w * (px - m.cx);
   const double bvx = v[0] - omega_z * (py - x[1]), bvy = v[1] + omega_z * (px - x[0]);
-  const double ox = x[0] - cx, oy = x[1] - cy;
+  const double ox = x[0] - m.cx, oy = x[1] - m.cy;
   const double orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
-  const double pvx = -orbit * (py - cy), pvy = orbit * (px - cx);
-  double nx = px - x[0], ny = py - x[1];
-  const double n = std::sqrt(nx * nx + ny * ny);
-  nx /= n;
-  ny /= n;
+  const double pvx = -orbit * (py - m.cy), pvy = orbit * (px - m.cx);
+  const double nx = px - x[0], ny = py - x[1];
   const double ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
-  return std::fabs(-ny * ux + nx * uy);
+  // The component along the unit tangent (-ny, nx)/|n|: one division.
+  return std::fabs(-ny * ux + nx * uy) / std::sqrt(nx * nx + ny * ny);
 }
 
 // The gap between a ball and a race it does not press (m), along the line through the ring
@@ -60,7 +57,10 @@ double race_gap(const double *x, double r, const FixBearingRace &race)
 }  // namespace
 
 LubricatedBearing::LubricatedBearing(LAMMPS *lmp, const LubricationSettings &settings)
-    : Pointers(lmp), settings_(settings), network_(std::make_unique<LubricatedNetwork>())
+    : Pointers(lmp),
+      settings_(settings),
+      omega_(2.0 * ohmdem::kPi * settings.fexc),
+      network_(std::make_unique<LubricatedNetwork>())
 {
   path_ = lub::lubricant_path(settings.lubricant, lub::default_lubricant_dir());
   const std::string name = path_.substr(path_.rfind('/') + 1);
@@ -109,11 +109,6 @@ void LubricatedBearing::set_geometry(const ResistanceContext &context)
 
 LubricatedBearing::~LubricatedBearing() = default;
 
-double LubricatedBearing::omega() const
-{
-  return 2.0 * ohmdem::kPi * settings_.fexc;
-}
-
 // The ball's dry (metallic) conductance between its two races, 0 when it touches none.
 double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context, int i)
 {
@@ -154,7 +149,7 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
     return;
   }
   const double speed =
-      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), race);
+      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]);
   film = film_[side].contact(view.fn(), speed,
                              view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
                              race.recess_of(i));                    // over a pit the gap grows
@@ -194,6 +189,11 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
 
   contacts_.clear();
   balls_.clear();
+  for (int side = 0; side < 2; ++side) {
+    RaceMotion &m = motion_[side];
+    race_[side]->centre(m.cx, m.cy);
+    race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
+  }
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
     // The closed form's conductance of this step where it has one (NaN: it has none).

@@ -58,6 +58,11 @@ struct LubricatedContact {
 class FixBearingRace;
 class LubricatedNetwork;
 
+// A race's rigid motion on this step: centre (m), angular speed (rad/s), centre velocity (m/s).
+struct RaceMotion {
+  double cx = 0, cy = 0, w = 0, vcx = 0, vcy = 0;
+};
+
 class LubricatedBearing : protected Pointers {
  public:
   // Reads the lubricant (throws LubricantError with the message for the user).
@@ -76,7 +81,7 @@ class LubricatedBearing : protected Pointers {
   // This process's records of the last evaluation (two per ball, high race first).
   const std::vector<LubricatedContact> &contacts() const { return contacts_; }
   const LubricatedNetwork &network() const { return *network_; }
-  double omega() const;
+  double omega() const { return omega_; }
 
  private:
   void set_geometry(const ResistanceContext &context);
@@ -92,12 +97,14 @@ class LubricatedBearing : protected Pointers {
   double ball_dry_conductance(const ResistanceContext &context, int i);
 
   LubricationSettings settings_;
+  double omega_ = 0;  // 2 pi fexc
   bool geometry_ready_ = false;
   std::string path_;
   ohmdem::lubrication::LubricantState state_;
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
+  RaceMotion motion_[2];  // this step's, set by evaluate()
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
   ohmdem::lubrication::ContactAdmittance films_[2];  // scratch of evaluate()

@@ -7,6 +7,7 @@
 
 #include "common/constants.h"
 #include "common/fast_cbrt.h"
+#include "common/fast_erfc.h"
 #include "common/fast_exp_log.h"
 #include "lubrication/gap_forms.h"
 
@@ -16,6 +17,7 @@ using gap_forms::form_mean;
 using gap_forms::FormMean;
 
 namespace {
+const double kSqrtHalf = std::sqrt(0.5), kSqrtPi = std::sqrt(kPi);
 // e^z for |z| < 0.25 by its Taylor series to z^13 (z^14/14! < 1e-19): no range reduction.
 double exp_small(double z)
 {
@@ -60,13 +62,48 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
   }
   eps_const_ = be / de * sum_wt;
   eps_pole_ = al - be * ga / de;
+  // The same sum as one fraction P(q)/Q(q), Q = prod(ga + dt_i q), P = sum wt_i prod_(j != i):
+  // one division instead of eight. With de >= 0 (eps_r <= 9.5) every coefficient is positive and
+  // q >= 0, so Horner's rule adds positive terms only (a few ulp); else the eight divisions.
+  rational_ = de >= 0.0;
+  // The coefficients (constant term first) of the product of (ga + dt_j q) over j != skip.
+  const auto product = [&](int skip) {
+    std::array<double, 9> c{};
+    c[0] = 1.0;
+    int degree = 0;
+    for (int j = 0; j < 8; ++j) {
+      if (j == skip) continue;
+      ++degree;
+      for (int k = degree; k >= 1; --k) c[k] = c[k] * ga + c[k - 1] * dt_[j];
+      c[0] *= ga;
+    }
+    return c;
+  };
+  qc_ = product(-1);
+  for (int i = 0; i < 8; ++i) {
+    const std::array<double, 9> c = product(i);
+    for (int k = 0; k < 8; ++k) pc_[k] += wt_[i] * c[k];
+  }
+  // The Hertz zone's peak pressure (GPa), 1.5 fn/(pi a b) 1e-9 = q0_coef_ fn^(1/3).
+  q0_coef_ = 1.5e-9 / area_coef_;
   // The gap integral's race terms.
   p_ = 2.0 * in.rx;
   q_ = 2.0 * in.ry;
   r2_ = in.r_wet * in.r_wet;
-  const FormMean pq = form_mean(std::sqrt(p_), std::sqrt(q_));
+  sqrt_p_ = std::sqrt(p_);
+  sqrt_q_ = std::sqrt(q_);
+  const FormMean pq = form_mean(sqrt_p_, sqrt_q_);
   pq_s_ = pq.s;
   pq_y_ = pq.y;
+  // The Hertz ellipse's form mean, of (sqrt(2 rx)/b, sqrt(2 ry)/a): a and b scale with
+  // fn^(1/3), so its s is hertz_s_ / fn^(1/3) and its y a race constant.
+  sp_coef_ = sqrt_p_ / in.b_coef;
+  sq_coef_ = sqrt_q_ / in.a_coef;
+  const FormMean hz = form_mean(sp_coef_, sq_coef_);
+  hertz_s_ = hz.s / pq_s_;
+  hertz_y_ = hz.y / pq_y_;
+  inv_sigma_ = 1.0 / in.sigma;
+  inv_resistivity_ = 1.0 / in.resistivity;
   scale_ = kEpsilon0 * in.eps_r * std::sqrt(in.rx * in.ry) * 2.0 * kPi;
 }
 
@@ -88,27 +125,25 @@ void RaceAdmittance::contact(double fn, double speed, double g_dry, double reces
         (std::fabs(z) < 0.25 ? central_power * exp_small(z) : exp_fast(0.68 * ls - 0.073 * lw)) *
         ell_minimum_;
   }
-  c.lambda = film_parameter(c.film.minimum, in_.sigma);
+  c.lambda = c.film.minimum * inv_sigma_;  // film_parameter, by the reciprocal
   c.gap = c.film.minimum + recess;
   c.g_dry = g_dry;
-  const double area = kPi * a * b;
+  const double area = area_coef_ * cb * cb;  // pi a b
   const double h = c.film.central + recess;
   const bool film = h > 0.0 && area > 0.0;
-  const double leak = film ? area / (in_.resistivity * h) : 0.0;
+  const double area_h = film ? area / h : 0.0;
+  const double leak = area_h * inv_resistivity_;
   // The metallic fraction, or 0 when it cannot matter (race_admittance.h).
-  const double xm = (recess > 0.0 ? film_parameter(c.gap, in_.sigma) : c.lambda) / std::sqrt(2.0);
+  const double xm = (recess > 0.0 ? c.gap * inv_sigma_ : c.lambda) * kSqrtHalf;
   // (2^-54 needs x > 5.9: below 5.5 the bound is not worth its exponential.)
-  const double bound = xm > 5.5 ? exp_fast(-xm * xm) / (xm * std::sqrt(kPi)) : 1.0;
+  const double bound = xm > 5.5 ? exp_fast(-xm * xm) / (xm * kSqrtPi) : 1.0;
   const bool negligible = bound <= 0x1p-54 && bound * g_dry <= 1e-17 * leak;
-  c.metallic = negligible ? 0.0 : std::erfc(xm);
+  c.metallic = negligible ? 0.0 : erfc_fast(xm);
   const double free = 1.0 - c.metallic;
   c.g = c.metallic * g_dry;
   if (film && free > 0.0) {
-    const double q0 = 1.5 * fn / area * 1e-9;  // Hertz peak pressure (GPa)
-    double sum = 0.0;
-    for (int i = 0; i < 8; ++i) sum += wt_[i] / (ga_ + q0 * dt_[i]);
-    const double eps = eps_const_ + eps_pole_ * sum;
-    c.c_hertz = free * kEpsilon0 * eps * area / h;
+    const double q0 = q0_coef_ * cb;  // Hertz peak pressure (GPa), 1.5 fn / (pi a b)
+    c.c_hertz = free * kEpsilon0 * permittivity(q0) * area_h;
     c.g += free * leak;
   }
   // gap_capacitance's closed form while the wetted circle holds the ellipse.
@@ -118,11 +153,26 @@ void RaceAdmittance::contact(double fn, double speed, double g_dry, double reces
     return;
   }
   const FormMean out = form_mean(std::sqrt(h0 * p_ + r2_), std::sqrt(h0 * q_ + r2_));
-  const double sp = std::sqrt(p_) / b, sq = std::sqrt(q_) / a;
+  const double inv_cb = 1.0 / cb, sp = sp_coef_ * inv_cb, sq = sq_coef_ * inv_cb;
   const FormMean in = form_mean(std::sqrt(h0 * sp * sp + 1.0), std::sqrt(h0 * sq * sq + 1.0));
-  const FormMean pq_in = form_mean(sp, sq);
-  const double x = out.s * pq_in.s / (pq_s_ * in.s), y = out.y * pq_in.y / (pq_y_ * in.y);
+  // The Hertz ellipse's form mean is hertz_s_ / cb with the race's y (the constructor).
+  const double x = out.s * hertz_s_ * inv_cb / in.s, y = out.y * hertz_y_ / in.y;
   c.c_outer = scale_ * (2.0 * log_fast(x) + gap_forms::aliasing(y, log_fast));
+}
+
+// The pressure-raised permittivity averaged over the Hertz zone (hertz_mean_permittivity's
+// 8-point rule) at the peak pressure q0 (GPa).
+double RaceAdmittance::permittivity(double q0) const
+{
+  if (rational_) {
+    double num = pc_[7], den = qc_[8];
+    for (int k = 6; k >= 0; --k) num = num * q0 + pc_[k];
+    for (int k = 7; k >= 0; --k) den = den * q0 + qc_[k];
+    return eps_const_ + eps_pole_ * (num / den);
+  }
+  double sum = 0.0;
+  for (int i = 0; i < 8; ++i) sum += wt_[i] / (ga_ + q0 * dt_[i]);
+  return eps_const_ + eps_pole_ * sum;
 }
 
 double RaceAdmittance::idle(double gap) const

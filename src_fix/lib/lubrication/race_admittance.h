@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The contacts of one race, evaluated for every ball at every step: contact_admittance() and
 // idle_gap_capacitance() with everything that depends only on the race and the oil computed
-// once (the Hamrock-Dowson prefactors and ellipticity factors, the Hertz ellipse at 1 N, the
-// gap integral's race terms, the permittivity's Gauss nodes), the inline logarithm and
-// exponential of common/fast_exp_log.h, and no erfc where the metallic fraction cannot change
-// the result (below). Same equations as contact_admittance.h; the results agree with it to a
-// few ulp (tests/lib/lubrication/test_race_admittance.cpp). Plain C++;
-// doc/lubricated_contact.md, "Speed".
+// once (the Hamrock-Dowson prefactors and ellipticity factors, the Hertz ellipse at 1 N and its
+// form mean, the gap integral's race terms, the permittivity's Gauss sum as one fraction), the
+// inline logarithm, exponential and erfc of common/, and no erfc where the metallic fraction
+// cannot change the result (below). Same equations as contact_admittance.h, within the
+// accuracy budget of doc/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; ~1e-13
+// reached, tests/lib/lubrication/test_race_admittance.cpp). Plain C++.
 #ifndef OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
 #define OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
 
@@ -58,6 +58,17 @@ class RaceAdmittance {
   // The gap integral (contact_admittance.cpp, gap_capacitance): 2 rx, 2 ry, r_wet^2, the
   // form means of (sqrt(2 rx), sqrt(2 ry)), and eps0 eps_r sqrt(rx ry) 2 pi.
   double p_ = 0, q_ = 0, r2_ = 0, pq_s_ = 0, pq_y_ = 1, scale_ = 0;
+  // Per race rather than per contact (doc/lubricated_contact.md, "Speed"): sqrt(2 rx),
+  // sqrt(2 ry); sqrt(2 rx)/b and sqrt(2 ry)/a at 1 N; the Hertz ellipse's form mean over the
+  // race's (s at 1 N, y); 1/sigma, 1/resistivity; the peak pressure (GPa) at 1 N; the
+  // permittivity's sum as P(q)/Q(q) (coefficients from the constant term; rational_ false:
+  // the eight divisions).
+  double sqrt_p_ = 0, sqrt_q_ = 0, sp_coef_ = 0, sq_coef_ = 0, hertz_s_ = 0, hertz_y_ = 1;
+  double inv_sigma_ = 0, inv_resistivity_ = 0, q0_coef_ = 0;
+  std::array<double, 8> pc_{};
+  std::array<double, 9> qc_{};
+  bool rational_ = false;
+  double permittivity(double q0) const;
 };
 
 }  // namespace ohmdem::lubrication

@@ -2,9 +2,13 @@
 // RaceAdmittance (src_fix/lib/lubrication/race_admittance.h), the per-race form the bearing
 // evaluates at every step, against contact_admittance() and idle_gap_capacitance() called
 // with the same contact (the reference: contact_admittance is itself checked against the plain
-// formulas in test_keyed_cache.cpp and against Hamrock-Dowson in test_ehl_film.cpp). They
-// must agree to 1e-13 relative; where RaceAdmittance leaves out erfc, the metallic term it
-// drops must be below 1e-17 of G and the capacitance bitwise the same.
+// formulas in test_keyed_cache.cpp and against Hamrock-Dowson in test_ehl_film.cpp). The
+// accuracy budget of the fast path (doc/lubricated_contact.md, "Speed") is 1e-10 relative on
+// each contact's h_c, h_min, C and G; this test holds it to 1e-12, 10x what it reaches now
+// (~8e-14), over loads 0.1 N to 3 kN, speeds to 50 m/s, oils from thin to thick (viscosity
+// 5 mPa s to 1 Pa s: temperatures), lambda from below 0.1 to beyond 30, and recessed gaps. Where
+// RaceAdmittance leaves out erfc, the metallic term it drops must be below 1e-17 of G and the
+// capacitance bitwise the same.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,11 +38,12 @@ RaceInput race(int n, double r_wet)
   r.e_prime = 2.2e11;
   r.a_coef = 2.0e-4 + 1e-4 * (n % 2);
   r.b_coef = 3.0e-5 + 1e-5 * (n % 3);
-  r.eta = 0.06;
-  r.alpha = 2.2e-8;
+  // VG68 at 40 C, then thinner and thicker oils (hot and cold), other permittivities.
+  r.eta = 0.06 * std::pow(10.0, (n % 5) * 0.6 - 1.2);
+  r.alpha = 1.5e-8 + 0.5e-8 * (n % 4);
+  r.eps_r = 2.07 + 0.4 * (n % 3);
   r.sigma = 1e-7;
   r.r_wet = r_wet;
-  r.eps_r = 2.07;
   r.resistivity = 1e12;
   return r;
 }
@@ -67,7 +72,7 @@ TEST(RaceAdmittance, AgreesWithContactAdmittance)
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   auto logu = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
   double worst[6] = {0, 0, 0, 0, 0, 0};  // h_c, h_min, c_hertz, c_outer, g, idle
-  int skipped = 0, kept = 0, beyond = 0;
+  int skipped = 0, kept = 0, beyond = 0, thin = 0, thick = 0;
   for (int n = 0; n < 20000; ++n) {
     // Wetted radii from 0.2 to 5 mm: some ellipses reach past the circle (angle by angle).
     const RaceInput r = race(n, logu(2e-4, 5e-3));
@@ -85,6 +90,8 @@ TEST(RaceAdmittance, AgreesWithContactAdmittance)
     worst[4] = std::fmax(worst[4], rel(a.g, b.g));
     EXPECT_EQ(a.lambda == 0.0, b.lambda == 0.0);
     beyond += !(r.r_wet > in.a && r.r_wet > in.b);
+    thin += b.lambda > 0.0 && b.lambda < 0.1;
+    thick += b.lambda > 30.0;
     if (a.metallic == 0.0 && b.metallic > 0.0) {
       // erfc left out: the reference's 1 - f is 1 (C unchanged), G within 1e-17 + rounding.
       ++skipped;
@@ -92,7 +99,7 @@ TEST(RaceAdmittance, AgreesWithContactAdmittance)
       EXPECT_LE(b.metallic * g_dry, 1e-17 * a.g);
     } else {
       ++kept;
-      EXPECT_LT(rel(a.metallic, b.metallic), 1e-13);
+      EXPECT_LT(rel(a.metallic, b.metallic), 1e-12);
     }
     if (speed == 0.0 && recess == 0.0) {
       EXPECT_EQ(a.g, g_dry);  // the dry contact, exactly
@@ -105,9 +112,12 @@ TEST(RaceAdmittance, AgreesWithContactAdmittance)
   std::printf(
       "worst relative differences: h_c %.1e, h_min %.1e, C_hertz %.1e, C_outer %.1e, "
       "G %.1e, idle gap %.1e; erfc left out in %d contacts, kept in %d; %d ellipses "
-      "past the wetted circle\n",
-      worst[0], worst[1], worst[2], worst[3], worst[4], worst[5], skipped, kept, beyond);
-  for (double w : worst) EXPECT_LT(w, 1e-13);
+      "past the wetted circle; lambda < 0.1 in %d, > 30 in %d\n",
+      worst[0], worst[1], worst[2], worst[3], worst[4], worst[5], skipped, kept, beyond, thin,
+      thick);
+  for (double w : worst) EXPECT_LT(w, 1e-12);
+  EXPECT_GT(thin, 1000);
+  EXPECT_GT(thick, 1000);
   EXPECT_GT(skipped, 1000);
   EXPECT_GT(kept, 1000);
   EXPECT_GT(beyond, 100);
