@@ -11,6 +11,11 @@ a shared machine only ever slows a run down) and, if valgrind is installed, inst
 the time loop (callgrind over 2000 steps, noise-free). Usage:
 
   bench/lubricated/run_lubricated_bench.py [--steps 20000] [--rounds 5] [--no-callgrind]
+                                           [--reference EXE]
+
+--reference EXE also runs the lubricated mode with another build (e.g. one before a speed
+change) and prints the largest relative difference of each lubricated column over the run: the
+error a faster path makes against the slower one.
 """
 import argparse
 import math
@@ -31,10 +36,10 @@ MODES = {
 }
 
 
-def run(wd, mode, tend, prefix=()):
-    out = os.path.join(wd, mode)
+def run(wd, mode, tend, prefix=(), exe=OHMDEM, name=None):
+    out = os.path.join(wd, name or mode)
     log = out + ".log"
-    cmd = [*prefix, OHMDEM, "-in", BEARING_DECK, "-var", "out", out, "-var", "tend", str(tend),
+    cmd = [*prefix, exe, "-in", BEARING_DECK, "-var", "out", out, "-var", "tend", str(tend),
            "-var", "nout", "1000", "-log", log, "-screen", "none", *MODES[mode]]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     return out, log
@@ -60,6 +65,7 @@ def main():
     p.add_argument("--steps", type=int, default=20000)
     p.add_argument("--rounds", type=int, default=5)
     p.add_argument("--no-callgrind", action="store_true")
+    p.add_argument("--reference", metavar="EXE", help="another ohmdem build to compare with")
     a = p.parse_args()
     tend = a.steps * 1e-6
     with tempfile.TemporaryDirectory(prefix="bench_lub_") as wd:
@@ -68,6 +74,15 @@ def main():
             for m in MODES:
                 t[m] = min(t[m], loop_time(run(wd, m, tend)[1]) / a.steps)
         steady = {m: read_signal(os.path.join(wd, m, "signal.txt"), t0=0.015) for m in MODES}
+        errors = {}
+        if a.reference:
+            run(wd, "lubricated", tend, exe=a.reference, name="reference")
+            ours = read_signal(os.path.join(wd, "lubricated", "signal.txt"))
+            ref = read_signal(os.path.join(wd, "reference", "signal.txt"))
+            for c in ("Zabs", "Zphase", "Cb", "Rb", "hmin_inner", "hmin_outer", "lambda_min", "R"):
+                if c in ref and c in ours:
+                    d = abs(ours[c] / ref[c] - 1)
+                    errors[c] = float(d[ref[c] != 0].max())
         ir = {}
         if not a.no_callgrind and shutil.which("valgrind"):
             ir = {m: instructions(wd, m) for m in MODES}
@@ -103,6 +118,9 @@ def main():
     print(f"lubricated: |Z| = {z:.5g} ohm, phase {ph:.6f} rad, Cb = {cb:.4g} F, "
           f"Rb = {mean('lubricated', 'Rb'):.4g} ohm (R of the same run {mean('lubricated', 'R'):.5g} ohm)")
     print("mechanics:  no electrical output")
+    if errors:
+        print("lubricated against --reference, largest relative difference over the run: "
+              + ", ".join(f"{c} {e:.1e}" for c, e in errors.items()))
 
 
 if __name__ == "__main__":

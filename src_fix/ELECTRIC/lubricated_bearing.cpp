@@ -150,9 +150,10 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
   }
   const double speed =
       entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]);
-  film = film_[side].contact(view.fn(), speed,
-                             view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                             race.recess_of(i));                    // over a pit the gap grows
+  film_[side].contact(view.fn(), speed,
+                      view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+                      race.recess_of(i),                     // over a pit the gap grows
+                      film);                                 // in place: no copy
   const lub::ContactAdmittance &c = film;
   out.loaded = true;
   out.y = c.y(omega());
