@@ -45,6 +45,7 @@ inline double erfc_fast(double x)
                                       -1.0 / (39916800.0 * 23)};
     const double z = x * x;
     double sum = kE[11];
+#pragma GCC unroll 16
     for (int n = 10; n >= 0; --n) sum = sum * z + kE[n];
     return 1.0 - 1.1283791670955126 * x * sum;  // 2/sqrt(pi)
   }
@@ -60,6 +61,8 @@ inline double erfc_fast(double x)
   };
   const double t = 2.0 / (2.0 + x), s = 2.0 * t - 1.0;
   double g = kA[21];
+  // Unrolled: a multiply and an add per term instead of six instructions with the loop's.
+#pragma GCC unroll 32
   for (int k = 20; k >= 0; --k) g = g * s + kA[k];
   return t * exp_fast(g - x * x);
 }
