@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "common/constants.h"
 #include "common/fast_cbrt.h"
@@ -17,6 +19,14 @@ using gap_forms::form_mean;
 using gap_forms::FormMean;
 
 namespace {
+// 2^-k for 0 <= k <= 1022, from the exponent bits.
+double pow2_neg(int k)
+{
+  const std::uint64_t bits = static_cast<std::uint64_t>(1023 - k) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
 const double kSqrtHalf = std::sqrt(0.5), kSqrtPi = std::sqrt(kPi);
 // e^z for |z| < 0.25 by its Taylor series to z^13 (z^14/14! < 1e-19): no range reduction.
 double exp_small(double z)
@@ -135,9 +145,20 @@ void RaceAdmittance::contact(double fn, double speed, double g_dry, double reces
   const double leak = area_h * inv_resistivity_;
   // The metallic fraction, or 0 when it cannot matter (race_admittance.h).
   const double xm = (recess > 0.0 ? c.gap * inv_sigma_ : c.lambda) * kSqrtHalf;
-  // (2^-54 needs x > 5.9: below 5.5 the bound is not worth its exponential.)
-  const double bound = xm > 5.5 ? exp_fast(-xm * xm) / (xm * kSqrtPi) : 1.0;
-  const bool negligible = bound <= 0x1p-54 && bound * g_dry <= 1e-17 * leak;
+  // (2^-54 needs x > 5.9: below 5.5 the bound is not worth its exponential.) From x = 6 a
+  // cheaper bound first, without the exponential: e^(-x^2) <= 2^-k, k = floor(x^2 / ln 2)
+  // (taken a hair low), and 1/(x sqrt(pi)) < 0.1, so bound < 0.1 2^-k; only where that does
+  // not settle it, the bound itself (the same decision: the cheap one is never smaller).
+  bool negligible = false;
+  if (xm >= 6.0) {
+    const double k = std::min(std::floor(xm * xm * (1.4426950408889634 * (1.0 - 1e-12))), 1000.0);
+    const double cheap = 0.1 * pow2_neg(static_cast<int>(k));
+    negligible = cheap <= 0x1p-54 && cheap * g_dry <= 1e-17 * leak;
+  }
+  if (!negligible && xm > 5.5) {
+    const double bound = exp_fast(-xm * xm) / (xm * kSqrtPi);
+    negligible = bound <= 0x1p-54 && bound * g_dry <= 1e-17 * leak;
+  }
   c.metallic = negligible ? 0.0 : erfc_fast(xm);
   const double free = 1.0 - c.metallic;
   c.g = c.metallic * g_dry;
