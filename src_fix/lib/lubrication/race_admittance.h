@@ -34,7 +34,8 @@ class RaceAdmittance {
   // The metallic fraction f = erfc(x) (x = gap / (sigma sqrt 2)) is set to 0 without calling
   // erfc when erfc(x) <= e^(-x^2) / (x sqrt(pi)) (x > 0) is below both 2^-54 (then 1 - f is 1
   // exactly, so C does not change in any bit) and 1e-17 of the leakage over g_dry (then G
-  // changes by less than 1e-17 relative).
+  // changes by less than 1e-17 relative). From x = 6 the bound is first taken from the
+  // exponent bits, without the exponential (race_admittance.cpp); the decision is the same.
   // Written into c (every field): the bearing's loop fills its records in place.
   void contact(double fn, double speed, double g_dry, double recess, ContactAdmittance &c) const;
   ContactAdmittance contact(double fn, double speed, double g_dry, double recess) const
