@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bearing/diagnose.h"
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
@@ -271,6 +273,49 @@ DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double 
   r.note = "double impulse: entry-exit delay " + format_number(r.delay_s * 1e6, 4) + " us over " +
            std::to_string(r.passes) + " passes";
   return r;
+}
+
+LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
+                                       const DiagnoseOptions &o)
+{
+  std::string defect = found.defect;
+  double f = found.frequency_hz;
+  if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
+    defect = o.assume_defect;
+    f = defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
+  }
+  LocatedDefect l;
+  l.height_source = "the double impulse: entry and exit events of the ring acceleration";
+  l.depth_note =
+      "not determined: the entry and exit events give the pit's length along the raceway only";
+  if (defect == "ball") {
+    l.method = "not determined by the double impulse (a ball defect)";
+    l.position_note = "not determined: the defective ball cannot be told from the others";
+    return l;
+  }
+  if (defect != "inner" && defect != "outer") {
+    l.method = "not applicable";
+    return l;
+  }
+  l.position_note = "not determined: the double impulse gives the size only";
+  const BearingGeometry &g = o.geometry;
+  if (!(g.db > 0 && g.dp > 0) || g.nb < 2) {
+    l.method = "needs the ball count and the ball and pitch diameters";
+    return l;
+  }
+  const DoubleImpulseSize e = size_from_double_impulse(s.x, s.rate, f, defect, g.nb, {});
+  l.method = e.note;
+  if (defect != found.defect)
+    l.method = "assumed " + defect + " defect ({diagnose.assume_defect}); " + l.method;
+  l.passes = e.passes;
+  if (!e.valid) return l;
+  l.valid = true;
+  l.size_deg = e.size_deg;
+  l.size_lo_deg = e.size_lo_deg;
+  l.size_hi_deg = e.size_hi_deg;
+  const double c = g.db * std::cos(g.contact_angle_deg * kPi / 180);
+  l.arc_m = e.size_deg * kPi / 180 * (defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2);
+  return l;
 }
 
 }  // namespace ohmdem::post

@@ -59,6 +59,15 @@ DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double 
                                            const std::string &defect, int nb,
                                            const DoubleImpulseSettings &s);
 
+struct Diagnosis;
+struct DiagnoseOptions;
+struct Signal;
+struct LocatedDefect;
+// diagnose's size, interval and what stays open, by this method (diagnose --size-method
+// double-impulse): the race defect found (or o.assume_defect at its kinematic frequency).
+LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
+                                       const DiagnoseOptions &o);
+
 // Residual of the order-p autoregressive model of x (Levinson-Durbin on its autocorrelation).
 std::vector<double> ar_residual(const std::vector<double> &x, int p);
 
