@@ -111,8 +111,9 @@ def heatmap(out, rows, g, channel):
               "set palette defined (0 'white', 15 'yellow', 50 'orange', 100 'red'); "
               f"set xlabel 'sampling rate'; set ylabel 'noise'; set title '{channel}: size error "
               "against rate and noise'; "
-              f"plot '{dat}' using 1:2:3 with image notitle, '{dat}' using 1:2:(sprintf('%.0f',"
-              "$3)) with labels notitle")
+              f"set xrange [-0.5:{len(g['rates']) - 0.5}]; set yrange [-0.5:{len(g['noise']) - 0.5}]; "
+              f"plot '{dat}' using 1:2:3 with points pt 5 ps 9 palette notitle, '{dat}' using "
+              "1:2:(sprintf('%.0f', $3)) with labels notitle")
     subprocess.run(["gnuplot", "-e", script], check=True)
     return png
 

@@ -2,9 +2,9 @@
 // The double-impulse size (post/bearing/double_impulse.h) on synthetic accelerometer records: a
 // ring resonance (a damped oscillator) driven by a ball's force at every defect pass, dropping
 // over 30 us as the ball enters (the step) and coming back at the exit with a 10 us overshoot
-// to 3 times the load (the impulse), simulated at 1 MHz and acquired at 20 and 50 kHz through the
-// Butterworth anti-alias filter of dsp/acquire, with white noise. The reference is the delay the
-// record was made with.
+// to 3 times the load (the impulse), simulated at 1 MHz and acquired at 20 and 50 kHz through
+// the Butterworth anti-alias filter of dsp/acquire, with white noise. The reference is the
+// delay the record was made with.
 #include <gtest/gtest.h>
 
 #include <cmath>
