@@ -18,9 +18,8 @@ from deck_checks import check, finish
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("--exe", required=True)
-    p.add_argument("--post", required=True)
-    p.add_argument("--src", required=True)
+    for name in ("--exe", "--post", "--src"):  # ohmdem, ohmdem-post, the source tree
+        p.add_argument(name, required=True)
     a = p.parse_args()
     with tempfile.TemporaryDirectory() as out:
         env = dict(os.environ, OHMDEM=a.exe, POST=a.post)

@@ -22,9 +22,9 @@ using ohmdem::test::kPi;
 using test::CliRun;
 using test::run;
 
-Json diagnose_json(const std::string &args, const std::string &what)
+// The command's JSON, its status checked.
+Json json_of(const CliRun &r, const std::string &what)
 {
-  const CliRun r = run("diagnose " + args + " --format json");
   EXPECT_EQ(r.status, 0) << r.out;
   return Json::parse(r.out.substr(r.out.find('{')), what);
 }
@@ -50,10 +50,10 @@ TEST(DiagnoseDoubleImpulse, SyntheticOuterPitThroughTheCommand)
     text << ring(s) + 2 * ring(s - tau) + noise(g) << "\n";
   }
   const std::string rec = test::write_temp("double_impulse_outer.txt", text.str());
-  const Json j = diagnose_json(rec +
-                                   " --rate 50000 --rpm 1797 --bearing 6205 --assume-defect "
-                                   "outer --size-method double-impulse",
-                               "synthetic");
+  const Json j = json_of(run("diagnose " + rec +
+                             " --format json --rate 50000 --rpm 1797 --bearing 6205 "
+                             "--assume-defect outer --size-method double-impulse"),
+                         "synthetic");
   const double want = 360 * bpfo * tau / 9;  // 2.15 deg
   const Json *size = j.find("size_deg");
   ASSERT_TRUE(size && size->is_number()) << j.find("size_method")->string();
@@ -73,10 +73,10 @@ TEST(DiagnoseDoubleImpulse, RealRecordsGiveASizeWithIntervalOrSayWhyNot)
   const std::string dir = ohmdem::test::cwru_dir();
   if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
   for (const char *rec : {"sig01", "sig02", "sig07"}) {
-    const Json j = diagnose_json(dir + "/" + rec +
-                                     ".mat --variable DE_time --rate 12000 --rpm-variable RPM "
-                                     "--bearing 6205 --size-method double-impulse",
-                                 rec);
+    const Json j = json_of(run("diagnose --format json " + dir + "/" + rec +
+                               ".mat --variable DE_time --rate 12000 --rpm-variable RPM "
+                               "--bearing 6205 --size-method double-impulse"),
+                           rec);
     const std::string method = j.find("size_method")->string();
     const Json *iv = j.find("size_interval_deg");
     if (iv && !iv->is_null()) {
