@@ -3,10 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "bearing/diagnose.h"
 #include "core/constants.h"
-#include "core/error.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
 #include "dsp/envelope.h"
@@ -52,22 +52,15 @@ std::vector<double> ar_residual(const std::vector<double> &x, int p)
 
 namespace {
 
+// The settings are the library's own (no command sets them): a bad one is a programming
+// error, not the user's.
 void check(const DoubleImpulseSettings &s)
 {
-  if (s.ar_order > 1000)
-    throw SettingError("{double_impulse.ar_order} must be at most 1000, got " +
-                       std::to_string(s.ar_order));
-  if (s.groups < 3)
-    throw SettingError("{double_impulse.groups} must be at least 3, got " +
-                       std::to_string(s.groups));
-  if (!(s.confidence > 0 && s.confidence < 1))
-    throw SettingError("{double_impulse.confidence} must be in (0, 1)");
-  if (!(s.min_delay_samples >= 1))
-    throw SettingError("{double_impulse.min_delay_samples} must be at least 1");
-  if (!(s.band_lo >= 0) || (s.band_hi > 0 && s.band_hi <= s.band_lo))
-    throw SettingError(
-        "{double_impulse.band_lo} and {double_impulse.band_hi}: expected "
-        "0 <= lo < hi (hi <= 0: the Nyquist frequency)");
+  if (s.ar_order > 1000 || s.groups < 3 || !(s.confidence > 0 && s.confidence < 1) ||
+      !(s.min_delay_samples >= 1) || !(s.band_lo >= 0) || (s.band_hi > 0 && s.band_hi <= s.band_lo))
+    throw std::invalid_argument(
+        "double impulse: settings out of range (AR order at most 1000, at least 3 groups, "
+        "confidence in (0, 1), at least 1 sample of delay, 0 <= band low < band high)");
 }
 
 // The secondary peak of an averaged autocorrelation: the largest value after the main lobe's

@@ -54,7 +54,7 @@ PassAutocorrelation pass_autocorrelation(const std::vector<double> &x, double ra
                                          const DoubleImpulseSettings &s);
 
 // x an acceleration sampled at `rate`; the defect's passes repeat at f (Hz, BPFI or BPFO);
-// defect "inner" or "outer"; nb balls. Throws SettingError for settings out of range.
+// defect "inner" or "outer"; nb balls. Throws std::invalid_argument for settings out of range.
 DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double rate, double f,
                                            const std::string &defect, int nb,
                                            const DoubleImpulseSettings &s);
@@ -63,8 +63,8 @@ struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
 struct LocatedDefect;
-// diagnose's size, interval and what stays open, by this method (diagnose --size-method
-// double-impulse): the race defect found (or o.assume_defect at its kinematic frequency).
+// diagnose's size, interval and what stays open, by this method (diagnose's double-impulse
+// size method): the race defect found (or o.assume_defect at its kinematic frequency).
 LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
                                        const DiagnoseOptions &o);
 
