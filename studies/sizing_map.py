@@ -202,7 +202,10 @@ def write(out, rows, g, tiny):
              "radial load, pits 50 um deep at the load zone's centre, sizes " +
              ", ".join(f"{d} {s:g} deg" for d, s in g["cases"]) + "; 16 bits. Cells: cases "
              "sized / cases, median / largest |size error| of those sized, intervals covering the "
-             "true size (of all the cases). A case not sized is not covered.", ""]
+             "true size (of all the cases). A case not sized is not covered. The electrical channel is "
+             "R as the instrument records it, the voltage I R (one channel: R and the voltage "
+             "differ by the current only); the lubricated model's Cb is not mapped (the area "
+             "method is written for R's jumps).", ""]
     lines += table(rows, g) + [""]
     for c in g["channels"]:
         lines += [f"Per case, {c} (estimate [interval], deg):", ""] + per_case(rows, g, c) + [""]
