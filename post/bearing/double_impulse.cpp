@@ -278,7 +278,7 @@ LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
     f = defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
   }
   LocatedDefect l;
-  l.height_source = "the double impulse: entry and exit events of the ring acceleration";
+  l.height_source = "no pulse height: the interval from the pass groups' delays";
   l.depth_note =
       "not determined: the entry and exit events give the pit's length along the raceway only";
   if (defect == "ball") {
