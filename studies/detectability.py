@@ -20,6 +20,8 @@ Writes into OUT:
                      an identified race defect), note (why a case could not be analysed)
   detectability.md   the instruments, the map, and the answer to the paper's two claims
   map_*.png          smallest detected / identified size against the sampling rate
+  sizing_map.*       the size estimate's error against rate and noise per channel
+                     (studies/sizing_map.py; its last section of detectability.md)
 """
 import argparse
 import concurrent.futures as cf
@@ -29,6 +31,7 @@ import os
 import subprocess
 
 import common
+import sizing_map
 
 BEARING = common.Bearing("machado2014")  # the deck's default bearing, from its catalog file
 SHAFT_HZ = 500 / (2 * math.pi)     # the study's inner ring speed, 500 rad/s
@@ -405,6 +408,7 @@ def main():
             example = write_example(out, sims)
         pngs = write_map(out, rows, g) + ([example] if os.path.exists(example) else [])
         write_report(out, rows, g, a.quick, pngs)
+        append_sizing_map(out)
         return
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)
     sims = simulate(out, g["sizes"])
@@ -423,6 +427,19 @@ def main():
                              r["bits"]))
     pngs = write_map(out, rows, g) + [write_example(out, sims)]
     write_report(out, rows, g, a.quick, pngs)
+    sizing_map.run(out, tiny=a.quick)  # issue 26: the size's error against rate and noise
+    append_sizing_map(out)
+
+
+def append_sizing_map(out):
+    """The sizing map (studies/sizing_map.py, written into OUT) as the report's last section."""
+    path = os.path.join(out, "sizing_map.md")
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        body = f.read().split("\n", 1)[1]  # without its title
+    with open(os.path.join(out, "detectability.md"), "a") as f:
+        f.write("\n## Sizing map (issue 26)\n" + body)
 
 
 if __name__ == "__main__":

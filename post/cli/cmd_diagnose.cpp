@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "bearing/diagnose.h"
+#include "bearing/double_impulse.h"
 #include "bearing/order_diagnose.h"
 #include "cli/commands.h"
 #include "cli/common.h"
@@ -156,6 +157,9 @@ int run_diagnose(const std::vector<std::string> &argv)
            "the --size-curve's own error, the relative standard deviation of its area (from "
            "simulations the curve does not use; sizing.py writes it in the curve's header): "
            "the size's interval includes it (default 0: the pass-to-pass scatter only)");
+  a.option("--size-method", "METHOD",
+           "area (default: the electrical pulses' area) or double-impulse (an accelerometer "
+           "record: the delay between the ball's entry and exit events in the pit)");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -246,11 +250,22 @@ int run_diagnose(const std::vector<std::string> &argv)
     o.baseline = &base;
   }
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
+  // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
+  const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
+  const bool double_impulse = size_method == "double-impulse";
+  if (!double_impulse && size_method != "area")
+    throw Error("diagnose: --size-method must be area or double-impulse, got '" + size_method +
+                "'");
+  if (double_impulse && (in_orders || a.has("--size-curve") || a.has("--pulse-height")))
+    throw Error(
+        "diagnose: --size-method double-impulse needs a record at constant speed and "
+        "takes no --size-curve or --pulse-height (they belong to the area method)");
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
+  if (double_impulse && o.estimate_size) d.located = locate_by_double_impulse(s, d, o);
   name_flags(d.detection);
   d.located.method = flag_named(d.located.method);
   d.located.height_source = flag_named(d.located.height_source);
