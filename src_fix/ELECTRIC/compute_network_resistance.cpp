@@ -80,6 +80,14 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
           std::string("compute network/resistance: keyword 'lubricant': ") + e.what();
       error->all(FLERR, msg.c_str());
     }
+    const double field = lubricated_->state().breakdown;  // the file's, 0 if none
+    if (lube_.breakdown_file && !(field > 0.0))
+      error->all(FLERR, ("compute network/resistance: keyword 'breakdown': the lubricant file '" +
+                         lubricated_->path() + "' gives no breakdown field (give one in V/m)")
+                            .c_str());
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", field);
+    if (lube_.breakdown_file) breakdown_text_ = text;
   }
   if (lube_keyword_) define_lubricant_variables();
 }
@@ -97,6 +105,7 @@ void ComputeNetworkResistance::define_lubricant_variables()
     input->variable->set(3, argv);
   };
   define("lubricant_on", lubricated_ ? "1" : "0");
+  define("lubricant_breakdown", lubricated_ ? breakdown_text_ : "0");  // the field in use
   if (!lubricated_) return;
   const ohmdem::lubrication::LubricantState &s = lubricated_->state();
   define("lubricant_file", lubricated_->path());
@@ -187,7 +196,12 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else if (kw == "excitation") {
       lube_.excitation = a.positive(kw, "the voltage amplitude across the bearing > 0 (V)");
     } else if (kw == "breakdown") {
-      lube_.breakdown = a.non_negative(kw, "the film's breakdown field >= 0 (V/m; 0: none)");
+      lube_.breakdown_file = a.next_is("lubricant");
+      breakdown_text_ = a.peek();  // a number as written, for run.json
+      if (lube_.breakdown_file)
+        a.word(kw, "lubricant");
+      else
+        lube_.breakdown = a.non_negative(kw, "the film's breakdown field >= 0 (V/m; 0: none)");
     } else {
       a.unknown(kw.c_str(),
                 "current high low area model solver pair netlist vtk every closedform "

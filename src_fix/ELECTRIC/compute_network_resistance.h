@@ -76,7 +76,8 @@ class ComputeNetworkResistance : public Compute {
   // Keyword lubricant (lubricated_bearing.h): null with `lubricant none`, and then nothing of
   // it runs and the vector keeps its 8 values.
   LubricationSettings lube_;
-  bool lube_keyword_ = false;  // the keyword was given (even as none): define the variables
+  bool lube_keyword_ = false;         // the keyword was given (even as none): define the variables
+  std::string breakdown_text_ = "0";  // the keyword breakdown's word, for lubricant_breakdown
   std::unique_ptr<LubricatedBearing> lubricated_;
   LubricatedResult lube_result_;
   void define_lubricant_variables();
