@@ -75,19 +75,13 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   if (lube_.on()) {
     try {
       lubricated_ = std::make_unique<LubricatedBearing>(lmp, lube_);
+      lube_vtk_ = std::make_unique<LubricatedVtk>(lmp);
     } catch (const ohmdem::lubrication::LubricantError &e) {
       const std::string msg =
           std::string("compute network/resistance: keyword 'lubricant': ") + e.what();
       error->all(FLERR, msg.c_str());
     }
-    const double field = lubricated_->state().breakdown;  // the file's, 0 if none
-    if (lube_.breakdown_file && !(field > 0.0))
-      error->all(FLERR, ("compute network/resistance: keyword 'breakdown': the lubricant file '" +
-                         lubricated_->path() + "' gives no breakdown field (give one in V/m)")
-                            .c_str());
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", field);
-    if (lube_.breakdown_file) breakdown_text_ = text;
+    if (lube_.breakdown_file) breakdown_text_ = std::to_string(lubricated_->state().breakdown);
   }
   if (lube_keyword_) define_lubricant_variables();
 }
@@ -349,13 +343,16 @@ void ComputeNetworkResistance::evaluate()
     lube_result_ = lubricated_->evaluate(
         context_, due,
         last_path_ == closed_form_path_.get() ? closed_form_path_->ball_conductances() : nullptr);
+  const VtkPartFn films = lubricated_ && due && exports_->draws()
+                              ? lube_vtk_->gather(*lubricated_, context_, lube_result_.v_high)
+                              : VtkPartFn();  // collective
   if (last_path_ == gathered_.get() && comm->me == 0) {
     // With a lubricant the netlist is the AC one of the impedance (lubricated_network.h).
     auto ac = [&](std::ostream &os) {
       lubricated_->network().write_netlist(os, context_.current, lubricated_->omega());
     };
     exports_->write(*gathered_, *contacts_, context_.current,
-                    lubricated_ ? AcNetlistFn(ac) : AcNetlistFn());
+                    lubricated_ ? AcNetlistFn(ac) : AcNetlistFn(), films);
   }
 }
 

@@ -19,6 +19,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include <string>
 
 #include "ELECTRIC/lubricated_bearing.h"
+#include "ELECTRIC/lubricated_vtk.h"
 #include "ELECTRIC/resistance_context.h"
 #include "compute.h"
 
@@ -80,6 +81,7 @@ class ComputeNetworkResistance : public Compute {
   std::string breakdown_text_ = "0";  // the keyword breakdown's word, for lubricant_breakdown
   std::unique_ptr<LubricatedBearing> lubricated_;
   LubricatedResult lube_result_;
+  std::unique_ptr<LubricatedVtk> lube_vtk_;  // with a lubricant: the contacts' VTK file
   void define_lubricant_variables();
 
   bigint evaluated_step_ = -1;
