@@ -2,9 +2,10 @@
 // Contacts as VTK points; see contact_points_vtk.h.
 #include "writers/contact_points_vtk.h"
 
-#include <iomanip>
 #include <ostream>
 #include <stdexcept>
+
+#include "writers/scene_vtk.h"
 
 namespace ohmdem {
 
@@ -21,12 +22,7 @@ void write_contact_points_vtk(std::ostream &os, const std::vector<ContactPoint> 
                                   std::to_string(p.values.size()) + " values for " +
                                   std::to_string(names.size()) + " names");
   const std::size_t n = points.size();
-  os << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET POLYDATA\n";
-  os << std::setprecision(17);
-  os << "POINTS " << n << " double\n";
-  for (const ContactPoint &p : points) os << p.at[0] << ' ' << p.at[1] << ' ' << p.at[2] << '\n';
-  os << "VERTICES " << n << ' ' << 2 * n << '\n';
-  for (std::size_t k = 0; k < n; ++k) os << "1 " << k << '\n';
+  write_vertex_points(os, title, n, [&](std::size_t k) { return points[k].at; });
   os << "POINT_DATA " << n << "\nSCALARS ball double 1\nLOOKUP_TABLE default\n";
   for (const ContactPoint &p : points) os << static_cast<double>(p.ball) << '\n';
   os << "SCALARS race double 1\nLOOKUP_TABLE default\n";

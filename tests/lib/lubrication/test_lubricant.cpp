@@ -2,6 +2,7 @@
 // The lubricant catalog and its temperature laws (src_fix/lib/lubrication/lubricant.*).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -190,4 +191,36 @@ TEST(Lubricant, BadAlphaTableNamesTheProblem)
   EXPECT_NE(error_of(std::string(kGood) + "variable resistivity_tref index 300\n")
                 .find("resistivity_tref: expected -40 to 200 C"),
             std::string::npos);
+}
+
+// Stachowiak and Batchelor, Engineering Tribology, Table 2.3: alpha (1e-9 m^2/N) of mineral
+// oils measured at 30, 60 and 100 C (the 12 rows with all three; the oils' viscosities at 30 C,
+// mPa s, name them). Log-linear interpolation from the 30 and 100 C values predicts the measured
+// 60 C value within 4.5 % for 10 of them, 10 % (light machine oil) and 14 % (cylinder oil)
+// for the other two: the law's error, against the tabulated data, is what these bounds hold.
+TEST(Lubricant, AlphaInterpolationAgainstTabulatedMineralOils)
+{
+  struct Row {
+    double eta30, a30, a60, a100;
+  };
+  const Row rows[] = {{153, 23.7, 20.5, 15.8}, {250, 25.0, 21.3, 17.6}, {810, 34, 28, 22},
+                      {18.6, 20, 16, 13},      {45, 28, 20, 16},        {107, 29.6, 22.8, 17.8},
+                      {122, 27.0, 21.6, 17.5}, {171, 28, 23, 18},       {30.7, 25.7, 20.3, 15.4},
+                      {165, 33.0, 23.8, 16.0}, {310, 34.6, 26.3, 19.5}, {2000, 41.5, 29.4, 25.0}};
+  int within = 0;
+  double worst = 0.0;
+  for (const Row &r : rows) {
+    const double a60 = alpha_at({{30.0, r.a30 * 1e-9}, {100.0, r.a100 * 1e-9}}, 60.0);
+    const double err = std::fabs(a60 / (r.a60 * 1e-9) - 1.0);
+    within += err < 0.045;
+    worst = std::max(worst, err);
+    // With the three points tabulated, each is reproduced exactly.
+    const std::vector<std::pair<double, double>> three = {
+        {30.0, r.a30 * 1e-9}, {60.0, r.a60 * 1e-9}, {100.0, r.a100 * 1e-9}};
+    EXPECT_EQ(alpha_at(three, 60.0), r.a60 * 1e-9) << r.eta30;
+    // Between the points alpha falls monotonically (every row falls with T).
+    EXPECT_LT(alpha_at(three, 80.0), alpha_at(three, 70.0)) << r.eta30;
+  }
+  EXPECT_EQ(within, 10);
+  EXPECT_LT(worst, 0.14);
 }
