@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the lubricated 6208's VTK export (compute network/resistance with a
 lubricant and `vtk`, doc/compute_network_resistance.md): the companion file
@@ -8,7 +7,7 @@ network_lubricated.STEP.vtk read back and held against the same run's signal.txt
            sum to Cb; the high race's current phasors sum to the injected current
            (Kirchhoff); listed in the .pvd as part 3; without a lubricant no such file.
   vtk_mpi  the files are identical with 1 and 2 processes.
-Usage: lubricated_vtk_tests.py TEST --exe OHMDEM --src SOURCE_DIR
+Run through lubricated_network_tests.py (vtk, vtk_mpi).
 """
 import cmath
 import glob
@@ -17,7 +16,7 @@ import os
 
 import numpy as np
 
-from bearing_tests import read_signal, run_named_test
+from bearing_tests import read_signal
 from deck_checks import check
 
 TEND, DT, EVERY = 0.003, 1e-5, 100
@@ -113,6 +112,3 @@ def test_vtk_mpi(r):
     check(len(texts[0]) == 4 and texts[0] == texts[1],
           "the lubricated contacts files are identical with 1 and 2 processes")
 
-
-if __name__ == "__main__":
-    run_named_test({"vtk": test_vtk, "vtk_mpi": test_vtk_mpi}, "ohmdem_lubvtk_")
