@@ -89,7 +89,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
 // With the keyword lubricant, what ran, for the deck (its signal columns and run.json):
 // string variables lubricant_on (0 or 1) and, with a lubricant, lubricant_file,
 // lubricant_path (closedform or network: how Z is evaluated), lubricant_eta0 (Pa s at the
-// temperature), lubricant_alpha (1/Pa), lubricant_eps_r.
+// temperature), lubricant_alpha (1/Pa), lubricant_eps_r, lubricant_resistivity (ohm m).
 void ComputeNetworkResistance::define_lubricant_variables()
 {
   char buf[64];
@@ -106,7 +106,8 @@ void ComputeNetworkResistance::define_lubricant_variables()
   define("lubricant_path", lube_.network ? "network" : "closedform");
   for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
                                     {"lubricant_alpha", s.alpha},
-                                    {"lubricant_eps_r", s.eps_r}}) {
+                                    {"lubricant_eps_r", s.eps_r},
+                                    {"lubricant_resistivity", s.resistivity}}) {
     std::snprintf(buf, sizeof buf, "%.9g", value);
     define(name, buf);
   }
