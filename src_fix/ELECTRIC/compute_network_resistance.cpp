@@ -75,11 +75,13 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
   if (lube_.on()) {
     try {
       lubricated_ = std::make_unique<LubricatedBearing>(lmp, lube_);
+      lube_vtk_ = std::make_unique<LubricatedVtk>(lmp);
     } catch (const ohmdem::lubrication::LubricantError &e) {
       const std::string msg =
           std::string("compute network/resistance: keyword 'lubricant': ") + e.what();
       error->all(FLERR, msg.c_str());
     }
+    if (lube_.breakdown_file) breakdown_text_ = std::to_string(lubricated_->state().breakdown);
   }
   if (lube_keyword_) define_lubricant_variables();
 }
@@ -87,7 +89,7 @@ ComputeNetworkResistance::ComputeNetworkResistance(LAMMPS *lmp, int &iarg, int n
 // With the keyword lubricant, what ran, for the deck (its signal columns and run.json):
 // string variables lubricant_on (0 or 1) and, with a lubricant, lubricant_file,
 // lubricant_path (closedform or network: how Z is evaluated), lubricant_eta0 (Pa s at the
-// temperature), lubricant_alpha (1/Pa), lubricant_eps_r.
+// temperature), lubricant_alpha (1/Pa), lubricant_eps_r, lubricant_resistivity (ohm m).
 void ComputeNetworkResistance::define_lubricant_variables()
 {
   char buf[64];
@@ -97,13 +99,15 @@ void ComputeNetworkResistance::define_lubricant_variables()
     input->variable->set(3, argv);
   };
   define("lubricant_on", lubricated_ ? "1" : "0");
+  define("lubricant_breakdown", lubricated_ ? breakdown_text_ : "0");  // the field in use
   if (!lubricated_) return;
   const ohmdem::lubrication::LubricantState &s = lubricated_->state();
   define("lubricant_file", lubricated_->path());
   define("lubricant_path", lube_.network ? "network" : "closedform");
   for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
                                     {"lubricant_alpha", s.alpha},
-                                    {"lubricant_eps_r", s.eps_r}}) {
+                                    {"lubricant_eps_r", s.eps_r},
+                                    {"lubricant_resistivity", s.resistivity}}) {
     std::snprintf(buf, sizeof buf, "%.9g", value);
     define(name, buf);
   }
@@ -187,7 +191,12 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else if (kw == "excitation") {
       lube_.excitation = a.positive(kw, "the voltage amplitude across the bearing > 0 (V)");
     } else if (kw == "breakdown") {
-      lube_.breakdown = a.non_negative(kw, "the film's breakdown field >= 0 (V/m; 0: none)");
+      lube_.breakdown_file = a.next_is("lubricant");
+      breakdown_text_ = a.peek();  // a number as written, for run.json
+      if (lube_.breakdown_file)
+        a.word(kw, "lubricant");
+      else
+        lube_.breakdown = a.non_negative(kw, "the film's breakdown field >= 0 (V/m; 0: none)");
     } else {
       a.unknown(kw.c_str(),
                 "current high low area model solver pair netlist vtk every closedform "
@@ -335,13 +344,16 @@ void ComputeNetworkResistance::evaluate()
     lube_result_ = lubricated_->evaluate(
         context_, due,
         last_path_ == closed_form_path_.get() ? closed_form_path_->ball_conductances() : nullptr);
+  const VtkPartFn films = lubricated_ && due && exports_->draws()
+                              ? lube_vtk_->gather(*lubricated_, context_, lube_result_.v_high)
+                              : VtkPartFn();  // collective
   if (last_path_ == gathered_.get() && comm->me == 0) {
     // With a lubricant the netlist is the AC one of the impedance (lubricated_network.h).
     auto ac = [&](std::ostream &os) {
       lubricated_->network().write_netlist(os, context_.current, lubricated_->omega());
     };
     exports_->write(*gathered_, *contacts_, context_.current,
-                    lubricated_ ? AcNetlistFn(ac) : AcNetlistFn());
+                    lubricated_ ? AcNetlistFn(ac) : AcNetlistFn(), films);
   }
 }
 

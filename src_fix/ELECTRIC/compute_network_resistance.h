@@ -19,6 +19,7 @@ ComputeStyle(network/resistance,ComputeNetworkResistance)
 #include <string>
 
 #include "ELECTRIC/lubricated_bearing.h"
+#include "ELECTRIC/lubricated_vtk.h"
 #include "ELECTRIC/resistance_context.h"
 #include "compute.h"
 
@@ -76,9 +77,11 @@ class ComputeNetworkResistance : public Compute {
   // Keyword lubricant (lubricated_bearing.h): null with `lubricant none`, and then nothing of
   // it runs and the vector keeps its 8 values.
   LubricationSettings lube_;
-  bool lube_keyword_ = false;  // the keyword was given (even as none): define the variables
+  bool lube_keyword_ = false;         // the keyword was given (even as none): define the variables
+  std::string breakdown_text_ = "0";  // the keyword breakdown's word, for lubricant_breakdown
   std::unique_ptr<LubricatedBearing> lubricated_;
   LubricatedResult lube_result_;
+  std::unique_ptr<LubricatedVtk> lube_vtk_;  // with a lubricant: the contacts' VTK file
   void define_lubricant_variables();
 
   bigint evaluated_step_ = -1;

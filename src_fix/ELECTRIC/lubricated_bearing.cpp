@@ -65,6 +65,10 @@ LubricatedBearing::LubricatedBearing(LAMMPS *lmp, const LubricationSettings &set
   path_ = lub::lubricant_path(settings.lubricant, lub::default_lubricant_dir());
   const std::string name = path_.substr(path_.rfind('/') + 1);
   state_ = lub::state_at(lub::read_lubricant_file(path_, name), settings.temperature);
+  if (settings_.breakdown_file && !(state_.breakdown > 0.0))
+    throw lub::LubricantError("breakdown lubricant: the file '" + path_ +
+                              "' gives no breakdown field (give one in V/m)");
+  if (settings_.breakdown_file) settings_.breakdown = state_.breakdown;
 }
 
 void LubricatedBearing::init(const ResistanceContext &)

@@ -33,6 +33,7 @@ struct LubricationSettings {
   double wetted = -1.0;            // wetted radius around a contact (m); required
   double excitation = 1.0;         // voltage amplitude across the bearing (V)
   double breakdown = 0.0;          // breakdown field of the film (V/m); 0: no breakdown
+  bool breakdown_file = false;     // `breakdown lubricant`: the lubricant file's field instead
   bool network = false;            // the general network (keyword closedform no)
   bool on() const { return lubricant != "none"; }
 };

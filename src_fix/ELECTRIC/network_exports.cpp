@@ -146,7 +146,7 @@ std::string NetworkExports::write_bearing_geometry(const GatheredNetworkPath &ne
 // The network as a SPICE netlist and as a VTK file, when asked for (rank 0 only), on the
 // steps of `every`.
 void NetworkExports::write(const GatheredNetworkPath &network, const ContactSet &contacts,
-                           double current, const AcNetlistFn &ac)
+                           double current, const AcNetlistFn &ac, const VtkPartFn &lubricated)
 {
   const bigint step = update->ntimestep;
   if (every_ > 0 && step % every_ != 0) return;
@@ -181,6 +181,15 @@ void NetworkExports::write(const GatheredNetworkPath &network, const ContactSet 
         path, write_particles(network, ohmdem::companion_path(vtk_, "particles", step))};
     const std::string geometry = write_bearing_geometry(network, contacts);
     if (!geometry.empty()) files.push_back(geometry);
+    if (lubricated) {
+      files.push_back(ohmdem::companion_path(vtk_, "lubricated", step));
+      std::ofstream part(files.back());
+      if (!part)
+        error->one(FLERR, ("compute network/resistance: keyword 'vtk': cannot open '" +
+                           files.back() + "' for writing")
+                              .c_str());
+      lubricated(part);
+    }
     if (pvd_) {
       try {
         pvd_->add(step, update->atime + static_cast<double>(step - update->atimestep) * update->dt,

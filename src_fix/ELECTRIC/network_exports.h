@@ -23,6 +23,8 @@ class ContactSet;
 class GatheredNetworkPath;
 // Writes another netlist in place of the network's (the lubricated bearing's AC netlist).
 using AcNetlistFn = std::function<void(std::ostream &)>;
+// Writes one more VTK file of the step (the lubricated contacts, lubricated_vtk.h).
+using VtkPartFn = std::function<void(std::ostream &)>;
 
 class NetworkExports : protected Pointers {
  public:
@@ -36,9 +38,10 @@ class NetworkExports : protected Pointers {
   // At the start of a run, on every process: stops the run if a file cannot be written.
   void check_files();
   // Process 0, after the gathered network's evaluation on step `step` (nothing unless due);
-  // `ac`, when set, writes the netlist file instead of the network's DC netlist.
+  // `ac`, when set, writes the netlist file instead of the network's DC netlist; `lubricated`,
+  // when set, BASE_lubricated[.STEP].vtk beside the network (part 3 of the .pvd).
   void write(const GatheredNetworkPath &network, const ContactSet &contacts, double current,
-             const AcNetlistFn &ac = nullptr);
+             const AcNetlistFn &ac = nullptr, const VtkPartFn &lubricated = nullptr);
 
  private:
   std::string write_particles(const GatheredNetworkPath &network, const std::string &path);

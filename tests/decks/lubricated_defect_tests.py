@@ -112,6 +112,16 @@ def test_breakdown(r, post):
                                      f"(|max| {np.abs(ph).max():.2e} rad)")
     # Broken films conduct through the dry model's metallic path: Rb is the dry R.
     check(np.all(np.abs(sig["Rb"][s] / sig["R"][s] - 1) < 1e-9), "100 V: Rb = the dry R")
+    # `breakdown lubricant`: VG68's file gives 12 MV/m (IEC 60296's 30 kV over 2.5 mm), so the
+    # films break at 45.7 V * 12/20 = 27.4 V by the scaling above (the threshold is linear in
+    # E): at 35 V they break, which a 20 MV/m field would not (45.7 V).
+    own, _ = r.run("file", lubricant="VG68", tend=0.017, dt=DT, nout=10, excitation=35,
+                   breakdown="lubricant")
+    meta = json.load(open(os.path.join(own, "run.json")))
+    check(meta.get("breakdown") == 1.2e7, "breakdown lubricant: run.json records the file's "
+                                          f"12 MV/m (got {meta.get('breakdown')})")
+    sig = read_signal(own)
+    check(np.all(np.abs(sig["Zphase"][s]) < 1e-3), "35 V under the file's 12 MV/m: the films broke")
 
 
 TESTS = {"defect_inner": test_defect_inner, "defect_kinds": test_defect_kinds,

@@ -7,6 +7,7 @@ network/resistance with a lubricant, doc/lubricated_contact.md "The network"):
   ngspice  the exported AC netlist run by ngspice's .ac analysis (its own sparse LU on the
            MNA system, its own parsing of every R and C): |Z| and phase against the compute's
            to 1e-9, with 1 and 2 processes (exit 77, a ctest skip, without ngspice).
+  vtk, vtk_mpi  the lubricated contacts' VTK file (lubricated_vtk_tests.py).
 Usage: lubricated_network_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import cmath
@@ -22,6 +23,7 @@ import numpy as np
 
 from bearing_tests import read_signal, run_named_test
 from deck_checks import check
+from lubricated_vtk_tests import test_vtk, test_vtk_mpi
 
 TEND, DT = 0.003, 1e-5
 Z_COLUMNS = ["Zabs", "Zphase", "Cb", "Rb"]
@@ -147,4 +149,5 @@ def test_ngspice(r):
 
 
 if __name__ == "__main__":
-    run_named_test({"network": test_network, "ngspice": test_ngspice}, "ohmdem_lubnet_")
+    run_named_test({"network": test_network, "ngspice": test_ngspice, "vtk": test_vtk,
+                    "vtk_mpi": test_vtk_mpi}, "ohmdem_lubnet_")

@@ -148,7 +148,57 @@ def test_mpi(r):
           "lubricated: signal.txt identical with 1 and 2 processes")
 
 
+
+def eta_vg68(t):
+    """VG68's dynamic viscosity (Pa s) at t C, written out: ASTM D341 (Walther) through its
+    40 and 100 C points, times the density 880 (1 - 6.5e-4 (t - 15)) kg/m^3."""
+    ll = lambda nu: math.log10(math.log10(nu + 0.7))
+    b = (ll(68) - ll(8.7)) / (math.log10(373.15) - math.log10(313.15))
+    nu = 10 ** 10 ** (ll(68) - b * (math.log10(t + 273.15) - math.log10(313.15))) - 0.7
+    return nu * 1e-6 * 880 * (1 - 6.5e-4 * (t - 15))
+
+
+def test_temperature_laws(r):
+    # A copy of VG68 with alpha measured at 30, 60 and 100 C (Stachowiak and Batchelor, Table
+    # 2.3, the heavy machine oil that matches its viscosity) and Walden's resistivity from 40 C.
+    src = open(os.path.join(r.src, "inputs", "lubricants", "VG68")).read()
+    lines = [l for l in src.splitlines() if not l.startswith("variable alpha ")]
+    lines += ["variable alpha_T1 index 30", "variable alpha_1 index 2.70e-8",
+              "variable alpha_T2 index 60", "variable alpha_2 index 2.16e-8",
+              "variable alpha_T3 index 100", "variable alpha_3 index 1.75e-8"]
+    table = os.path.join(r.workdir, "VG68_table")
+    walden = os.path.join(r.workdir, "VG68_walden")
+    open(table, "w").write("\n".join(lines) + "\n")
+    open(walden, "w").write("\n".join(lines + ["variable resistivity_tref index 40"]) + "\n")
+    out, _ = r.run("table80", lubricant=table, temperature=80, tend=TEND, dt=DT, nout=10)
+    meta = json.load(open(os.path.join(out, "run.json")))
+    # ln alpha linear in T between 60 and 100 C, written out: 21.6 (17.5/21.6)^(20/40) 1/GPa.
+    expected = 2.16e-8 * (1.75 / 2.16) ** 0.5
+    check(abs(meta["alpha_pv"] / expected - 1) < 1e-8,
+          f"run.json alpha_pv at 80 C from the table: {meta['alpha_pv']:.9g} (expected {expected:.9g})")
+    # Walden: the resistivity, hence the oil's leakage G, follows the viscosity. With smooth
+    # surfaces (sigma 10 nm: lambda > 30, a metallic fraction below erfc(21) ~ 1e-194) the oil
+    # conducts alone, so Rb scales by eta(80) / eta(40).
+    smooth = dict(temperature=80, roughness=1e-8, tend=TEND, dt=DT, nout=10)
+    a = read_signal(r.run("plain80", lubricant=table, **smooth)[0])
+    b = read_signal(r.run("walden80", lubricant=walden, **smooth)[0])
+    s = steady(a)
+    check(np.all(a["lambda_min"][s] > 30),
+          f"sigma 10 nm at 80 C: lambda > 30 (no metal): min {a['lambda_min'][s].min():.1f}")
+    want = eta_vg68(80) / eta_vg68(40)
+    check(abs(meta["eta0"] / eta_vg68(80) - 1) < 1e-8, "run.json eta0 at 80 C (9 digits)")
+    ratio = b["Rb"][s] / a["Rb"][s]
+    worst = np.abs(ratio / want - 1).max()
+    print(f"     Walden: Rb ratio against eta(80)/eta(40): worst relative difference {worst:.1e}")
+    check(worst < 1e-9, f"Walden: Rb(80 C) scales by eta(80)/eta(40) = {want:.12f} "
+                        f"({ratio.min():.12f} .. {ratio.max():.12f})")
+    dc = np.abs(b["Cb"] / a["Cb"] - 1).max()
+    # Cb moves only at second order in G / (omega C) (here about 3e-4).
+    check(dc < 1e-6, f"Walden leaves Cb to second order in G/(omega C): {dc:.1e}")
+
+
 if __name__ == "__main__":
     run_named_test({"paper_point": test_paper_point, "none_unchanged": test_none_unchanged,
-                    "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi},
+                    "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi,
+                    "temperature_laws": test_temperature_laws},
                    "ohmdem_lub_")

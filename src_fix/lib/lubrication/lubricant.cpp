@@ -64,6 +64,34 @@ double walther_viscosity(double nu40, double nu100, double temperature_c)
   return std::pow(10.0, std::pow(10.0, z)) - 0.7;
 }
 
+double alpha_at(const std::vector<std::pair<double, double>> &table, double t)
+{
+  if (table.size() < 2 || !(t >= table.front().first && t <= table.back().first))
+    throw LubricantError("temperature " + std::to_string(t) +
+                         " C is outside the range of the lubricant's alpha table (" +
+                         (table.empty() ? std::string("empty")
+                                        : std::to_string(table.front().first) + " to " +
+                                              std::to_string(table.back().first) + " C") +
+                         "; alpha is not extrapolated)");
+  std::size_t k = 1;
+  while (k + 1 < table.size() && t > table[k].first) ++k;
+  const auto &[t0, a0] = table[k - 1];
+  const auto &[t1, a1] = table[k];
+  if (t == t0) return a0;
+  if (t == t1) return a1;
+  return a0 * std::exp(std::log(a1 / a0) * (t - t0) / (t1 - t0));
+}
+
+namespace {
+
+double dynamic_viscosity(const Lubricant &lub, double t)
+{
+  return walther_viscosity(lub.nu40, lub.nu100, t) * 1e-6 *
+         (lub.rho15 * (1.0 - lub.expansion * (t - 15.0)));
+}
+
+}  // namespace
+
 LubricantState state_at(const Lubricant &lub, double t)
 {
   if (!(t >= -40.0 && t <= 200.0))
@@ -73,9 +101,13 @@ LubricantState state_at(const Lubricant &lub, double t)
   s.nu = walther_viscosity(lub.nu40, lub.nu100, t) * 1e-6;
   s.rho = lub.rho15 * (1.0 - lub.expansion * (t - 15.0));
   s.eta = s.nu * s.rho;
-  s.alpha = lub.alpha;
+  s.alpha = lub.alpha_table.empty() ? lub.alpha : alpha_at(lub.alpha_table, t);
   s.eps_r = lub.eps_r + lub.eps_slope * (t - lub.tref);
-  s.resistivity = lub.resistivity;
+  // Walden's rule: ionic conduction, the conductivity inversely proportional to the viscosity.
+  s.resistivity = std::isnan(lub.resistivity_tref)
+                      ? lub.resistivity
+                      : lub.resistivity * s.eta / dynamic_viscosity(lub, lub.resistivity_tref);
+  s.breakdown = lub.breakdown;
   if (!(s.nu > 0.0) || !(s.rho > 0.0) || !(s.eps_r >= 1.0))
     throw LubricantError("lubricant " + lub.name + " at " + std::to_string(t) +
                          " C: viscosity, density or permittivity out of range (eps_r " +
@@ -116,11 +148,33 @@ Lubricant read_lubricant_file(const std::string &path, const std::string &name)
   lub.nu100 = get("nu100", true);
   lub.rho15 = get("rho15", true);
   lub.expansion = get("expansion", false);
-  lub.alpha = get("alpha", true);
+  // alpha: constant, or the table alpha_T1, alpha_1, alpha_T2, alpha_2[, alpha_T3, alpha_3].
+  for (int k = 1; k <= 3; ++k) {
+    const std::string tk = "alpha_T" + std::to_string(k), ak = "alpha_" + std::to_string(k);
+    if (!v.count(tk) && !v.count(ak)) break;
+    const double tv = get(tk.c_str(), false), av = get(ak.c_str(), true);
+    if (!lub.alpha_table.empty() && !(tv > lub.alpha_table.back().first))
+      throw LubricantError(path + ": expected " + tk + " above alpha_T" + std::to_string(k - 1));
+    lub.alpha_table.emplace_back(tv, av);
+  }
+  if (v.count("alpha_T4") || v.count("alpha_4"))
+    throw LubricantError(path + ": the alpha table has at most 3 points (alpha_T1..alpha_T3)");
+  if (lub.alpha_table.size() == 1)
+    throw LubricantError(path + ": the alpha table needs at least 2 points (alpha_T2, alpha_2)");
+  if (lub.alpha_table.empty())
+    lub.alpha = get("alpha", true);
+  else if (v.count("alpha"))
+    throw LubricantError(path + ": give alpha or the table alpha_T1, alpha_1, ..., not both");
   lub.eps_r = get("eps_r", true);
   lub.eps_slope = get("eps_slope", false);
   lub.tref = get("tref", false);
   lub.resistivity = get("resistivity", true);
+  if (v.count("resistivity_tref")) {
+    lub.resistivity_tref = get("resistivity_tref", false);
+    if (!(lub.resistivity_tref >= -40.0 && lub.resistivity_tref <= 200.0))
+      throw LubricantError(path + ": resistivity_tref: expected -40 to 200 C");
+  }
+  if (v.count("breakdown")) lub.breakdown = get("breakdown", true);
   if (!(lub.nu100 < lub.nu40) || !(lub.nu100 >= 2.0))
     throw LubricantError(path + ": expected nu40 > nu100 >= 2 mm^2/s (Walther's range), got " +
                          std::to_string(lub.nu40) + " and " + std::to_string(lub.nu100));

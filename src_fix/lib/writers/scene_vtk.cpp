@@ -85,16 +85,25 @@ void write_bearing_vtk(std::ostream &os, const std::vector<RingShape> &rings, co
      << radius[0] << ' ' << radius[1] << ' ' << radius[2] << '\n';
 }
 
+void write_vertex_points(std::ostream &os, const std::string &title, std::size_t n,
+                         const std::function<const double *(std::size_t)> &at)
+{
+  os << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET POLYDATA\n";
+  os << std::setprecision(17);
+  os << "POINTS " << n << " double\n";
+  for (std::size_t k = 0; k < n; ++k) {
+    const double *x = at(k);
+    os << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
+  }
+  os << "VERTICES " << n << ' ' << 2 * n << '\n';
+  for (std::size_t k = 0; k < n; ++k) os << "1 " << k << '\n';
+}
+
 void write_particles_vtk(std::ostream &os, const std::vector<ParticlePoint> &particles)
 {
   const std::size_t n = particles.size();
-  os << "# vtk DataFile Version 3.0\nohmdem particles\nASCII\nDATASET POLYDATA\n";
-  os << std::setprecision(17);
-  os << "POINTS " << n << " double\n";
-  for (const auto &p : particles)
-    os << p.centre[0] << ' ' << p.centre[1] << ' ' << p.centre[2] << '\n';
-  os << "VERTICES " << n << ' ' << 2 * n << '\n';
-  for (std::size_t k = 0; k < n; ++k) os << "1 " << k << '\n';
+  write_vertex_points(os, "ohmdem particles", n,
+                      [&](std::size_t k) { return particles[k].centre; });
   os << "POINT_DATA " << n << "\nSCALARS id double 1\nLOOKUP_TABLE default\n";
   for (const auto &p : particles) os << static_cast<double>(p.tag) << '\n';
   os << "SCALARS radius double 1\nLOOKUP_TABLE default\n";

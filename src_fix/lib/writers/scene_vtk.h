@@ -6,8 +6,11 @@
 #ifndef OHMDEM_SCENE_VTK_H
 #define OHMDEM_SCENE_VTK_H
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
+#include <string>
 #include <vector>
 
 namespace ohmdem {
@@ -35,6 +38,12 @@ struct CageShape {
 // groove arc of +-45 degrees.
 void write_bearing_vtk(std::ostream &os, const std::vector<RingShape> &rings, const CageShape *cage,
                        int segments = 120, int across = 8);
+
+// The head of a POLYDATA file of n points, each its own vertex cell: the header with `title`,
+// POINTS (17 digits, the stream left at that precision) and VERTICES; at(k) is point k's
+// x, y, z. The caller writes the POINT_DATA.
+void write_vertex_points(std::ostream &os, const std::string &title, std::size_t n,
+                         const std::function<const double *(std::size_t)> &at);
 
 struct ParticlePoint {
   std::int64_t tag;
