@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "bearing/ball_evidence.h"
 #include "bearing/defect_size.h"
 #include "bearing/family_combs.h"
 #include "bearing/shaft_lines.h"
@@ -187,6 +188,10 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   for (const auto &f : d.families)
     if (f.defect != "cage" && (!best || f.margin > best->margin)) best = &f;
   if (best->score < opt.min_score && d.families[3].score >= opt.min_score) best = &d.families[3];
+  // a ball and a race comb on the same lines: the FTF modulation decides (ball_evidence.h)
+  std::string overlap;
+  if (best->score >= opt.min_score) best = ball_or_race(d.families, best, opt.tolerance, overlap);
+  if (!overlap.empty()) d.warnings.push_back(overlap);
   if (best->score >= opt.min_score) {
     d.defect = best->defect;
     d.score = best->score;
@@ -215,7 +220,16 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // A family whose order lies within the tolerance of a shaft harmonic is not named: its lines
   // may be the machine's (the shaft lines themselves are masked, but a line beside them, of
   // the motor or of a slightly different speed, is not told apart by the comb).
-  if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect) {
+  // A ball comb deeply modulated at FTF is the exception: shaft lines carry no cage modulation.
+  const CageModulation cage_mod = cage_modulation(d.families);
+  const bool ball_modulated = best->defect == "ball" && cage_mod.present();
+  if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect &&
+      ball_modulated)
+    d.warnings.push_back(best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
+                         " fr lies near " + std::to_string(best->shaft_order) +
+                         " fr, but the comb is modulated at FTF (" + cage_mod.describe() +
+                         "), which shaft lines are not: reported as ball");
+  else if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect) {
     d.candidate = d.defect;
     d.defect = "ambiguous";
     d.reason = best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
