@@ -17,7 +17,11 @@ Before the FTF-modulation rules (bearing/ball_evidence.h): the 6203's ball fault
 `ambiguous` (2 BSF 0.3 % from 4 fr) at every SNR, and an outer-race fault of the "close" bearing
 (2 BSF 1 % from BPFO) at 48 kHz and -6 and -12 dB read `ball` (its comb tied the outer one).
 
-Usage: synthetic_diagnose.py --post OHMDEM_POST [--quick]
+With --fixture FILE, also the simulator's own ball defect (make_ball_fixture.sh: the 6208's
+ring acceleration at 12 kHz) with acquire's noise added at about 0 and -10 dB: ball at 0 dB, never
+a wrong family.
+
+Usage: synthetic_diagnose.py --post OHMDEM_POST [--quick] [--fixture FILE]
 """
 import argparse
 import itertools
@@ -34,9 +38,9 @@ FR = 1797 / 60  # the CWRU motor's no-load speed (Hz)
 SNRS = [0, -6, -12]  # impulse-train power over noise power (dB)
 
 
-def verdict(post, path, bearing, rate):
-    out = subprocess.run([post, "diagnose", path, "--rate", str(rate), "--shaft-hz", repr(FR),
-                          *sb.bearing_args(bearing), "--no-size", "--format", "json"],
+def verdict(post, path, bearing, rate, extra=None):
+    args = extra or ["--rate", str(rate), "--shaft-hz", repr(FR), *sb.bearing_args(bearing)]
+    out = subprocess.run([post, "diagnose", path, *args, "--no-size", "--format", "json"],
                          capture_output=True, text=True)
     if out.returncode != 0:
         return "error:" + out.stderr.strip()[:80], 0.0
@@ -63,10 +67,31 @@ def acceptable(kind, v, snr):
     return v == kind or (snr < SNRS[0] and family in ("none", "unidentified"))
 
 
+def simulated_ball(post, fixture, work):
+    """The simulator's ball defect (6208, 500 rad/s): noise density 0.01 m/s^2/sqrt(Hz) over
+    the 6 kHz band is 0.77 m/s^2 RMS, about the record's own RMS (0.74): 0 dB; 0.03: -10 dB."""
+    failures = []
+    six208 = ["--nb", "13", "--db", "0.0126", "--dp", "0.0606", "--beta", "0", "--omega", "500"]
+    for density, snr in ((0, None), (0.01, 0), (0.03, -10)):
+        path = fixture
+        if density:
+            path = os.path.join(work, f"sim_ball_{density}.txt")
+            subprocess.run([post, "acquire", fixture, "--rate", "12000", "--noise-density",
+                            str(density), "--output", path], check=True, capture_output=True)
+        v, score = verdict(post, path, "6208", 12000, six208)
+        ok = acceptable("ball", v, SNRS[0] if snr is None else snr)
+        print(f"simulated 6208  12000 ball   SNR {'inf' if snr is None else snr:>4} dB  "
+              f"{v:<20} {score:.2f}{'' if ok else '  <-- WRONG'}")
+        if not ok:
+            failures.append(f"simulated ball, noise density {density}: {v}")
+    return failures
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--post", required=True)
     ap.add_argument("--quick", action="store_true", help="12 kHz only")
+    ap.add_argument("--fixture", help="the simulator's ball record (make_ball_fixture.sh)")
     a = ap.parse_args()
     rates = [12000] if a.quick else [12000, 48000]
     matrix = {}
@@ -87,6 +112,8 @@ def main():
             matrix[(kind, snr)][v] += 1
             if not ok:
                 failures.append(f"{kind} {bearing} {rate} Hz SNR {snr} dB: {v}")
+        if a.fixture:
+            failures += simulated_ball(a.post, a.fixture, work)
     print("\nconfusion matrix (truth, SNR dB: verdict count)")
     for (kind, snr), row in sorted(matrix.items()):
         print(f"{kind:<6} {snr:>4}: " + ", ".join(f"{v} {c}" for v, c in sorted(row.items())))
