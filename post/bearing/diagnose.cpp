@@ -8,6 +8,7 @@
 #include "bearing/ball_evidence.h"
 #include "bearing/defect_size.h"
 #include "bearing/family_combs.h"
+#include "bearing/other_channel.h"
 #include "bearing/shaft_lines.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -121,8 +122,8 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.band = opt.band;
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
   std::size_t bands_searched = 1;
+  const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
   if (!(d.band.hi > d.band.lo)) {
-    const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
@@ -265,6 +266,16 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
         "possible ball defect: FTF lines are also the cage modulation of a ball defect "
         "(ball comb " +
         d.families[2].label + " score " + format_number(d.families[2].score, 3) + ")";
+  }
+  if (opt.other_channel) {  // after every rule of this channel: only a flagged record changes
+    if (std::fabs(opt.other_channel->rate / s.rate - 1) > 1e-9)
+      throw SettingError("{diagnose.other_channel}: sampling rate " +
+                         format_number(opt.other_channel->rate, 10) +
+                         " Hz differs from the record's " + format_number(s.rate, 10) + " Hz");
+    std::vector<double> y = opt.other_channel->x;
+    detrend(y.data(), y.size(), Detrend::Mean);
+    const ChannelComparison c = compare_channels(x, y, s.rate, d.band, 0.9 * k.ftf, min_bw);
+    attribute_to_other_channel(d, c, opt.min_score);
   }
   if (d.shaft_estimated) {
     d.shaft_source = "shaft comb";

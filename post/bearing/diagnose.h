@@ -50,6 +50,10 @@ struct DiagnoseOptions {
   // its families are scored on the same spectra, so that a record whose impulses are at one of
   // ITS defect frequencies reads `other-bearing` instead of `unidentified`
   std::optional<BearingGeometry> other;
+  // The other bearing's sensor, recorded with this one (same rate and samples), or none: a
+  // flagged record whose impulses are coherent with it and stronger there reads `none`
+  // (impulses from the other channel) or `other-bearing` (other_channel.h)
+  const Signal *other_channel = nullptr;
 };
 
 struct Evidence {
