@@ -9,6 +9,7 @@
 #include "bearing/defect_size.h"
 #include "bearing/family_combs.h"
 #include "bearing/other_channel.h"
+#include "bearing/pulse_train.h"
 #include "bearing/shaft_lines.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -21,12 +22,6 @@ namespace {
 // `ambiguous` when it wins: half the search range, the part nearest the kinematic value (the
 // 6203's 2 BSF, 0.3 % from 4 fr; not the 6208's BPFI, 1.9 % from 8 fr).
 constexpr double kShaftCoincidence = 0.5;
-// Below this kurtosis a record holds no pulse train: a smooth modulation (a sine: 1.5) plus
-// independent Gaussian noise (3) stays below 3, a pulse train (super-Gaussian) plus noise above
-// it. Measured race faults: 3.06 to 51; healthy radially loaded 6208s at 20 kHz: 1.5 to 2.71
-// (2.71 at 300 rad/s and 640 N, which read `outer` with the former 2.5).
-constexpr double kSmoothKurtosis = 3.0;
-
 // Per family, the better of its envelope and spectrum scores; shaft_order marks a family whose
 // kinematic order lies within kShaftCoincidence x tolerance of a shaft harmonic.
 std::vector<FamilyScore> better_of(const std::vector<FamilyScore> &fe,
@@ -75,7 +70,7 @@ void attribute_to_other(Diagnosis &d, const DiagnoseOptions &opt, double kurt)
     d.warnings.push_back(why + ": the impulses may come from the other bearing");
     return;
   }
-  if (other->defect != "ball" && kurt < kSmoothKurtosis && !opt.baseline &&
+  if (other->defect != "ball" && smooth_modulation(kurt, *other) && !opt.baseline &&
       d.detection.gaussian_applicable)
     return;
   d.candidate = other->defect;
@@ -248,11 +243,17 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // Only on a measured record (a noise floor: the Gaussian tests apply): the simulator's
   // noise-free R(t) of a wide defect is a long rectangle train of low kurtosis too (1.66 for
   // the run-up study's inner defect), and is judged by its comb.
-  if ((d.defect == "inner" || d.defect == "outer") && kurt < kSmoothKurtosis && !opt.baseline &&
-      d.detection.gaussian_applicable) {
+  // A second discriminator, independent of the kurtosis (pulse_train.h): a pulse train's comb
+  // keeps its harmonics, a smooth modulation's falls fast; a weak defect whose kurtosis lies
+  // within its sampling error of 3 is still taken when its comb is a pulse train's.
+  if ((d.defect == "inner" || d.defect == "outer") && smooth_modulation(kurt, *best) &&
+      !opt.baseline && d.detection.gaussian_applicable) {
     d.candidate = d.defect;
+    const double ratio = harmonic_ratio(*best);
     d.reason = "smooth modulation at " + d.label + ": kurtosis " + format_number(kurt, 3) + " < " +
-               format_number(kSmoothKurtosis) +
+               format_number(kSmoothKurtosis) + " and comb harmonics " +
+               (std::isfinite(ratio) ? format_number(ratio, 3) : std::string("(too few)")) +
+               " of the fundamental < " + format_number(kPulseHarmonics) +
                ", no pulse train (a loaded healthy bearing's varying compliance)";
     d.defect = d.detection.fired ? "unidentified" : "none";
     d.warnings.push_back(d.candidate + " comb not taken: " + d.reason);
