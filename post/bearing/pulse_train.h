@@ -21,12 +21,14 @@ double harmonic_ratio(const FamilyScore &f);
 // (super-Gaussian) plus noise above it. Measured race faults: 3.06 to 51; healthy radially
 // loaded 6208s at 20 kHz: 1.5 to 2.71.
 constexpr double kSmoothKurtosis = 3.0;
-// At or above this harmonic ratio a comb is a pulse train by the second: the healthy radial
-// 6208s (300 to 700 rad/s, 160 to 640 N, their comb in the raw spectrum) 0.05 to 0.19; weak
-// pulse trains of the independent model (tests/post/synthetic_bearing.py, -6 and -12 dB, whose
-// kurtosis lies within 0.1 of 3) 0.37 to 0.81, outer races 0.6 to 0.7; CWRU race faults 0.25 to 10
-// (sig14, kurtosis 3.06: 10.3). Twice the largest healthy value.
-constexpr double kPulseHarmonics = 0.4;
+// At or above this harmonic ratio a comb is a pulse train by the second: a rectangular pulse of
+// duty d gives (sinc(2d) + sinc(3d)) / (2 sinc(d)), 0.5 at d = 0.25 (pulses shorter than a
+// quarter of the period lie above); a sawtooth (harmonics 1/h, kurtosis 1.8) 0.42. Measured: the
+// healthy radial 6208s (300 to 700 rad/s, 160 to 640 N, their comb in the raw spectrum) 0.05 to
+// 0.19; weak race faults of the independent model (tests/post/synthetic_bearing.py, -6 and
+// -12 dB, kurtosis within 0.1 of 3) 0.37 to 0.81, outer races 0.6 to 0.7; CWRU race faults 0.25
+// to 10 (sig14, kurtosis 3.06: 10.3).
+constexpr double kPulseHarmonics = 0.5;
 
 // The two together: a smooth modulation has a kurtosis below 3 and a comb whose harmonics stand
 // below kPulseHarmonics of its fundamental (or too few harmonics to tell).

@@ -48,6 +48,10 @@ TEST(PulseTrain, TwoDiscriminatorsTogether)
   EXPECT_FALSE(smooth_modulation(2.98, pulses));  // a weak pulse train within 0.02 of 3
   EXPECT_FALSE(smooth_modulation(3.06, smooth));  // a pulse train by its kurtosis (sig14)
   EXPECT_FALSE(smooth_modulation(5.0, pulses));
+  // a sawtooth (harmonics 1/h, kurtosis 1.8) is a modulation, not a pulse train: 0.42 < 0.5
+  EXPECT_TRUE(smooth_modulation(1.8, comb(1, 0.5, 1 / 3.0)));
+  // rectangular pulses of a fifth of the period: 0.67, a pulse train
+  EXPECT_FALSE(smooth_modulation(2.9, comb(0.935, 0.757, 0.505)));
   FamilyScore unknown = pulses;
   unknown.harmonics = 2;  // no second discriminator: the kurtosis alone
   EXPECT_TRUE(smooth_modulation(2.98, unknown));
