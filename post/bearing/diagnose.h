@@ -126,7 +126,8 @@ struct Diagnosis {
   // cannot be told from the machine's shaft lines; candidate names it and reason says why.
   // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
   // defect, the reason says so). With "none"/"unidentified": the race family whose comb was not
-  // taken because the record holds no pulse (kurtosis < 3: a smooth load-zone modulation).
+  // taken because the record holds no pulse (pulse_train.h: a smooth load-zone modulation); with
+  // "none", "other channel" when the impulses are the other sensor's (other_channel.h).
   std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;
