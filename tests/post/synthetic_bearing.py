@@ -42,8 +42,11 @@ def defect_orders(bearing):
             "ftf": 0.5 * (1 - r)}
 
 
-def signal(kind, bearing, fr, rate, duration, snr_db, seed, resonance_hz=None, slip=0.015):
-    """One record of `kind` (inner, outer, ball or none) for `bearing` at shaft rate fr (Hz)."""
+def signal(kind, bearing, fr, rate, duration, snr_db, seed, resonance_hz=None, slip=0.015,
+           hit_fraction=1.0):
+    """One record of `kind` (inner, outer, ball or none) for `bearing` at shaft rate fr (Hz);
+    hit_fraction < 1: each impulse happens with that probability (a ball's spall leaving the
+    contact path as its spin axis wanders: a less periodic train)."""
     rng = np.random.default_rng(seed)
     n = int(round(duration * rate))
     t = np.arange(n) / rate
@@ -59,6 +62,8 @@ def signal(kind, bearing, fr, rate, duration, snr_db, seed, resonance_hz=None, s
             times.append(tk)
             tk += (1 + rng.uniform(-slip, slip)) / f_imp
         times = np.array(times)
+        if hit_fraction < 1:
+            times = times[rng.uniform(0, 1, len(times)) < hit_fraction]
         if kind == "inner":
             amp = 0.6 + 0.4 * np.cos(2 * math.pi * fr * times)
         elif kind == "ball":
