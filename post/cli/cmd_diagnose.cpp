@@ -250,10 +250,6 @@ int run_diagnose(const std::vector<std::string> &argv)
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
   if (other_channel) o.other_channel = &*other_channel;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
-  if (in_orders && other_channel)
-    throw Error(
-        "diagnose: --other-channel is not supported when the speed varies (the record is "
-        "diagnosed in the angle domain); give a record at constant speed");
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "bearing/order_diagnose.h"
 #include "bearing/other_channel.h"
 #include "core/error.h"
 #include "test_constants.h"
@@ -91,6 +92,27 @@ TEST(OtherChannel, RefusesChannelsOfDifferentLengths)
 {
   const std::vector<double> a(4096, 0.0), b(4000, 0.0);
   EXPECT_THROW(compare_channels(a, b, kRate, {2000, 4000}, 10, 1000), SettingError);
+}
+
+TEST(OtherChannel, RefusedInTheAngleDomain)
+{
+  // the other sensor would have to be resampled at the same shaft angles: refused by name
+  Signal s;
+  s.rate = kRate;
+  s.x.assign(4096, 0.0);
+  std::vector<double> theta(s.x.size());
+  for (std::size_t i = 0; i < theta.size(); ++i) theta[i] = 0.01 * static_cast<double>(i);
+  DiagnoseOptions o;
+  o.other_channel = &s;
+  try {
+    diagnose_in_orders(s, theta, o);
+    ADD_FAILURE() << "no error";
+  } catch (const SettingError &e) {
+    EXPECT_NE(std::string(e.what()).find("{diagnose.other_channel} is not supported when the "
+                                         "speed varies"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
