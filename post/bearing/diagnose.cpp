@@ -5,8 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "bearing/ball_evidence.h"
 #include "bearing/defect_size.h"
 #include "bearing/family_combs.h"
+#include "bearing/other_channel.h"
+#include "bearing/pulse_train.h"
 #include "bearing/shaft_lines.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -19,12 +22,6 @@ namespace {
 // `ambiguous` when it wins: half the search range, the part nearest the kinematic value (the
 // 6203's 2 BSF, 0.3 % from 4 fr; not the 6208's BPFI, 1.9 % from 8 fr).
 constexpr double kShaftCoincidence = 0.5;
-// Below this kurtosis a record holds no pulse train: a smooth modulation (a sine: 1.5) plus
-// independent Gaussian noise (3) stays below 3, a pulse train (super-Gaussian) plus noise above
-// it. Measured race faults: 3.06 to 51; healthy radially loaded 6208s at 20 kHz: 1.5 to 2.71
-// (2.71 at 300 rad/s and 640 N, which read `outer` with the former 2.5).
-constexpr double kSmoothKurtosis = 3.0;
-
 // Per family, the better of its envelope and spectrum scores; shaft_order marks a family whose
 // kinematic order lies within kShaftCoincidence x tolerance of a shaft harmonic.
 std::vector<FamilyScore> better_of(const std::vector<FamilyScore> &fe,
@@ -73,7 +70,7 @@ void attribute_to_other(Diagnosis &d, const DiagnoseOptions &opt, double kurt)
     d.warnings.push_back(why + ": the impulses may come from the other bearing");
     return;
   }
-  if (other->defect != "ball" && kurt < kSmoothKurtosis && !opt.baseline &&
+  if (other->defect != "ball" && smooth_modulation(kurt, *other) && !opt.baseline &&
       d.detection.gaussian_applicable)
     return;
   d.candidate = other->defect;
@@ -120,8 +117,8 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.band = opt.band;
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
   std::size_t bands_searched = 1;
+  const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
   if (!(d.band.hi > d.band.lo)) {
-    const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
     const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
@@ -187,6 +184,10 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   for (const auto &f : d.families)
     if (f.defect != "cage" && (!best || f.margin > best->margin)) best = &f;
   if (best->score < opt.min_score && d.families[3].score >= opt.min_score) best = &d.families[3];
+  // a ball and a race comb on the same lines: the FTF modulation decides (ball_evidence.h)
+  std::string overlap;
+  if (best->score >= opt.min_score) best = ball_or_race(d.families, best, opt.tolerance, overlap);
+  if (!overlap.empty()) d.warnings.push_back(overlap);
   if (best->score >= opt.min_score) {
     d.defect = best->defect;
     d.score = best->score;
@@ -215,7 +216,16 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // A family whose order lies within the tolerance of a shaft harmonic is not named: its lines
   // may be the machine's (the shaft lines themselves are masked, but a line beside them, of
   // the motor or of a slightly different speed, is not told apart by the comb).
-  if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect) {
+  // A ball comb deeply modulated at FTF is the exception: shaft lines carry no cage modulation.
+  const CageModulation cage_mod = cage_modulation(d.families);
+  const bool ball_modulated = best->defect == "ball" && cage_mod.present();
+  if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect &&
+      ball_modulated)
+    d.warnings.push_back(best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
+                         " fr lies near " + std::to_string(best->shaft_order) +
+                         " fr, but the comb is modulated at FTF (" + cage_mod.describe() +
+                         "), which shaft lines are not: reported as ball");
+  else if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect) {
     d.candidate = d.defect;
     d.defect = "ambiguous";
     d.reason = best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
@@ -233,11 +243,17 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // Only on a measured record (a noise floor: the Gaussian tests apply): the simulator's
   // noise-free R(t) of a wide defect is a long rectangle train of low kurtosis too (1.66 for
   // the run-up study's inner defect), and is judged by its comb.
-  if ((d.defect == "inner" || d.defect == "outer") && kurt < kSmoothKurtosis && !opt.baseline &&
-      d.detection.gaussian_applicable) {
+  // A second discriminator, independent of the kurtosis (pulse_train.h): a pulse train's comb
+  // keeps its harmonics, a smooth modulation's falls fast; a weak defect whose kurtosis lies
+  // within its sampling error of 3 is still taken when its comb is a pulse train's.
+  if ((d.defect == "inner" || d.defect == "outer") && smooth_modulation(kurt, *best) &&
+      !opt.baseline && d.detection.gaussian_applicable) {
     d.candidate = d.defect;
+    const double ratio = harmonic_ratio(*best);
     d.reason = "smooth modulation at " + d.label + ": kurtosis " + format_number(kurt, 3) + " < " +
-               format_number(kSmoothKurtosis) +
+               format_number(kSmoothKurtosis) + " and comb harmonics " +
+               (std::isfinite(ratio) ? format_number(ratio, 3) : std::string("(too few)")) +
+               " of the fundamental < " + format_number(kPulseHarmonics) +
                ", no pulse train (a loaded healthy bearing's varying compliance)";
     d.defect = d.detection.fired ? "unidentified" : "none";
     d.warnings.push_back(d.candidate + " comb not taken: " + d.reason);
@@ -251,6 +267,16 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
         "possible ball defect: FTF lines are also the cage modulation of a ball defect "
         "(ball comb " +
         d.families[2].label + " score " + format_number(d.families[2].score, 3) + ")";
+  }
+  if (opt.other_channel) {  // after every rule of this channel: only a flagged record changes
+    if (std::fabs(opt.other_channel->rate / s.rate - 1) > 1e-9)
+      throw SettingError("{diagnose.other_channel}: sampling rate " +
+                         format_number(opt.other_channel->rate, 10) +
+                         " Hz differs from the record's " + format_number(s.rate, 10) + " Hz");
+    std::vector<double> y = opt.other_channel->x;
+    detrend(y.data(), y.size(), Detrend::Mean);
+    const ChannelComparison c = compare_channels(x, y, s.rate, d.band, 0.9 * k.ftf, min_bw);
+    attribute_to_other_channel(d, c, opt.min_score);
   }
   if (d.shaft_estimated) {
     d.shaft_source = "shaft comb";

@@ -50,6 +50,10 @@ struct DiagnoseOptions {
   // its families are scored on the same spectra, so that a record whose impulses are at one of
   // ITS defect frequencies reads `other-bearing` instead of `unidentified`
   std::optional<BearingGeometry> other;
+  // The other bearing's sensor, recorded with this one (same rate and samples), or none: a
+  // flagged record whose impulses are coherent with it and stronger there reads `none`
+  // (impulses from the other channel) or `other-bearing` (other_channel.h)
+  const Signal *other_channel = nullptr;
 };
 
 struct Evidence {
@@ -122,7 +126,8 @@ struct Diagnosis {
   // cannot be told from the machine's shaft lines; candidate names it and reason says why.
   // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball
   // defect, the reason says so). With "none"/"unidentified": the race family whose comb was not
-  // taken because the record holds no pulse (kurtosis < 3: a smooth load-zone modulation).
+  // taken because the record holds no pulse (pulse_train.h: a smooth load-zone modulation); with
+  // "none", "other channel" when the impulses are the other sensor's (other_channel.h).
   std::string candidate, reason;
   bool detected = false;  // a family identified or a detection test fired
   Detection detection;

@@ -2,6 +2,7 @@
 #include "bearing/order_diagnose.h"
 
 #include "core/constants.h"
+#include "core/error.h"
 #include "dsp/order_tracking.h"
 
 namespace ohmdem::post {
@@ -9,6 +10,11 @@ namespace ohmdem::post {
 Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, DiagnoseOptions opt,
                              double samples_per_rev)
 {
+  // the other sensor's samples would have to be resampled at the same angles: not done
+  if (opt.other_channel)
+    throw SettingError(
+        "{diagnose.other_channel} is not supported when the speed varies (the record is "
+        "diagnosed in the angle domain); give a record at constant speed");
   constexpr double kTwoPi = 2 * kPi;
   const SpeedSummary speed = speed_summary(theta, s.rate);
   const double fr = speed.mean / kTwoPi;  // mean shaft frequency (Hz)

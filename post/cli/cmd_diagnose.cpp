@@ -11,6 +11,7 @@
 #include "bearing/order_diagnose.h"
 #include "cli/commands.h"
 #include "cli/common.h"
+#include "cli/other_channel_input.h"
 #include "cli/shaft_angle.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -130,6 +131,7 @@ int run_diagnose(const std::vector<std::string> &argv)
            "the other bearing on the same shaft (catalog name, e.g. 6205-2RS_JEM, the CWRU drive "
            "end, when the record is the fan end's): a record whose impulses are at its defect "
            "frequencies reads 'other-bearing', not 'unidentified'");
+  add_other_channel_options(a);
   a.option("--mains", "LIST",
            "mains frequencies (Hz, comma-separated) whose harmonic combs are masked where they "
            "stand out, or 'none'",
@@ -249,6 +251,8 @@ int run_diagnose(const std::vector<std::string> &argv)
                   format_number(s.rate, 10) + " --output FILE)");
     o.baseline = &base;
   }
+  const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
+  if (other_channel) o.other_channel = &*other_channel;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
   // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
@@ -300,6 +304,8 @@ int run_diagnose(const std::vector<std::string> &argv)
                      (std::isfinite(d.band_kurtosis) ? " (kurtogram, spectral kurtosis " +
                                                            format_number(d.band_kurtosis, 4) + ")"
                                                      : " (--band)"));
+  if (other_channel)
+    m.emplace_back("other channel", other_channel->name + " (the other bearing's sensor)");
   if (o.baseline)
     m.emplace_back("baseline", a.get("--baseline") + " (at " + format_number(o.baseline->rate, 10) +
                                    " Hz, the record's rate)");

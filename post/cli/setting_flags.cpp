@@ -41,6 +41,7 @@ const SettingFlags &setting_flags()
       {"diagnose.harmonics", "--harmonics"},
       {"diagnose.tolerance", "--tolerance"},
       {"diagnose.baseline", "--baseline"},
+      {"diagnose.other_channel", "--other-channel"},
       {"diagnose.load", "--load"},
       {"diagnose.assume_defect", "--assume-defect"},
       {"diagnose.size_curve", "--size-curve"},
