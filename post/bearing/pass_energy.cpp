@@ -56,7 +56,9 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
   // the first pass: the strongest event of the first period
   std::size_t c = strongest(static_cast<double>(w) + period / 2, period / 2);
   while (static_cast<double>(c) < end) {
-    const std::size_t b = strongest(static_cast<double>(c) + period / 2, period / 12);
+    // the background half a period later, not searched: a search there would centre it on
+    // the peaks of any steady tone and subtract more than the tone's mean energy
+    const auto b = static_cast<std::size_t>(std::lround(static_cast<double>(c) + period / 2));
     out.energy.push_back(energy(c) - energy(b));
     const double next = static_cast<double>(c) + period;
     if (next + period / 4 + static_cast<double>(w) + 1 >= static_cast<double>(x.size())) break;

@@ -28,9 +28,9 @@ struct PassEnergySettings {
   double curve_rel_error = 0;
 };
 
-// Per-pass energies: the window is +-period/6 around the pass's strongest event (a sixth: the
-// background's window, half a period later and searched within +-period/12, never overlaps a
-// pass's), the energy sum(x^2)/rate of the mean-removed record minus the background's.
+// Per-pass energies: the window is +-period/6 around the pass's strongest event, the energy
+// sum(x^2)/rate of the mean-removed record minus the same from the window half a period later
+// (the background, which never overlaps a pass's window).
 struct PassEnergies {
   std::vector<double> energy;  // one per pass (V^2 s)
   double mean = std::numeric_limits<double>::quiet_NaN();
