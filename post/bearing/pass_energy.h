@@ -67,7 +67,7 @@ struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
 struct LocatedDefect;
-// diagnose's size by this method (--size-method accel-curve; the curve in o.curve_size_deg and
+// diagnose's size by this method (its accel-curve size method; the curve in o.curve_size_deg and
 // o.curve_rel_area_s, its error in o.curve_rel_error): the race defect found, or
 // o.assume_defect at its kinematic frequency.
 LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
