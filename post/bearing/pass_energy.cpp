@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/race_sizing.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
@@ -39,12 +40,7 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
     sm[i - std::min(i, k / 2)] = acc;
   }
   auto strongest = [&](double at, double reach) {
-    const auto a = static_cast<std::size_t>(std::max(at - reach, static_cast<double>(w)));
-    const auto b = std::min(static_cast<std::size_t>(at + reach), sm.size() - w - 1);
-    std::size_t mx = a;
-    for (std::size_t i = a; i <= b; ++i)
-      if (sm[i] > sm[mx]) mx = i;
-    return mx;
+    return strongest_in(sm, at, reach, w, sm.size() - w - 1);
   };
   auto energy = [&](std::size_t c) {
     double sum = 0;
@@ -148,44 +144,18 @@ PassEnergySize size_from_pass_energy(const std::vector<double> &x, double rate, 
 LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
                                     const DiagnoseOptions &o)
 {
-  std::string defect = found.defect;
-  double f = found.frequency_hz;
-  if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
-    defect = o.assume_defect;
-    f = defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
-  }
   LocatedDefect l;
   l.height_source = "no pulse height: the model's curve of the pass energy";
   l.depth_note = "not determined: the pass energy is read as the pit's length along the raceway";
-  if (defect == "ball") {
-    l.method = "not determined by the pass energy (a ball defect)";
-    l.position_note = "not determined: the defective ball cannot be told from the others";
-    return l;
-  }
-  if (defect != "inner" && defect != "outer") {
-    l.method = "not applicable";
-    return l;
-  }
-  l.position_note = "not determined: the pass energy gives the size only";
+  const RaceToSize r = race_to_size(found, o, "the pass energy", l);
+  if (!r.race) return l;
   PassEnergySettings ps;
   ps.curve_size_deg = o.curve_size_deg;
   ps.curve_energy = o.curve_rel_area_s;
   ps.curve_rel_error = o.curve_rel_error;
-  const PassEnergySize e = size_from_pass_energy(s.x, s.rate, f, defect, ps);
-  l.method = e.note;
-  if (defect != found.defect)
-    l.method = "assumed " + defect + " defect ({diagnose.assume_defect}); " + l.method;
-  l.passes = e.passes;
+  const PassEnergySize e = size_from_pass_energy(s.x, s.rate, r.f, r.defect, ps);
   l.pass_energy = e.energy;
-  if (!e.valid) return l;
-  l.valid = true;
-  l.size_deg = e.size_deg;
-  l.size_lo_deg = e.size_lo_deg;
-  l.size_hi_deg = e.size_hi_deg;
-  const BearingGeometry &g = o.geometry;
-  const double c = g.db * std::cos(g.contact_angle_deg * kPi / 180);
-  l.arc_m = e.size_deg * kPi / 180 * (defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2);
-  return l;
+  return take_size(l, r, o.geometry, e);
 }
 
 }  // namespace ohmdem::post
