@@ -11,9 +11,11 @@ pits 50 um deep at the load zone's centre). Channels:
   acc         the outer ring's acceleration along the load through an accelerometer, sized by
               the double-impulse method (diagnose --size-method double-impulse): the delay
               between the ball's entry and exit events in the pit
+  acc-curve   the same record sized by the passes' energy on the model's curve through the same
+              chain (diagnose --size-method accel-curve; studies/accel_curve.py), with its own error
 Each case is acquired at every rate (16 bits) and noise level of the grid and diagnosed with
 --assume-defect (the map measures the sizing, not the identification).
-  studies/sizing_map.py [--tiny] [--channels electrical,acc] [--report-only] OUT
+  studies/sizing_map.py [--tiny] [--channels electrical,acc,acc-curve] [--report-only] OUT
 Writes OUT/sizing_map.csv (one row per case, channel, rate and noise), OUT/sizing_map.md (the
 tables) and OUT/sizing_map_<channel>.png (median |error| against rate and noise: a heatmap).
 --tiny: one case (outer 3 deg), 20 and 50 kHz, low noise, the accelerometer only (the test).
@@ -40,7 +42,7 @@ def grid(tiny):
                 "channels": ["acc"]}
     return {"cases": [(d, s) for d in ("inner", "outer") for s in (0.3, 1.0, 2.0, 3.0)],
             "rates": [1e4, 1.2e4, 2e4, 4.8e4, 5e4], "noise": ["low", "high"],
-            "channels": ["electrical", "acc"]}
+            "channels": ["electrical", "acc", "acc-curve"]}
 
 
 def acquire_acc(sim, rate, noise, dest):
@@ -68,6 +70,15 @@ def one(out, case, channel, rate, noise, curves):
     if channel == "acc":
         d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect,
                      ["--size-method", "double-impulse"])
+    elif channel == "acc-curve":
+        import accel_curve  # it imports this module
+        key = (channel, defect, rate, noise)
+        if key not in curves:
+            curves[key] = accel_curve.model_curve(out, defect, rate, noise)
+        extra = ["--size-method", "accel-curve", "--size-curve", curves[key][0]]
+        if curves[key][2]:
+            extra += ["--size-model-error", repr(curves[key][2])]
+        d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect, extra)
     else:
         key = (defect, rate, noise)
         if key not in curves:
@@ -219,14 +230,15 @@ def write(out, rows, g, tiny):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--tiny", action="store_true", help="one case, two rates (the test)")
-    ap.add_argument("--channels", help="comma-separated subset of electrical,acc")
+    ap.add_argument("--channels", help="comma-separated subset of electrical,acc,acc-curve")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the tables and figures from OUT/sizing_map.csv")
     ap.add_argument("out")
     a = ap.parse_args(argv)
     channels = a.channels.split(",") if a.channels else None
-    if channels and not set(channels) <= {"electrical", "acc"}:
-        sys.exit("sizing_map: --channels takes electrical and/or acc, got " + a.channels)
+    if channels and not set(channels) <= {"electrical", "acc", "acc-curve"}:
+        sys.exit("sizing_map: --channels takes electrical, acc and/or acc-curve, got " +
+                 a.channels)
     out = os.path.abspath(a.out)
     if a.report_only:
         g = grid(a.tiny)

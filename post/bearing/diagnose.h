@@ -109,6 +109,7 @@ struct LocatedDefect {
   std::string height_source;  // "theory: ..." or "{diagnose.pulse_height}"
   std::size_t passes = 0;
   double window_rel_area_s = std::numeric_limits<double>::quiet_NaN();  // for the model's curve
+  double pass_energy = std::numeric_limits<double>::quiet_NaN();        // accel-curve (V^2 s)
   double position_deg = std::numeric_limits<double>::quiet_NaN();
   double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
   double position_hi_deg = std::numeric_limits<double>::quiet_NaN();

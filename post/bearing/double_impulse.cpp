@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/race_sizing.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
@@ -127,12 +128,7 @@ PassAutocorrelation pass_autocorrelation(const std::vector<double> &x, double ra
   const auto len = 2 * half;
   std::vector<double> seg(len);
   auto strongest = [&](double at, double reach) {
-    const auto a = static_cast<std::size_t>(std::max(at - reach, static_cast<double>(half)));
-    const auto b = static_cast<std::size_t>(at + reach);
-    std::size_t mx = a;
-    for (std::size_t i = a; i <= b; ++i)
-      if (e[i] > e[mx]) mx = i;
-    return mx;
+    return strongest_in(e, at, reach, half, e.size() - 1);
   };
   auto acf_at = [&](std::size_t mx) {
     double mean = 0;
@@ -271,44 +267,19 @@ DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double 
 LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
                                        const DiagnoseOptions &o)
 {
-  std::string defect = found.defect;
-  double f = found.frequency_hz;
-  if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
-    defect = o.assume_defect;
-    f = defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
-  }
   LocatedDefect l;
   l.height_source = "no pulse height: the interval from the pass groups' delays";
   l.depth_note =
       "not determined: the entry and exit events give the pit's length along the raceway only";
-  if (defect == "ball") {
-    l.method = "not determined by the double impulse (a ball defect)";
-    l.position_note = "not determined: the defective ball cannot be told from the others";
-    return l;
-  }
-  if (defect != "inner" && defect != "outer") {
-    l.method = "not applicable";
-    return l;
-  }
-  l.position_note = "not determined: the double impulse gives the size only";
+  const RaceToSize r = race_to_size(found, o, "the double impulse", l);
+  if (!r.race) return l;
   const BearingGeometry &g = o.geometry;
   if (!(g.db > 0 && g.dp > 0) || g.nb < 2) {
     l.method = "needs the ball count and the ball and pitch diameters";
     return l;
   }
-  const DoubleImpulseSize e = size_from_double_impulse(s.x, s.rate, f, defect, g.nb, {});
-  l.method = e.note;
-  if (defect != found.defect)
-    l.method = "assumed " + defect + " defect ({diagnose.assume_defect}); " + l.method;
-  l.passes = e.passes;
-  if (!e.valid) return l;
-  l.valid = true;
-  l.size_deg = e.size_deg;
-  l.size_lo_deg = e.size_lo_deg;
-  l.size_hi_deg = e.size_hi_deg;
-  const double c = g.db * std::cos(g.contact_angle_deg * kPi / 180);
-  l.arc_m = e.size_deg * kPi / 180 * (defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2);
-  return l;
+  const DoubleImpulseSize e = size_from_double_impulse(s.x, s.rate, r.f, r.defect, g.nb, {});
+  return take_size(l, r, g, e);
 }
 
 }  // namespace ohmdem::post

@@ -9,6 +9,7 @@
 #include "bearing/diagnose.h"
 #include "bearing/double_impulse.h"
 #include "bearing/order_diagnose.h"
+#include "bearing/pass_energy.h"
 #include "cli/commands.h"
 #include "cli/common.h"
 #include "cli/other_channel_input.h"
@@ -160,8 +161,10 @@ int run_diagnose(const std::vector<std::string> &argv)
            "simulations the curve does not use; sizing.py writes it in the curve's header): "
            "the size's interval includes it (default 0: the pass-to-pass scatter only)");
   a.option("--size-method", "METHOD",
-           "area (default: the electrical pulses' area) or double-impulse (an accelerometer "
-           "record: the delay between the ball's entry and exit events in the pit)");
+           "area (default: the electrical pulses' area), double-impulse (an accelerometer "
+           "record: the delay between the ball's entry and exit events in the pit) or "
+           "accel-curve (an accelerometer record: the passes' energy on the model's "
+           "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s)");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -257,9 +260,14 @@ int run_diagnose(const std::vector<std::string> &argv)
   // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
   const bool double_impulse = size_method == "double-impulse";
-  if (!double_impulse && size_method != "area")
-    throw Error("diagnose: --size-method must be area or double-impulse, got '" + size_method +
-                "'");
+  const bool accel_curve = size_method == "accel-curve";
+  if (!double_impulse && !accel_curve && size_method != "area")
+    throw Error("diagnose: --size-method must be area, double-impulse or accel-curve, got '" +
+                size_method + "'");
+  if (accel_curve && (in_orders || a.has("--pulse-height")))
+    throw Error(
+        "diagnose: --size-method accel-curve needs a record at constant speed and takes no "
+        "--pulse-height (it belongs to the area method)");
   if (double_impulse && (in_orders || a.has("--size-curve") || a.has("--pulse-height")))
     throw Error(
         "diagnose: --size-method double-impulse needs a record at constant speed and "
@@ -270,6 +278,7 @@ int run_diagnose(const std::vector<std::string> &argv)
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   if (double_impulse && o.estimate_size) d.located = locate_by_double_impulse(s, d, o);
+  if (accel_curve && o.estimate_size) d.located = locate_by_pass_energy(s, d, o);
   name_flags(d.detection);
   d.located.method = flag_named(d.located.method);
   d.located.height_source = flag_named(d.located.height_source);

@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "bearing/pass_energy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "bearing/diagnose.h"
+#include "bearing/race_sizing.h"
+#include "core/constants.h"
+#include "core/sampled_signal.h"
+#include "dsp/detect_laws.h"
+
+namespace ohmdem::post {
+
+PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
+                           const PassEnergySettings &s)
+{
+  if (s.groups < 3 || !(s.confidence > 0 && s.confidence < 1) || !(rate > 0 && f > 0))
+    throw std::invalid_argument(
+        "pass energy: settings out of range (at least 3 groups, confidence in (0, 1), rate "
+        "and defect frequency > 0)");
+  PassEnergies out;
+  const double period = rate / f;  // samples per pass
+  const auto w = static_cast<std::size_t>(std::floor(period / 6));
+  if (w < 1 || x.size() < 4 * static_cast<std::size_t>(period)) return out;
+  double mean = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  std::vector<double> e(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) e[i] = (x[i] - mean) * (x[i] - mean);
+  // the events are found on the squared record smoothed over 0.1 ms (one sample at 10 kHz), so
+  // that one noisy sample does not place a window
+  const auto k = static_cast<std::size_t>(std::max(1.0, std::round(1e-4 * rate)));
+  std::vector<double> sm(e.size(), 0.0);
+  double acc = 0;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    acc += e[i];
+    if (i >= k) acc -= e[i - k];
+    sm[i - std::min(i, k / 2)] = acc;
+  }
+  auto strongest = [&](double at, double reach) {
+    return strongest_in(sm, at, reach, w, sm.size() - w - 1);
+  };
+  auto energy = [&](std::size_t c) {
+    double sum = 0;
+    for (std::size_t i = c - w; i <= c + w; ++i) sum += e[i];
+    return sum / rate;
+  };
+  const double end =
+      static_cast<double>(x.size()) - period / 2 - period / 12 - static_cast<double>(w) - 2;
+  // the first pass: the strongest event of the first period
+  std::size_t c = strongest(static_cast<double>(w) + period / 2, period / 2);
+  while (static_cast<double>(c) < end) {
+    // the background half a period later, not searched: a search there would centre it on
+    // the peaks of any steady tone and subtract more than the tone's mean energy
+    const auto b = static_cast<std::size_t>(std::lround(static_cast<double>(c) + period / 2));
+    out.energy.push_back(energy(c) - energy(b));
+    const double next = static_cast<double>(c) + period;
+    if (next + period / 4 + static_cast<double>(w) + 1 >= static_cast<double>(x.size())) break;
+    c = strongest(next, period / 4);
+  }
+  const std::size_t n = out.energy.size();
+  if (n < s.groups) return out;
+  out.mean = 0;
+  for (double v : out.energy) out.mean += v;
+  out.mean /= static_cast<double>(n);
+  out.group_mean.assign(s.groups, 0.0);
+  std::vector<std::size_t> count(s.groups, 0);
+  for (std::size_t j = 0; j < n; ++j) {
+    out.group_mean[j * s.groups / n] += out.energy[j];
+    ++count[j * s.groups / n];
+  }
+  for (std::size_t g = 0; g < s.groups; ++g) out.group_mean[g] /= static_cast<double>(count[g]);
+  return out;
+}
+
+double size_on_energy_curve(const std::vector<double> &size_deg, const std::vector<double> &energy,
+                            double e)
+{
+  const std::size_t n = std::min(size_deg.size(), energy.size());
+  if (n < 2 || !(e > 0) || e > energy[n - 1]) return std::nan("");
+  std::size_t k = 1;
+  while (k + 1 < n && e > energy[k]) ++k;
+  // the energy grows like a power of the size (about 4 for small pits, 1-2 for large ones):
+  // a power law between the points, where linear interpolation would read sizes high
+  const double p = std::log(energy[k] / energy[k - 1]) / std::log(size_deg[k] / size_deg[k - 1]);
+  return size_deg[k - 1] * std::pow(e / energy[k - 1], 1 / p);
+}
+
+PassEnergySize size_from_pass_energy(const std::vector<double> &x, double rate, double f,
+                                     const std::string &defect, const PassEnergySettings &s)
+{
+  PassEnergySize r;
+  if (defect != "inner" && defect != "outer") {
+    r.note = "not determined: the pass energy is sized for race defects (inner, outer)";
+    return r;
+  }
+  if (!(rate > 0 && f > 0 && f < rate / 8)) {
+    r.note = "not determined: the defect frequency must lie below an eighth of the rate";
+    return r;
+  }
+  const PassEnergies pe = pass_energies(x, rate, f, s);
+  r.passes = pe.energy.size();
+  if (pe.group_mean.empty()) {
+    r.note = "not determined: " + std::to_string(r.passes) + " defect passes in the record, " +
+             "fewer than the " + std::to_string(s.groups) + " groups of the interval";
+    return r;
+  }
+  r.energy = pe.mean;
+  const auto g = static_cast<double>(pe.group_mean.size());
+  double var = 0;
+  for (double v : pe.group_mean) var += (v - pe.mean) * (v - pe.mean);
+  var /= g - 1;
+  const double t = student_t_isf((1 - s.confidence) / 2, g - 1);
+  const double z = student_t_isf((1 - s.confidence) / 2, 1e9);
+  // the groups' scatter and the curve's own error, both relative to the energy's level
+  const double half = std::sqrt(t * t * var / g + std::pow(z * s.curve_rel_error * pe.mean, 2));
+  r.energy_lo = pe.mean - half;
+  r.energy_hi = pe.mean + half;
+  const std::string how = "pass energy " + format_number(pe.mean, 4) + " V^2 s over " +
+                          std::to_string(r.passes) + " passes";
+  if (s.curve_size_deg.size() < 2) {
+    r.note = "not determined: no model curve (" + how + ")";
+    return r;
+  }
+  if (!(pe.mean > 0)) {
+    r.note = "not determined: the passes' energy does not stand above the background (" + how + ")";
+    return r;
+  }
+  r.size_deg = size_on_energy_curve(s.curve_size_deg, s.curve_energy, pe.mean);
+  if (!std::isfinite(r.size_deg)) {
+    r.note = "not determined: the pass energy lies beyond the model's curve (" + how + ")";
+    return r;
+  }
+  r.size_lo_deg =
+      r.energy_lo > 0 ? size_on_energy_curve(s.curve_size_deg, s.curve_energy, r.energy_lo) : 0.0;
+  r.size_hi_deg = size_on_energy_curve(s.curve_size_deg, s.curve_energy, r.energy_hi);
+  r.valid = true;
+  r.note = "pass energy on the model's curve: " + how;
+  return r;
+}
+
+LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
+                                    const DiagnoseOptions &o)
+{
+  LocatedDefect l;
+  l.height_source = "no pulse height: the model's curve of the pass energy";
+  l.depth_note = "not determined: the pass energy is read as the pit's length along the raceway";
+  const RaceToSize r = race_to_size(found, o, "the pass energy", l);
+  if (!r.race) return l;
+  PassEnergySettings ps;
+  ps.curve_size_deg = o.curve_size_deg;
+  ps.curve_energy = o.curve_rel_area_s;
+  ps.curve_rel_error = o.curve_rel_error;
+  const PassEnergySize e = size_from_pass_energy(s.x, s.rate, r.f, r.defect, ps);
+  l.pass_energy = e.energy;
+  return take_size(l, r, o.geometry, e);
+}
+
+}  // namespace ohmdem::post

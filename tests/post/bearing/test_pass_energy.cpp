@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// The accelerometer's pass energy and its size on the model's curve (post/bearing/pass_energy.h)
+// on synthetic records: at every defect pass a ring r = A exp(-u/tau) sin(w u), whose energy
+// is int_0^inf r^2 = A^2 (tau/4) (w tau)^2 / (1 + (w tau)^2) and whose integral is
+// A w tau^2 / (1 + (w tau)^2) (the references, in closed form), over a steady tone that the
+// background (between the passes) must remove, with white noise.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "bearing/pass_energy.h"
+#include "dsp/acquire.h"
+#include "test_constants.h"
+
+namespace ohmdem::post {
+namespace {
+
+using ohmdem::test::kPi;
+
+constexpr double kF = 200, kFb = 1000, kTau = 300e-6;  // passes (Hz), ring (Hz), its decay (s)
+
+// Passes at kF, ring amplitude a, steady tone 0.05 at 1234 Hz (below the smallest ring's
+// peak: the passes are found on the rings), noise rms: 0.3 s (60 passes)
+// at 1 MHz acquired at `rate` through dsp/acquire's anti-alias filter (0.4 x rate), which keeps
+// nearly all of the 1 kHz ring's energy (its spectrum is ~0.5 kHz wide).
+std::vector<double> record(double a, double rate, double noise, unsigned seed = 1)
+{
+  const double fs = 1e6;
+  const auto n = static_cast<std::size_t>(0.3 * fs);
+  Signal in;
+  in.rate = fs;
+  in.x.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = static_cast<double>(i) / fs;
+    const double s = std::fmod(t * kF + 0.3, 1.0) / kF;  // since the pass began
+    in.x[i] =
+        0.05 * std::sin(2 * kPi * 1234 * t) + a * std::exp(-s / kTau) * std::sin(2 * kPi * kFb * s);
+  }
+  AcquireSettings acq;
+  acq.lowpass = 0.4 * rate;
+  acq.rate = rate;
+  acq.noise_rms = noise;
+  acq.seed = seed;
+  return acquire(in, acq).signal.x;
+}
+
+double theory(double a)
+{
+  const double w = 2 * kPi * kFb, wt = w * kTau;
+  // the record's mean, kF int r, is removed: the window loses 2 (kF int r) int r (the background
+  // loses the mean's own energy as the window does)
+  const double integral = a * w * kTau * kTau / (1 + wt * wt);
+  return a * a * kTau / 4 * wt * wt / (1 + wt * wt) - 2 * kF * integral * integral;
+}
+
+TEST(PassEnergy, BurstEnergyAtEveryRate)
+{
+  for (double rate : {1e4, 2e4, 5e4}) {
+    // noise 0.1 rms: its energy in the window is 8 % of the ring's, the background removes it
+    const std::vector<double> x = record(2.0, rate, 0.1);
+    const PassEnergies e = pass_energies(x, rate, kF, {});
+    ASSERT_EQ(e.group_mean.size(), 10U);
+    EXPECT_GE(e.energy.size(), 55U);
+    // the tone cancels against the background, the noise too; the filter's passband ripple
+    // and the window's edges leave a few percent
+    EXPECT_NEAR(e.mean, theory(2.0), 0.04 * theory(2.0)) << rate;
+  }
+}
+
+TEST(PassEnergy, PowerLawCurveIsReadExactly)
+{
+  // E = c s^4 at the points: a power law between them reads any size on it exactly, where
+  // linear interpolation would read 1.5 deg as 1.66 between 1 and 2 deg
+  const std::vector<double> s = {0.5, 1, 2, 4}, e = {0.0625, 1, 16, 256};
+  for (double size : {0.3, 0.7, 1.5, 3.0})
+    EXPECT_NEAR(size_on_energy_curve(s, e, std::pow(size, 4)), size, 1e-12) << size;
+  EXPECT_TRUE(std::isnan(size_on_energy_curve(s, e, 300)));  // beyond the curve
+  EXPECT_TRUE(std::isnan(size_on_energy_curve(s, e, 0)));
+}
+
+TEST(PassEnergy, HeldOutSizeOnACurveOfOtherSizesWithInterval)
+{
+  // "sizes" s with burst amplitude s^2 (E ~ s^4, as the simulator's small pits): the curve from
+  // records at 0.5, 1, 2, 3 (other noise seeds), the record at 1.5
+  const double rate = 2e4;
+  PassEnergySettings ps;
+  for (double s : {0.5, 1.0, 2.0, 3.0}) {
+    ps.curve_size_deg.push_back(s);
+    ps.curve_energy.push_back(pass_energies(record(s * s, rate, 0.01, 7), rate, kF, ps).mean);
+  }
+  ps.curve_rel_error = 0.02;
+  const PassEnergySize r = size_from_pass_energy(record(2.25, rate, 0.01), rate, kF, "outer", ps);
+  ASSERT_TRUE(r.valid) << r.note;
+  EXPECT_NEAR(r.size_deg, 1.5, 0.015);
+  EXPECT_LE(r.size_lo_deg, 1.5);
+  EXPECT_GE(r.size_hi_deg, 1.5);
+  EXPECT_LT(r.size_hi_deg - r.size_lo_deg, 0.1);  // 2 % of energy is 0.5 % of size (E ~ s^4)
+  EXPECT_NEAR(r.energy, theory(2.25), 0.04 * theory(2.25));
+}
+
+TEST(PassEnergy, NotDeterminedSaysWhy)
+{
+  const double rate = 2e4;
+  const std::vector<double> x = record(1.0, rate, 0.01);
+  PassEnergySettings ps;
+  PassEnergySize r = size_from_pass_energy(x, rate, kF, "outer", ps);
+  EXPECT_FALSE(r.valid);
+  EXPECT_NE(r.note.find("no model curve"), std::string::npos) << r.note;
+  EXPECT_TRUE(std::isfinite(r.energy));  // measured all the same (for the curve)
+  ps.curve_size_deg = {0.1, 0.2};
+  ps.curve_energy = {1e-9, 2e-9};
+  r = size_from_pass_energy(x, rate, kF, "outer", ps);
+  EXPECT_NE(r.note.find("beyond the model's curve"), std::string::npos) << r.note;
+  r = size_from_pass_energy(x, rate, kF, "ball", ps);
+  EXPECT_NE(r.note.find("race defects"), std::string::npos) << r.note;
+  const std::vector<double> short_x(x.begin(), x.begin() + 1000);  // 10 passes
+  r = size_from_pass_energy(short_x, rate, kF, "outer", ps);
+  EXPECT_NE(r.note.find("fewer than the 10 groups"), std::string::npos) << r.note;
+  PassEnergySettings bad;
+  bad.groups = 2;
+  EXPECT_THROW(pass_energies(x, rate, kF, bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ohmdem::post
