@@ -128,6 +128,7 @@ void located_json(Json &j, const Diagnosis &d)
   j.set("pulse_height_rel", area && l.pulse_height > 0 ? Json(l.pulse_height) : Json());
   j.set("pulse_height_source", area ? Json(l.height_source) : Json());
   j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
+  j.set("pulse_edge_width_s", number_or_null(l.edge_width_s));
   j.set("position_deg", number_or_null(l.position_deg));
   j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));
