@@ -129,14 +129,15 @@ def _window_stats(out, defect, size, load, rate, noise, tend):
     return json.loads(r.stdout)
 
 
-def curve_error(out, defect, load, rows, rate, noise):
-    """The curve's relative error: RMS over the ERROR_SIZES runs within the curve of their
-    area over the curve's (linear interpolation) minus one; None when none is within it."""
+def curve_error(out, defect, load, rows, rate, noise, measure=None, keep=None):
+    """The curve's relative error: RMS over the ERROR_SIZES runs within the curve (and kept by
+    keep(size)) of their area (or measure(out, defect, size, load, rate, noise)) over the
+    curve's (linear interpolation) minus one; None when none is within it."""
     dev = []
     for size in ERROR_SIZES:
-        if not rows[0][0] <= size <= rows[-1][0]:
+        if not rows[0][0] <= size <= rows[-1][0] or (keep and not keep(size)):
             continue
-        a = window_area(out, defect, size, load, rate, noise)
+        a = (measure or window_area)(out, defect, size, load, rate, noise)
         k = next(i for i in range(1, len(rows)) if size <= rows[i][0])
         (s0, a0), (s1, a1) = rows[k - 1], rows[k]
         if a is not None:
@@ -192,16 +193,8 @@ def width_curve(out, defect, load, rate, noise):
             best = list(run)
     if len(best) < 2:
         return None, best, None
-    dev = []
-    for s in ERROR_SIZES:
-        if not best[0][0] <= s <= best[-1][0] or crossing_s(defect, s) * rate < 2:
-            continue
-        w = edge_width(out, defect, s, load, rate, noise)
-        k = next(i for i in range(1, len(best)) if s <= best[i][0])
-        (s0, w0), (s1, w1) = best[k - 1], best[k]
-        if w is not None:
-            dev.append(w / (w0 + (w1 - w0) * (s - s0) / (s1 - s0)) - 1)
-    err = (sum(d * d for d in dev) / len(dev)) ** 0.5 if dev else None
+    err = curve_error(out, defect, load, best, rate, noise, edge_width,
+                      lambda s: crossing_s(defect, s) * rate >= 2)
     path = os.path.join(out, f"width_{defect}_{load}_r{rate:g}_{noise}.txt")
     with open(path, "w") as f:
         f.write(f"# {defect} defect, {load} load, r{rate:g}_{noise}: size_deg, entry-to-exit "
@@ -358,6 +351,10 @@ def main(argv):
                  "'chain curve' interval: " + "; ".join(
                      f"{d} {l} {r:g} Hz {n}: " + ("-" if c[2] is None else f"{c[2]:.3f}")
                      for (d, l, r, n), c in sorted(chain_curves.items())))
+    lines.append("")
+    lines.append("The 1 MHz curves' own error (the same runs at 1 MHz), in the 'curve' interval: " +
+                 "; ".join(f"{d} {l}: " + ("-" if c[2] is None else f"{c[2]:.3f}")
+                           for (d, l), c in sorted(curves.items())))
     lines.append("")
     lines.append("The width curves (entry-to-exit width through the chain, the longest increasing "
                  "run; diagnose uses the width where the crossing it gives lasts 2 samples or "

@@ -9,30 +9,14 @@
 #include <cmath>
 
 #include "bearing/pulse_edges.h"
-#include "dsp/acquire.h"
+#include "pulse_records.h"
 
 namespace ohmdem::post {
 namespace {
 
-// Level 0.05, pulses 0.45 level high for tau at f; 1 MHz, then acquired at `rate`.
 Signal record(double tau, double f, double rate, double decay = 0)
 {
-  const double fs = 1e6, level = 0.05, h = 0.45;
-  Signal in;
-  in.rate = fs;
-  const std::size_t n = 300000;
-  in.x.assign(n, level);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / fs;
-    const double u = std::fmod(t * f + 0.3, 1.0) / f;
-    // decay: the ring settling onto the other balls, the jump falling to 40 % during the pulse
-    if (u < tau) in.x[i] += h * level * (decay > 0 ? 0.4 + 0.6 * std::exp(-u / decay) : 1.0);
-  }
-  AcquireSettings a;
-  a.lowpass = 0.4 * rate;
-  a.rate = rate;
-  a.noise_rms = 1e-6;
-  return acquire(in, a).signal;
+  return test_records::pulse_record(tau, f, rate, 0, 0, decay);
 }
 
 TEST(PulseEdges, WidthGrowsAsThePulseAtResolvedLengths)
