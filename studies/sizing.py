@@ -9,15 +9,18 @@ on the ring) and under the fixed (balanced) load. The pits are 50 um deep: the b
 floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/ohmdem-post.md,
 "Size and position". Each run is acquired at 10, 20 and 50 kHz, 16 bits,
 with the detectability study's low and high electrical noise, given a shaft-angle column (the
-deck's angle_inner, 500 rad/s x t) and diagnosed twice: 'jump' (area / (jump x level); the
+deck's angle_inner, 500 rad/s x t) and diagnosed four ways: 'jump' (area / (jump x level); the
 radial load's jump from one calibration run that is not among the cases, an outer pit of 0.7 deg
 at 1 MHz; the fixed load's the theory 1/(Nb-1)) and 'curve' (diagnose --size-curve: the model's
 curve from 1 MHz runs of the scene at sizes none of the cases has; 'chain curve': the same runs
 through the record's instrument, the interval with the curve's own error measured on runs at
-still other sizes, --size-model-error).
+still other sizes, --size-model-error; the 1 MHz curve's own error too) and 'width or chain
+curve' (also --width-curve: the pulses' entry-to-exit width through the instrument, used where
+it resolves the crossing). The force load is simulated at the radial load's sizes.
   studies/sizing.py [--quick] OUT
 Writes OUT/sizing.csv (one row per case, instrument and method), OUT/sizing.md (the tables)
-and OUT/curve_<defect>_<load>.txt (the model's curves).
+and OUT/curve_<defect>_<load>[_r<rate>_<noise>].txt, OUT/width_<defect>_<load>_r<rate>_<noise>.txt
+(the model's curves).
 """
 import argparse
 import json
@@ -42,6 +45,7 @@ CURVE_SIZES = [0.2, 0.4, 0.7, 0.85, 1.1, 1.5, 1.8, 2.5, 3.2, 4.0]
 # through the same chain; the RMS of their area over the curve's, relative (diagnose
 # --size-model-error), combined in the interval with the pass-to-pass scatter
 ERROR_SIZES = [0.25, 0.6, 1.2, 2.2, 3.5]
+T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student's t, P(T > t) = 0.025
 
 
 def cases(quick):
@@ -132,7 +136,8 @@ def _window_stats(out, defect, size, load, rate, noise, tend):
 def curve_error(out, defect, load, rows, rate, noise, measure=None, keep=None):
     """The curve's relative error: RMS over the ERROR_SIZES runs within the curve (and kept by
     keep(size)) of their area (or measure(out, defect, size, load, rate, noise)) over the
-    curve's (linear interpolation) minus one; None when none is within it."""
+    curve's (linear interpolation) minus one, times t(0.975, n runs) / 1.96; None when none is
+    within it."""
     dev = []
     for size in ERROR_SIZES:
         if not rows[0][0] <= size <= rows[-1][0] or (keep and not keep(size)):
@@ -142,7 +147,11 @@ def curve_error(out, defect, load, rows, rate, noise, measure=None, keep=None):
         (s0, a0), (s1, a1) = rows[k - 1], rows[k]
         if a is not None:
             dev.append(a / (a0 + (a1 - a0) * (size - s0) / (s1 - s0)) - 1)
-    return (sum(d * d for d in dev) / len(dev)) ** 0.5 if dev else None
+    if not dev:
+        return None
+    # a spread measured on n runs: Student's t with n degrees of freedom, written as the
+    # normal deviate's multiple diagnose applies (1.96 at 95 %)
+    return (sum(d * d for d in dev) / len(dev)) ** 0.5 * T975[min(len(dev), 5)] / 1.96
 
 
 def model_curve(out, defect, load, rate=None, noise=None):
@@ -163,7 +172,7 @@ def model_curve(out, defect, load, rate=None, noise=None):
                 "fixed-window pulse area / level (s)\n")
         if err is not None:
             f.write(f"# model error (relative RMS of the area at \
-{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg): \
+{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): \
 {err:.4f}; diagnose --size-model-error {err:.4f}\n")
         for size, a in rows:
             f.write(f"{size:g} {a!r}\n")
@@ -201,7 +210,8 @@ def width_curve(out, defect, load, rate, noise):
                 "width (s)\n")
         if err is not None:
             f.write(f"# model error (relative RMS of the width at the resolved ones of "
-                    f"{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg): {err:.4f}; diagnose "
+                    f"{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): "
+                    f"{err:.4f}; diagnose "
                     f"--width-model-error {err:.4f}\n")
         for s, w in best:
             f.write(f"{s:g} {w!r}\n")
