@@ -9,18 +9,22 @@ on the ring) and under the fixed (balanced) load. The pits are 50 um deep: the b
 floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/ohmdem-post.md,
 "Size and position". Each run is acquired at 10, 20 and 50 kHz, 16 bits,
 with the detectability study's low and high electrical noise, given a shaft-angle column (the
-deck's angle_inner, 500 rad/s x t) and diagnosed twice: 'jump' (area / (jump x level); the
+deck's angle_inner, 500 rad/s x t) and diagnosed four ways: 'jump' (area / (jump x level); the
 radial load's jump from one calibration run that is not among the cases, an outer pit of 0.7 deg
 at 1 MHz; the fixed load's the theory 1/(Nb-1)) and 'curve' (diagnose --size-curve: the model's
 curve from 1 MHz runs of the scene at sizes none of the cases has; 'chain curve': the same runs
 through the record's instrument, the interval with the curve's own error measured on runs at
-still other sizes, --size-model-error).
+still other sizes, --size-model-error; the 1 MHz curve's own error too) and 'width or chain
+curve' (also --width-curve: the pulses' entry-to-exit width through the instrument, used where
+it resolves the crossing). The force load is simulated at the radial load's sizes.
   studies/sizing.py [--quick] OUT
 Writes OUT/sizing.csv (one row per case, instrument and method), OUT/sizing.md (the tables)
-and OUT/curve_<defect>_<load>.txt (the model's curves).
+and OUT/curve_<defect>_<load>[_r<rate>_<noise>].txt, OUT/width_<defect>_<load>_r<rate>_<noise>.txt
+(the model's curves).
 """
 import argparse
 import json
+import math
 import os
 import sys
 
@@ -41,6 +45,7 @@ CURVE_SIZES = [0.2, 0.4, 0.7, 0.85, 1.1, 1.5, 1.8, 2.5, 3.2, 4.0]
 # through the same chain; the RMS of their area over the curve's, relative (diagnose
 # --size-model-error), combined in the interval with the pass-to-pass scatter
 ERROR_SIZES = [0.25, 0.6, 1.2, 2.2, 3.5]
+T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student's t, P(T > t) = 0.025
 
 
 def cases(quick):
@@ -57,8 +62,8 @@ def cases(quick):
     c += [("outer", s, "radial", p) for s in (1.0, 2.0) for p in (120.0, 150.0)]
     # the force load (the ring free to tighten): every ball loaded alike as under the fixed
     # load, but on the fixed load's curves its 1 deg pits read -53 % (inner) and +11 % (outer):
-    # the free ring moves while a ball is off, so it has its own curves
-    c += [(d, 1.0, "force", 90.0) for d in ("inner", "outer")]
+    # the free ring moves while a ball is off, so it has its own curves; 0.3-3 deg as radial
+    c += [(d, s, "force", 90.0) for d in ("inner", "outer") for s in sizes]
     return c
 
 
@@ -90,35 +95,63 @@ def calibrate(out):
     return float(np.median(jumps))
 
 
+_STATS = {}
+
+
 def window_area(out, defect, size, load, rate=None, noise=None, tend=T_FROM + 0.15):
     """The fixed-window pulse area over the level of a run of the scene (pit at the load zone's
     centre), at 1 MHz or through the instrument's chain (rate, noise); None if not measured."""
+    return window_stats(out, defect, size, load, rate, noise, tend).get("pulse_window_rel_area_s")
+
+
+def edge_width(out, defect, size, load, rate, noise):
+    """The pulses' entry-to-exit width (s) of a run of the scene through the chain; None if not
+    measured."""
+    return window_stats(out, defect, size, load, rate, noise).get("pulse_edge_width_s")
+
+
+def window_stats(out, defect, size, load, rate=None, noise=None, tend=T_FROM + 0.15):
+    """diagnose's JSON on a run of the scene (pit at the load zone's centre), at 1 MHz or
+    through the instrument's chain; {} when the chain cannot record it."""
+    key = (out, defect, size, load, rate, noise, tend)
+    if key not in _STATS:
+        _STATS[key] = _window_stats(out, defect, size, load, rate, noise, tend)
+    return _STATS[key]
+
+
+def _window_stats(out, defect, size, load, rate, noise, tend):
     sim = simulate(out, (defect, size, load, 90.0), tend)
     record, column = os.path.join(sim, "signal.txt"), "R"
     if rate:
         record, column = os.path.join(out, "acq", f"curve_{defect}_{size:g}_{load}_r{rate:g}_"
                                       f"{noise}.txt"), "V"
         if not acquire_with_angle(sim, load, rate, noise, record, allow_fail=True):
-            return None  # e.g. R infinite (no ball touching: the force load's 4 deg outer pit)
+            return {}  # e.g. R infinite (no ball touching: the force load's 4 deg outer pit)
     r = common.post(["diagnose", "--format", "json", "--column", column, "--metadata",
                      os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect",
                      defect, "--pulse-height", "1", record], who="sizing")
-    return json.loads(r.stdout).get("pulse_window_rel_area_s")
+    return json.loads(r.stdout)
 
 
-def curve_error(out, defect, load, rows, rate, noise):
-    """The curve's relative error: RMS over the ERROR_SIZES runs within the curve of their
-    area over the curve's (linear interpolation) minus one; None when none is within it."""
+def curve_error(out, defect, load, rows, rate, noise, measure=None, keep=None):
+    """The curve's relative error: RMS over the ERROR_SIZES runs within the curve (and kept by
+    keep(size)) of their area (or measure(out, defect, size, load, rate, noise)) over the
+    curve's (linear interpolation) minus one, times t(0.975, n runs) / 1.96; None when none is
+    within it."""
     dev = []
     for size in ERROR_SIZES:
-        if not rows[0][0] <= size <= rows[-1][0]:
+        if not rows[0][0] <= size <= rows[-1][0] or (keep and not keep(size)):
             continue
-        a = window_area(out, defect, size, load, rate, noise)
+        a = (measure or window_area)(out, defect, size, load, rate, noise)
         k = next(i for i in range(1, len(rows)) if size <= rows[i][0])
         (s0, a0), (s1, a1) = rows[k - 1], rows[k]
         if a is not None:
             dev.append(a / (a0 + (a1 - a0) * (size - s0) / (s1 - s0)) - 1)
-    return (sum(d * d for d in dev) / len(dev)) ** 0.5 if dev else None
+    if not dev:
+        return None
+    # a spread measured on n runs: Student's t with n degrees of freedom, written as the
+    # normal deviate's multiple diagnose applies (1.96 at 95 %)
+    return (sum(d * d for d in dev) / len(dev)) ** 0.5 * T975[min(len(dev), 5)] / 1.96
 
 
 def model_curve(out, defect, load, rate=None, noise=None):
@@ -131,7 +164,7 @@ def model_curve(out, defect, load, rate=None, noise=None):
         if a is None or (rows and a <= rows[-1][1]):
             break
         rows.append((size, a))
-    err = curve_error(out, defect, load, rows, rate, noise) if rate else None
+    err = curve_error(out, defect, load, rows, rate, noise)
     tag = f"_r{rate:g}_{noise}" if rate else ""
     path = os.path.join(out, f"curve_{defect}_{load}{tag}.txt")
     with open(path, "w") as f:
@@ -139,11 +172,50 @@ def model_curve(out, defect, load, rate=None, noise=None):
                 "fixed-window pulse area / level (s)\n")
         if err is not None:
             f.write(f"# model error (relative RMS of the area at \
-{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg): \
+{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): \
 {err:.4f}; diagnose --size-model-error {err:.4f}\n")
         for size, a in rows:
             f.write(f"{size:g} {a!r}\n")
     return path, rows, err
+
+
+def crossing_s(defect, size):
+    """How long a ball stays in a pit of `size` deg at the study's speed (s)."""
+    b = common.Bearing()
+    order = b.bpfi_order() if defect == "inner" else b.bpfo_order()
+    return size * math.pi / 180 * b.nb / (2 * math.pi * order * OMEGA / (2 * math.pi))
+
+
+def width_curve(out, defect, load, rate, noise):
+    """The pulses' entry-to-exit width against the size through the instrument's chain: the
+    longest run of CURVE_SIZES over which it increases; its own error from the ERROR_SIZES runs
+    whose crossing lasts 2 samples or more (where diagnose uses the width). (path, rows, err);
+    path None when fewer than two points increase."""
+    pts = [(s, edge_width(out, defect, s, load, rate, noise)) for s in CURVE_SIZES]
+    best, run = [], []
+    for s, w in pts:
+        if w is not None and (not run or w > run[-1][1]):
+            run.append((s, w))
+        else:
+            run = [(s, w)] if w is not None else []
+        if len(run) > len(best):
+            best = list(run)
+    if len(best) < 2:
+        return None, best, None
+    err = curve_error(out, defect, load, best, rate, noise, edge_width,
+                      lambda s: crossing_s(defect, s) * rate >= 2)
+    path = os.path.join(out, f"width_{defect}_{load}_r{rate:g}_{noise}.txt")
+    with open(path, "w") as f:
+        f.write(f"# {defect} defect, {load} load, r{rate:g}_{noise}: size_deg, entry-to-exit "
+                "width (s)\n")
+        if err is not None:
+            f.write(f"# model error (relative RMS of the width at the resolved ones of "
+                    f"{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): "
+                    f"{err:.4f}; diagnose "
+                    f"--width-model-error {err:.4f}\n")
+        for s, w in best:
+            f.write(f"{s:g} {w!r}\n")
+    return path, best, err
 
 
 def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False):
@@ -171,15 +243,19 @@ def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False):
     return True
 
 
-def diagnose(sim, acq, defect, load, height, curve=None, error=None):
+def diagnose(sim, acq, defect, load, height, curve=None, error=None, width=None):
     """The size and place of the run's defect (--assume-defect: the study measures the sizing;
-    the identification is in the CSV)."""
+    the identification is in the CSV). width: (width curve, its error) or None."""
     args = ["diagnose", "--format", "json", "--column", "V", "--metadata",
             os.path.join(sim, "run.json"), "--from", repr(T_FROM), "--assume-defect", defect, acq]
     if curve:
         args += ["--size-curve", curve]
         if error:
             args += ["--size-model-error", repr(error)]
+    if width and width[0]:
+        args += ["--width-curve", width[0]]
+        if width[1]:
+            args += ["--width-model-error", repr(width[1])]
     elif load == "radial":
         args += ["--pulse-height", repr(height)]
     r = common.post(args, who="sizing", allow_fail=True)
@@ -199,7 +275,9 @@ def row(d, case, rate, noise, method):
             "rate_hz": rate, "noise": noise, "method": method, "diagnosis": d["defect"],
             "size_deg_est": est, "low": iv[0], "high": iv[1],
             "error_pct": None if est is None else 100 * (est / size - 1), "covers": covers,
-            "position_est_deg": pos, "position_error_deg": perr}
+            "position_est_deg": pos, "position_error_deg": perr,
+            "size_from": "width" if str(d.get("size_method", "")).startswith("pulse edges")
+            else "area"}
 
 
 def summary(rows):
@@ -212,8 +290,8 @@ def summary(rows):
                               r["load"] == "radial" and r["position_deg"] != 90 else "")
         out.setdefault((r["method"], r["load"], kind, r["rate_hz"], r["noise"]), []).append(r)
     lines = ["| size from | load | defect | rate (Hz) | noise | sized | median abs error | "
-             "largest abs error | interval covers | largest position error (deg) |",
-             "|---" * 10 + "|"]
+             "largest abs error | interval covers | largest position error (deg) | by width |",
+             "|---" * 11 + "|"]
     for (method, load, defect, rate, noise), rs in sorted(out.items()):
         sized = [r for r in rs if r["size_deg_est"] is not None]
         errs = sorted(abs(r["error_pct"]) for r in sized)
@@ -224,7 +302,7 @@ def summary(rows):
         cov = f"{sum(cover)}/{len(cover)}"
         p = f"{max(pos):.1f}" if pos else "-"
         lines.append(f"| {method} | {load} | {defect} | {rate:g} | {noise} | {len(sized)}/{len(rs)} | {med} | "
-                     f"{big} | {cov} | {p} |")
+                     f"{big} | {cov} | {p} | {sum(r['size_from'] == 'width' for r in sized)} |")
     return lines
 
 
@@ -237,7 +315,7 @@ def main(argv):
     height = calibrate(a.out)
     curves = {(d, l): model_curve(a.out, d, l) for d in ("inner", "outer")
               for l in ("radial", "fixed", "force")}
-    chain_curves = {}
+    chain_curves, width_curves = {}, {}
     rows = []
     for case in cases(a.quick):
         defect, size, load, position = case
@@ -247,18 +325,20 @@ def main(argv):
                 acq = os.path.join(a.out, "acq", f"{defect}_{size:g}_{load}_p{position:g}_"
                                    f"r{rate:g}_{noise}.txt")
                 acquire_with_angle(sim, load, rate, noise, acq)
-                for method in ("jump", "curve", "chain curve"):
-                    curve, error = None, None
+                key = (defect, load, rate, noise)
+                if key not in chain_curves:
+                    chain_curves[key] = model_curve(a.out, defect, load, rate, noise)
+                    width_curves[key] = width_curve(a.out, defect, load, rate, noise)
+                for method in ("jump", "curve", "chain curve", "width or chain curve"):
+                    curve, error, width = None, None, None
                     if method == "curve":
-                        curve = curves[(defect, load)][0]
-                    elif method == "chain curve":
-                        key = (defect, load, rate, noise)
-                        if key not in chain_curves:
-                            chain_curves[key] = model_curve(a.out, defect, load, rate,
-                                                            noise)
+                        curve, error = curves[(defect, load)][0], curves[(defect, load)][2]
+                    elif method != "jump":
                         curve, error = chain_curves[key][0], chain_curves[key][2]
-                    rows.append(row(diagnose(sim, acq, defect, load, height, curve, error), case,
-                                    rate, noise, method))
+                    if method == "width or chain curve":
+                        width = (width_curves[key][0], width_curves[key][2])
+                    d = diagnose(sim, acq, defect, load, height, curve, error, width)
+                    rows.append(row(d, case, rate, noise, method))
     cols = list(rows[0].keys())
     with open(os.path.join(a.out, "sizing.csv"), "w") as f:
         f.write(",".join(cols) + "\n")
@@ -281,6 +361,18 @@ def main(argv):
                  "'chain curve' interval: " + "; ".join(
                      f"{d} {l} {r:g} Hz {n}: " + ("-" if c[2] is None else f"{c[2]:.3f}")
                      for (d, l, r, n), c in sorted(chain_curves.items())))
+    lines.append("")
+    lines.append("The 1 MHz curves' own error (the same runs at 1 MHz), in the 'curve' interval: " +
+                 "; ".join(f"{d} {l}: " + ("-" if c[2] is None else f"{c[2]:.3f}")
+                           for (d, l), c in sorted(curves.items())))
+    lines.append("")
+    lines.append("The width curves (entry-to-exit width through the chain, the longest increasing "
+                 "run; diagnose uses the width where the crossing it gives lasts 2 samples or "
+                 "more): " + "; ".join(
+                     f"{d} {l} {r:g} Hz {n}: " + (", ".join(f"{s:g} deg -> {w * 1e6:.0f} us"
+                                                            for s, w in c[1]) or "-") +
+                     ("" if c[2] is None else f" (error {c[2]:.3f})")
+                     for (d, l, r, n), c in sorted(width_curves.items())))
     lines.append("")
     lines += summary(rows)
     with open(os.path.join(a.out, "sizing.md"), "w") as f:

@@ -5,8 +5,10 @@
 #include <cmath>
 
 #include "bearing/pulse_area.h"
+#include "bearing/pulse_edges.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
+#include "dsp/detect_laws.h"
 #include "dsp/pulses.h"
 
 namespace ohmdem::post {
@@ -73,6 +75,11 @@ double race_radius(const std::string &defect, const BearingGeometry &g)
   return defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2;
 }
 
+bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+                    const Diagnosis &found, const DiagnoseOptions &o, bool curve);
+void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
+           const DiagnoseOptions &o);
+
 }  // namespace
 
 LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
@@ -133,7 +140,52 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     l.method = "assumed " + d.defect + " defect ({diagnose.assume_defect}); " + l.method;
   l.passes = a.passes;
   l.window_rel_area_s = a.window_rel_area_s;
-  if (!a.valid) return l;
+  // Where the record's entry-to-exit width lies on the model's width curve (which starts where
+  // the chain resolves the pulse), the size comes from the width: the area stops growing past
+  // ~1 deg when the ring is free to move (doc/ohmdem-post.md, "Size and position").
+  CurveReading w;
+  if (a.passes > 0) {
+    const PulseEdges pe = pulse_edge_width(s.x, s.rate, d.frequency_hz);
+    if (pe.valid) {
+      l.edge_width_s = pe.width_s;
+      if (!o.width_curve_size_deg.empty()) {
+        const double tq = student_t_isf(0.025, static_cast<double>(pe.blocks) - 1);
+        const double z = student_t_isf(0.025, 1e9) * o.width_rel_error * pe.width_s;
+        w = read_on_curve(o.width_curve_size_deg, o.width_curve_s, pe.width_s,
+                          std::hypot(tq * pe.se_s, z));
+        // resolved: the crossing the width gives lasts kResolvedSamples samples or more (the
+        // area is the better statistic below that)
+        constexpr double kResolvedSamples = 2;
+        const double tau = w.size * kPi / 180 * g.nb / (2 * kPi * d.frequency_hz);
+        if (!(tau * s.rate >= kResolvedSamples)) w = CurveReading();
+        if (std::isfinite(w.size))
+          l.method = "pulse edges: entry-to-exit width " + format_number(pe.width_s * 1e6, 4) +
+                     " us on the model's width curve, " + std::to_string(pe.blocks) + " blocks; " +
+                     l.method;
+      }
+    }
+  }
+  if (!a.valid && !std::isfinite(w.size)) return l;
+  if (std::isfinite(w.size)) {
+    l.valid = true;
+    l.size_deg = w.size;
+    l.size_lo_deg = w.lo;
+    l.size_hi_deg = w.hi;
+    l.arc_m = w.size * kPi / 180 * race_radius(d.defect, g);
+    l.height_source = "the model's width curve ({diagnose.width_curve})";
+  } else if (!size_from_area(l, a, s, d, found, o, curve)) {
+    return l;
+  }
+  place(l, a, d, radial, o);
+  return l;
+}
+
+namespace {
+
+bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+                    const Diagnosis &found, const DiagnoseOptions &o, bool curve)
+{
+  const BearingGeometry &g = o.geometry;
   const double to_deg = 180 / kPi;
   const auto angle = [&](double tau) { return defect_angle(d.defect, d.frequency_hz, tau, g.nb); };
   // Without the model's curve the size rests on the theory's flat jump: the pulse is h level
@@ -152,7 +204,7 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
         format_number(found.size.size_deg, 3) +
         " deg: the ball drops into the pit or the ring rings after the exit); give the "
         "model's curve ({diagnose.size_curve}, studies/sizing.py)";
-    return l;
+    return false;
   }
   l.valid = true;
   l.size_deg = angle(a.tau_s) * to_deg;
@@ -165,6 +217,13 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     l.size_hi_deg = a.size_hi_deg;
     l.arc_m = a.size_deg * kPi / 180 * race_radius(d.defect, g);
   }
+  return true;
+}
+
+// The position where the record determines it; else why not.
+void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
+           const DiagnoseOptions &o)
+{
   if (d.defect == "inner") {
     if (!radial)
       l.position_note = "not determined: under a balanced load every pass looks the same";
@@ -183,7 +242,8 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     l.position_reference = "shaft zero";
     l.position_note.clear();
   }
-  return l;
 }
+
+}  // namespace
 
 }  // namespace ohmdem::post

@@ -41,6 +41,10 @@ struct DiagnoseOptions {
   // the curve's own error: relative standard deviation of its area (0: the interval is the
   // pass-to-pass scatter only)
   double curve_rel_error = 0;
+  // the model's width curve (bearing/pulse_edges.h): sizes (deg) and entry-to-exit widths (s),
+  // through the record's chain; where the record's width lies on it, the size is read off it
+  std::vector<double> width_curve_size_deg, width_curve_s;
+  double width_rel_error = 0;        // its own relative error, as curve_rel_error
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
   // Mains frequencies (Hz) whose harmonic combs are masked where they stand out (the supply's
@@ -110,6 +114,7 @@ struct LocatedDefect {
   std::size_t passes = 0;
   double window_rel_area_s = std::numeric_limits<double>::quiet_NaN();  // for the model's curve
   double pass_energy = std::numeric_limits<double>::quiet_NaN();        // accel-curve (V^2 s)
+  double edge_width_s = std::numeric_limits<double>::quiet_NaN();       // for the width curve
   double position_deg = std::numeric_limits<double>::quiet_NaN();
   double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
   double position_hi_deg = std::numeric_limits<double>::quiet_NaN();

@@ -70,28 +70,31 @@ std::string numerical_floor(const Signal &s, const RunMetadata &meta)
          "1-degree pit); the statistics below describe numerical blips, not a defect";
 }
 
-// Lines "SIZE_DEG AREA_S" ('#' comments), at least two, both columns increasing.
-void read_size_curve(const std::string &path, DiagnoseOptions &o)
+// Lines "SIZE_DEG VALUE" ('#' comments), at least two, both columns increasing; `flag` and
+// `value` name the option and the second column in the errors.
+void read_curve(const std::string &path, const std::string &flag, const std::string &value,
+                std::vector<double> &sizes, std::vector<double> &values)
 {
   std::ifstream in(path);
-  if (!in) throw Error("diagnose: --size-curve " + path + ": cannot open the file");
+  if (!in) throw Error("diagnose: " + flag + " " + path + ": cannot open the file");
+  const std::string form = "'SIZE_DEG " + value + "'";
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream ls(line);
     double sz = 0, ar = 0;
     if (!(ls >> sz >> ar) || !std::isfinite(sz) || !std::isfinite(ar))
-      throw Error("diagnose: --size-curve " + path + ": expected lines 'SIZE_DEG AREA_S', got '" +
-                  line + "'");
-    if (!o.curve_size_deg.empty() &&
-        (sz <= o.curve_size_deg.back() || ar <= o.curve_rel_area_s.back()))
-      throw Error("diagnose: --size-curve " + path +
-                  ": sizes and areas must both increase from line to line");
-    o.curve_size_deg.push_back(sz);
-    o.curve_rel_area_s.push_back(ar);
+      throw Error("diagnose: " + flag + " " + path + ": expected lines " + form + ", got '" + line +
+                  "'");
+    if (!sizes.empty() && (sz <= sizes.back() || ar <= values.back()))
+      throw Error("diagnose: " + flag + " " + path + ": sizes and " +
+                  (value == "AREA_S" ? "areas" : "widths") +
+                  " must both increase from line to line");
+    sizes.push_back(sz);
+    values.push_back(ar);
   }
-  if (o.curve_size_deg.size() < 2)
-    throw Error("diagnose: --size-curve " + path + ": needs at least two lines 'SIZE_DEG AREA_S'");
+  if (sizes.size() < 2)
+    throw Error("diagnose: " + flag + " " + path + ": needs at least two lines " + form);
 }
 
 }  // namespace
@@ -165,6 +168,13 @@ int run_diagnose(const std::vector<std::string> &argv)
            "record: the delay between the ball's entry and exit events in the pit) or "
            "accel-curve (an accelerometer record: the passes' energy on the model's "
            "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s)");
+  a.option("--width-curve", "FILE",
+           "the model's width curve from simulations of the same scene through the record's "
+           "chain: lines 'SIZE_DEG WIDTH_S' (the pulses' entry-to-exit width, JSON "
+           "pulse_edge_width_s), both increasing; where the record's width lies on it, the size "
+           "is read off it instead of the area's curve");
+  a.option("--width-model-error", "REL",
+           "the --width-curve's own relative error (sizing.py writes it in the curve's header)");
   a.option("--pulse-height", "H",
            "relative jump of the level when the defect's ball loses contact (at the load "
            "zone's centre under a radial load), from a simulation of the scene; default under "
@@ -203,7 +213,18 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
-  if (a.has("--size-curve")) read_size_curve(a.get("--size-curve"), o);
+  if (a.has("--size-curve"))
+    read_curve(a.get("--size-curve"), "--size-curve", "AREA_S", o.curve_size_deg,
+               o.curve_rel_area_s);
+  if (a.has("--width-curve"))
+    read_curve(a.get("--width-curve"), "--width-curve", "WIDTH_S", o.width_curve_size_deg,
+               o.width_curve_s);
+  if (a.has("--width-model-error")) {
+    if (!a.has("--width-curve"))
+      throw Error("diagnose: --width-model-error needs --width-curve (it is the curve's error)");
+    o.width_rel_error =
+        a.number_in("--width-model-error", 0, Range::closed(0, 1), "a relative error");
+  }
   if (a.has("--size-model-error")) {
     if (!a.has("--size-curve"))
       throw Error("diagnose: --size-model-error needs --size-curve (it is the curve's error)");

@@ -46,6 +46,8 @@ const SettingFlags &setting_flags()
       {"diagnose.assume_defect", "--assume-defect"},
       {"diagnose.size_curve", "--size-curve"},
       {"diagnose.curve_rel_error", "--size-model-error"},
+      {"diagnose.width_curve", "--width-curve"},
+      {"diagnose.width_rel_error", "--width-model-error"},
       {"diagnose.pulse_height", "--pulse-height"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},

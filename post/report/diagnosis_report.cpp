@@ -130,6 +130,7 @@ void located_json(Json &j, const Diagnosis &d)
   j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
   // the accel-curve size method: the feature its model curve is made of (absent otherwise)
   if (std::isfinite(l.pass_energy)) j.set("pass_energy_v2s", l.pass_energy);
+  j.set("pulse_edge_width_s", number_or_null(l.edge_width_s));
   j.set("position_deg", number_or_null(l.position_deg));
   j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));

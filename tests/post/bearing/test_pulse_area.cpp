@@ -8,39 +8,16 @@
 #include <cmath>
 
 #include "bearing/pulse_area.h"
-#include "dsp/acquire.h"
-#include "test_constants.h"
+#include "pulse_records.h"
 
 namespace ohmdem::post {
 namespace {
 
 using ohmdem::test::kPi;
 
-// Level 0.05 (V = I R), pulses h level high for tau at f, starting at phase0 / f; with `zone`
-// the height follows cos^2 of the shaft angle 2 pi fr t + position - 90 deg (an inner defect
-// under a radial load, its zone's centre at 90 deg). 1 MHz, then acquired at `rate`.
 Signal record(double tau, double f, double rate, double fr = 0, double position_deg = 0)
 {
-  const double fs = 1e6, level = 0.05, h = 0.45;
-  Signal in;
-  in.rate = fs;
-  const std::size_t n = 300000;
-  in.x.assign(n, level);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / fs;
-    const double u = std::fmod(t * f + 0.3, 1.0) / f;
-    double k = 1;
-    if (fr > 0) {
-      const double c = std::cos(2 * kPi * fr * t + (position_deg - 90) * kPi / 180);
-      k = c > 0 ? c * c : 0;
-    }
-    if (u < tau) in.x[i] += k * h * level;
-  }
-  AcquireSettings a;
-  a.lowpass = 0.4 * rate;
-  a.rate = rate;
-  a.noise_rms = 1e-6;
-  return acquire(in, a).signal;
+  return test_records::pulse_record(tau, f, rate, fr, position_deg);
 }
 
 TEST(PulseArea, AreaOverHeightIsThePulseLengthAtEveryRate)

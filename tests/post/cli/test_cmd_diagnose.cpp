@@ -176,6 +176,38 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   EXPECT_TRUE(outer.find("position_deg")->is_null());
 }
 
+// Issue 26, the pulses' edges: a held-out 3 deg inner pit under the radial load (same scene and
+// chain as above), whose area has stopped growing (the ring drops into the gap, doc/ohmdem-post.md
+// "Size and position"): on the area's chain curve it reads far too small; on the width curve
+// (width_inner_radial_r20000_low.txt, the study's runs at sizes none of which is 3 deg) its
+// size is the deck's within 15 % (the issue's goal) and the interval holds it.
+TEST(Cli, DiagnoseSizesFromTheEdgesWhereTheAreaStopsGrowing)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  const std::string base = "diagnose " + data + "inner_3_radial_p90_20kHz.txt --column V " +
+                           "--metadata " + data + "inner_3_radial_p90.json --format json " +
+                           "--assume-defect inner --size-curve " + data +
+                           "curve_inner_radial_r20000_low.txt";
+  const CliRun area = run(base);
+  ASSERT_EQ(area.status, 0) << area.out;
+  const Json a = Json::parse(area.out, "diagnose output");
+  EXPECT_LT(a.find("size_deg")->number(), 2.0);
+  const CliRun width = run(base + " --width-curve " + data + "width_inner_radial_r20000_low.txt" +
+                           " --width-model-error 0.02");
+  ASSERT_EQ(width.status, 0) << width.out;
+  const Json w = Json::parse(width.out, "diagnose output");
+  EXPECT_NEAR(w.find("size_deg")->number(), 3.0, 0.45) << width.out;
+  const Json &iv = *w.find("size_interval_deg");
+  EXPECT_LE(iv[0].number(), 3.0);
+  EXPECT_GE(iv[1].number(), 3.0);
+  EXPECT_EQ(w.find("size_method")->string().rfind("pulse edges", 0), 0U);
+  EXPECT_GT(w.find("pulse_edge_width_s")->number(), 0);
+  const CliRun alone = run(base + " --width-model-error 0.02");
+  EXPECT_NE(alone.status, 0);
+  EXPECT_NE(alone.out.find("--width-model-error needs --width-curve"), std::string::npos)
+      << alone.out;
+}
+
 TEST(Cli, DiagnoseCsvAndTable)
 {
   const std::string dir = make_run_dir("run_csv", "inner");
