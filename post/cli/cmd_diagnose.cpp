@@ -88,7 +88,9 @@ void read_curve(const std::string &path, const std::string &flag, const std::str
                   "'");
     if (!sizes.empty() && (sz <= sizes.back() || ar <= values.back()))
       throw Error("diagnose: " + flag + " " + path + ": sizes and " +
-                  (value == "AREA_S" ? "areas" : "widths") +
+                  (value == "AREA_S"    ? "areas"
+                   : value == "WIDTH_S" ? "widths"
+                                        : "energies") +
                   " must both increase from line to line");
     sizes.push_back(sz);
     values.push_back(ar);
@@ -213,9 +215,16 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
-  if (a.has("--size-curve"))
-    read_curve(a.get("--size-curve"), "--size-curve", "AREA_S", o.curve_size_deg,
-               o.curve_rel_area_s);
+  // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
+  const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
+  const bool double_impulse = size_method == "double-impulse";
+  const bool accel_curve = size_method == "accel-curve";
+  if (!double_impulse && !accel_curve && size_method != "area")
+    throw Error("diagnose: --size-method must be area, double-impulse or accel-curve, got '" +
+                size_method + "'");
+  if (a.has("--size-curve"))  // accel-curve: the passes' energy against size, else the area
+    read_curve(a.get("--size-curve"), "--size-curve", accel_curve ? "ENERGY_V2S" : "AREA_S",
+               o.curve_size_deg, o.curve_rel_area_s);
   if (a.has("--width-curve"))
     read_curve(a.get("--width-curve"), "--width-curve", "WIDTH_S", o.width_curve_size_deg,
                o.width_curve_s);
@@ -278,21 +287,15 @@ int run_diagnose(const std::vector<std::string> &argv)
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
   if (other_channel) o.other_channel = &*other_channel;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
-  // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
-  const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
-  const bool double_impulse = size_method == "double-impulse";
-  const bool accel_curve = size_method == "accel-curve";
-  if (!double_impulse && !accel_curve && size_method != "area")
-    throw Error("diagnose: --size-method must be area, double-impulse or accel-curve, got '" +
-                size_method + "'");
-  if (accel_curve && (in_orders || a.has("--pulse-height")))
+  if (accel_curve && (in_orders || a.has("--pulse-height") || a.has("--width-curve")))
     throw Error(
         "diagnose: --size-method accel-curve needs a record at constant speed and takes no "
-        "--pulse-height (it belongs to the area method)");
-  if (double_impulse && (in_orders || a.has("--size-curve") || a.has("--pulse-height")))
+        "--pulse-height or --width-curve (they belong to the area method)");
+  if (double_impulse &&
+      (in_orders || a.has("--size-curve") || a.has("--pulse-height") || a.has("--width-curve")))
     throw Error(
         "diagnose: --size-method double-impulse needs a record at constant speed and "
-        "takes no --size-curve or --pulse-height (they belong to the area method)");
+        "takes no --size-curve, --width-curve or --pulse-height (they belong to the area method)");
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "

@@ -99,10 +99,15 @@ TEST(DiagnoseAccelCurve, BadInput)
                        "--pulse-height"),
             std::string::npos)
       << r.out;
+  // a width curve belongs to the electrical pulses: refused rather than ignored
+  const std::string widths = test::write_temp("accel_curve_widths.txt", "0.5 1e-4\n1 2e-4\n");
+  r = run("diagnose " + rec + kArgs + " --width-curve " + widths);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("takes no --pulse-height or --width-curve"), std::string::npos) << r.out;
   const std::string bad = test::write_temp("accel_curve_bad.txt", "1 2e-5\n0.5 3e-5\n");
   r = run("diagnose " + rec + kArgs + " --size-curve " + bad);
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("sizes and areas must both increase"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sizes and energies must both increase"), std::string::npos) << r.out;
 }
 
 }  // namespace

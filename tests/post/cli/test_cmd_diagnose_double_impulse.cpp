@@ -104,7 +104,7 @@ TEST(DiagnoseDoubleImpulse, BadInput)
       "diagnose " + rec +
       " --rate 50000 --rpm 1797 --bearing 6205 --size-method double-impulse --pulse-height 0.1");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("takes no --size-curve or --pulse-height"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("takes no --size-curve, --width-curve or --pulse-height"), std::string::npos) << r.out;
 }
 
 }  // namespace
