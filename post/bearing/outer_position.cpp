@@ -96,6 +96,8 @@ FoldPhases fold_phases(const std::vector<double> &x, std::size_t from, std::size
   }
   double c[3];
   if (!fit_fundamental(avg, count, keep, c) || !(std::hypot(c[1], c[2]) > 0)) return r;
+  // a pulse, not the modulation's own crest: a healthy record's fold peaks at its maximum
+  if (!(top > kPulseOverModulation * std::hypot(c[1], c[2]))) return r;
   r.modulation = std::atan2(c[2], c[1]);
   r.rel_amplitude = std::hypot(c[1], c[2]) / std::fabs(c[0]);
   r.valid = true;
@@ -121,7 +123,7 @@ OuterPosition outer_position(const std::vector<double> &x, double rate, double f
   }
   const FoldPhases all = fold_phases(x, 0, x.size(), rate, f);
   if (!all.valid) {
-    p.note = "no pulse above the level in the ball-pass fold";
+    p.note = "no pulse above the level and the ball-pass modulation in the fold";
     return p;
   }
   const double lag = wrap(all.pulse - all.modulation);

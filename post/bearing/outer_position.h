@@ -28,9 +28,12 @@ struct FoldPhases {
 // the pulse when fitting the modulation, the share of the pulse's peak that bounds its centroid.
 constexpr int kPhaseBins = 64, kPhaseBlocks = 8;
 constexpr double kPulseMask = 0.25, kCentroidLevel = 0.3;
+// The pulse's rise over the level must exceed this many times the modulation's amplitude (the
+// simulated pits: 14 to 170 times; a healthy fold's crest: about once).
+constexpr double kPulseOverModulation = 4;
 
 // x[from, to) folded at f (Hz) sampled at rate; invalid when the fold has an empty bin or no
-// pulse rises above the level. Exposed for the tests.
+// pulse rises above the level and the modulation. Exposed for the tests.
 FoldPhases fold_phases(const std::vector<double> &x, std::size_t from, std::size_t to, double rate,
                        double f);
 

@@ -75,6 +75,11 @@ TEST(OuterPosition, NoModulationOrTooShort)
   const OuterPosition p = outer_position(flat.x, flat.rate, kF, kNb, 88e-6);
   EXPECT_FALSE(p.valid);
   EXPECT_NE(p.note.find("not measurable"), std::string::npos) << p.note;
+  // a healthy bearing under the radial load: the modulation alone, no pulse (its crest is not
+  // one: the pulse must rise kPulseOverModulation times the modulation's amplitude)
+  const Signal healthy = record(10, 2e4, 0.003, 0);
+  EXPECT_NE(outer_position(healthy.x, healthy.rate, kF, kNb, 88e-6).note.find("no pulse"),
+            std::string::npos);
   const Signal short_record = record(10, 2e4, 0.003, 88e-6, 0.1);  // 41 passes
   EXPECT_NE(outer_position(short_record.x, short_record.rate, kF, kNb, 88e-6).note.find("too few"),
             std::string::npos);
