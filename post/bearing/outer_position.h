@@ -29,7 +29,7 @@ struct FoldPhases {
 constexpr int kPhaseBins = 64, kPhaseBlocks = 8;
 constexpr double kPulseMask = 0.25, kCentroidLevel = 0.3;
 // The pulse's rise over the level must exceed this many times the modulation's amplitude (the
-// simulated pits: 14 to 170 times; a healthy fold's crest: about once).
+// simulated pits: 17 to 190 times; a healthy fold's crest: about once).
 constexpr double kPulseOverModulation = 4;
 
 // x[from, to) folded at f (Hz) sampled at rate; invalid when the fold has an empty bin or no
