@@ -271,6 +271,9 @@ def row(d, case, rate, noise, method):
         (iv[1] is None or size <= iv[1])
     pos = d.get("position_deg") if est is not None else None
     perr = None if pos is None else (pos - position + 180) % 360 - 180
+    mod = d.get("position_modulo_deg")
+    if pos is not None and mod:  # an outer pit: from the load zone's centre (90 deg), modulo
+        perr = (pos - (position - 90) + mod / 2) % mod - mod / 2
     return {"defect": defect, "size_deg": size, "load": load, "position_deg": position,
             "rate_hz": rate, "noise": noise, "method": method, "diagnosis": d["defect"],
             "size_deg_est": est, "low": iv[0], "high": iv[1],

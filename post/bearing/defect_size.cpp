@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bearing/outer_position.h"
 #include "bearing/pulse_area.h"
 #include "bearing/pulse_edges.h"
 #include "core/constants.h"
@@ -79,6 +80,7 @@ bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, c
                     const Diagnosis &found, const DiagnoseOptions &o, bool curve);
 void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
            const DiagnoseOptions &o);
+void place_outer(LocatedDefect &l, const Signal &s, const Diagnosis &d, int nb);
 
 }  // namespace
 
@@ -165,6 +167,8 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
       }
     }
   }
+  // the phase places an outer pit whether or not its size is read
+  if (d.defect == "outer" && radial) place_outer(l, s, d, g.nb);
   if (!a.valid && !std::isfinite(w.size)) return l;
   if (std::isfinite(w.size)) {
     l.valid = true;
@@ -220,6 +224,31 @@ bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, c
   return true;
 }
 
+// An outer pit's angle from the load direction, modulo the ball spacing (outer_position.h).
+void place_outer(LocatedDefect &l, const Signal &s, const Diagnosis &d, int nb)
+{
+  const double f = refine_repetition(s.x, s.rate, d.frequency_hz);
+  // the crossing bounds the pulse's centroid: the entry-to-exit width, else the pulse width
+  const double crossing = std::isfinite(l.edge_width_s) ? l.edge_width_s
+                          : d.size.valid                ? d.size.pulse_width_s
+                                                        : std::nan("");
+  const OuterPosition p = outer_position(s.x, s.rate, f, nb, crossing);
+  if (!p.valid) {
+    l.position_note = "not determined: " + p.note;
+    return;
+  }
+  l.position_deg = p.angle_deg;
+  l.position_lo_deg = p.angle_deg - p.half_width_deg;
+  l.position_hi_deg = p.angle_deg + p.half_width_deg;
+  l.position_modulo_deg = p.spacing_deg;
+  l.position_reference = "load direction";
+  l.position_note = "modulo the ball spacing " + format_number(p.spacing_deg, 4) +
+                    " deg (the pulses' phase after the ball-pass modulation's maximum, " +
+                    std::to_string(p.blocks) +
+                    " blocks; the branch is not determined), positive in the balls' direction "
+                    "of travel";
+}
+
 // The position where the record determines it; else why not.
 void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
            const DiagnoseOptions &o)
@@ -231,9 +260,8 @@ void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool ra
       l.position_note =
           "not determined: the record has no shaft angle (angle or tachometer column)";
   } else {
-    l.position_note = radial ? "not determined: the pulse area mixes the pit's width with its "
-                               "place in the load zone"
-                             : "not determined: under a balanced load every place looks the same";
+    if (!radial)
+      l.position_note = "not determined: under a balanced load every place looks the same";
   }
   if (std::isfinite(a.position_deg)) {
     l.position_deg = a.position_deg;

@@ -119,8 +119,10 @@ struct LocatedDefect {
   double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
   double position_hi_deg = std::numeric_limits<double>::quiet_NaN();
   std::string position_reference;  // "shaft zero", "load direction", or empty
-  std::string position_note;       // why not determined
-  std::string depth_note;          // what the record says of the depth
+  // an outer pit under a radial load: the position is known modulo this (360/Nb), else NaN
+  double position_modulo_deg = std::numeric_limits<double>::quiet_NaN();
+  std::string position_note;  // why not determined
+  std::string depth_note;     // what the record says of the depth
 };
 
 struct Diagnosis {

@@ -134,6 +134,7 @@ void located_json(Json &j, const Diagnosis &d)
   j.set("position_deg", number_or_null(l.position_deg));
   j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));
+  if (std::isfinite(l.position_modulo_deg)) j.set("position_modulo_deg", l.position_modulo_deg);
   if (!l.position_note.empty()) j.set("position_note", l.position_note);
   if (!l.depth_note.empty()) j.set("depth", l.depth_note);
 }
@@ -283,7 +284,8 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
     line("position:      " +
          interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
                        "deg") +
-         " from the " + d.located.position_reference);
+         " from the " + d.located.position_reference +
+         (std::isfinite(d.located.position_modulo_deg) ? ", " + d.located.position_note : ""));
   else if ((chosen || d.located.valid) && !d.located.position_note.empty())
     line("position:      " + d.located.position_note);
   if ((chosen || d.located.valid) && !d.located.depth_note.empty())

@@ -168,12 +168,23 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   EXPECT_NEAR(inner.find("size_deg")->number(), 0.5, 0.075);
   EXPECT_NEAR(inner.find("position_deg")->number(), 330, 3);
   EXPECT_EQ(inner.find("position_reference")->string(), "shaft zero");
-  // radial load, 0.3 deg outer pit: a lower bound only (no upper end), the place not determined
+  // radial load, 0.3 deg outer pit at the load zone's centre: a lower bound only (no upper
+  // end); the place from the pulses' phase in the ball-pass modulation, modulo 360/13 deg
   const Json outer = diagnose("outer_0.3_radial_p90", "--pulse-height 0.4494");
   EXPECT_EQ(outer.find("defect")->string(), "outer");
   EXPECT_NEAR(outer.find("size_deg")->number(), 0.3, 0.03);
   EXPECT_TRUE((*outer.find("size_interval_deg"))[1].is_null());
-  EXPECT_TRUE(outer.find("position_deg")->is_null());
+  const auto place = [](const Json &j, double deg) {
+    EXPECT_EQ(j.find("position_reference")->string(), "load direction");
+    EXPECT_NEAR(j.find("position_modulo_deg")->number(), 360.0 / 13, 1e-9);
+    EXPECT_NEAR(j.find("position_deg")->number(), deg, 1.5);
+    const Json &iv = *j.find("position_interval_deg");
+    EXPECT_LT(iv[0].number(), deg);
+    EXPECT_GT(iv[1].number(), deg);
+  };
+  place(outer, 0);
+  // a 2 deg outer pit 45 deg from the load (the deck's 135 deg): 45 - 2 x 360/13 = -10.38 deg
+  place(diagnose("outer_2_radial_p135", "--pulse-height 0.4494"), 45 - 2 * 360.0 / 13);
 }
 
 // Issue 26, the pulses' edges: a held-out 3 deg inner pit under the radial load (same scene and
