@@ -60,15 +60,10 @@ def model_curve(out, defect, rate, noise):
            for s in ERROR_SIZES if len(rows) > 1 and rows[0][0] <= s <= rows[-1][0]]
     err = (sum(d * d for d in dev) / len(dev)) ** 0.5 if dev else None
     path = os.path.join(out, f"accel_curve_{defect}_r{rate:g}_{noise}.txt")
-    with open(path, "w") as f:
-        f.write(f"# {defect} defect, radial load, accelerometer r{rate:g} {noise}: size_deg, "
-                "pass energy (V^2 s)\n")
-        if err is not None:
-            f.write(f"# model error (relative RMS of the energy at "
-                    f"{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg): {err:.4f}; "
-                    f"diagnose --size-model-error {err:.4f}\n")
-        for size, e in rows:
-            f.write(f"{size:g} {e!r}\n")
+    sizing.write_curve(path, f"{defect} defect, radial load, accelerometer r{rate:g} {noise}: "
+                       "size_deg, pass energy (V^2 s)",
+                       f"the energy at {sizing.sizes_text(ERROR_SIZES)} deg", err,
+                       "--size-model-error", rows)
     return path, rows, err
 
 

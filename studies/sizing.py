@@ -167,16 +167,27 @@ def model_curve(out, defect, load, rate=None, noise=None):
     err = curve_error(out, defect, load, rows, rate, noise)
     tag = f"_r{rate:g}_{noise}" if rate else ""
     path = os.path.join(out, f"curve_{defect}_{load}{tag}.txt")
-    with open(path, "w") as f:
-        f.write(f"# {defect} defect, {load} load{', ' + tag[1:] if tag else ', 1 MHz'}: size_deg, "
-                "fixed-window pulse area / level (s)\n")
-        if err is not None:
-            f.write(f"# model error (relative RMS of the area at \
-{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): \
-{err:.4f}; diagnose --size-model-error {err:.4f}\n")
-        for size, a in rows:
-            f.write(f"{size:g} {a!r}\n")
+    write_curve(path, f"{defect} defect, {load} load{', ' + tag[1:] if tag else ', 1 MHz'}: "
+                "size_deg, fixed-window pulse area / level (s)",
+                f"the area at {sizes_text(ERROR_SIZES)} deg, x t(0.975, runs) / 1.96", err,
+                "--size-model-error", rows)
     return path, rows, err
+
+
+def sizes_text(sizes):
+    return ', '.join(f'{x:g}' for x in sizes)
+
+
+def write_curve(path, title, error_of, err, flag, rows):
+    """A model curve diagnose reads: its title, its own error (relative RMS of `error_of`) with
+    the diagnose flag that takes it, then `SIZE VALUE` lines."""
+    with open(path, "w") as f:
+        f.write(f"# {title}\n")
+        if err is not None:
+            f.write(f"# model error (relative RMS of {error_of}): {err:.4f}; diagnose {flag} "
+                    f"{err:.4f}\n")
+        for size, value in rows:
+            f.write(f"{size:g} {value!r}\n")
 
 
 def crossing_s(defect, size):
@@ -205,16 +216,9 @@ def width_curve(out, defect, load, rate, noise):
     err = curve_error(out, defect, load, best, rate, noise, edge_width,
                       lambda s: crossing_s(defect, s) * rate >= 2)
     path = os.path.join(out, f"width_{defect}_{load}_r{rate:g}_{noise}.txt")
-    with open(path, "w") as f:
-        f.write(f"# {defect} defect, {load} load, r{rate:g}_{noise}: size_deg, entry-to-exit "
-                "width (s)\n")
-        if err is not None:
-            f.write(f"# model error (relative RMS of the width at the resolved ones of "
-                    f"{', '.join(f'{x:g}' for x in ERROR_SIZES)} deg, x t(0.975, runs) / 1.96): "
-                    f"{err:.4f}; diagnose "
-                    f"--width-model-error {err:.4f}\n")
-        for s, w in best:
-            f.write(f"{s:g} {w!r}\n")
+    write_curve(path, f"{defect} defect, {load} load, r{rate:g}_{noise}: size_deg, entry-to-exit "
+                "width (s)", f"the width at the resolved ones of {sizes_text(ERROR_SIZES)} deg, "
+                "x t(0.975, runs) / 1.96", err, "--width-model-error", best)
     return path, best, err
 
 
