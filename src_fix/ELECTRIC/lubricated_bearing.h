@@ -86,11 +86,12 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // The per-contact physics: the record `out` (fresh) of ball i's contact with race `side`; g_ball
-  // is the ball's dry (metallic) conductance between its two races; `film` gets a pressed contact's
-  // admittance (what film breakdown needs).
-  void contact(int i, int side, double g_ball, ohmdem::lubrication::ContactAdmittance &film,
-               LubricatedContact &out);
+  // Ball i's contact with race `side` into the record `out` (fresh): the gap's capacitance to a
+  // race the ball does not press, else `loaded` and the contact's inputs into the race's batch
+  // (g_ball: the ball's dry, metallic conductance between its two races).
+  void collect(int i, int side, double g_ball, LubricatedContact &out);
+  // A pressed contact's record from its admittance.
+  void fill(const ohmdem::lubrication::ContactAdmittance &c, LubricatedContact &out) const;
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
   // field times its gap conducts through its metal (doc/lubricated_contact.md).
   void break_down(LubricatedContact pair[2],
@@ -108,7 +109,9 @@ class LubricatedBearing : protected Pointers {
   RaceMotion motion_[2];  // this step's, set by evaluate()
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
-  ohmdem::lubrication::ContactAdmittance films_[2];  // scratch of evaluate()
+  // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
+  ohmdem::lubrication::ContactBatch batch_[2];
+  std::vector<ohmdem::lubrication::ContactAdmittance> films_[2];
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;

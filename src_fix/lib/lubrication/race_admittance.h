@@ -11,10 +11,32 @@
 #define OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
 
 #include <array>
+#include <cstddef>
+#include <vector>
 
 #include "lubrication/contact_admittance.h"
 
 namespace ohmdem::lubrication {
+
+// The inputs of a race's loaded contacts, one array per input (RaceAdmittance::contacts).
+struct ContactBatch {
+  std::vector<double> fn, speed, g_dry, recess;
+  std::size_t size() const { return fn.size(); }
+  void clear()
+  {
+    fn.clear();
+    speed.clear();
+    g_dry.clear();
+    recess.clear();
+  }
+  void add(double f, double u, double g, double r)
+  {
+    fn.push_back(f);
+    speed.push_back(u);
+    g_dry.push_back(g);
+    recess.push_back(r);
+  }
+};
 
 // A race's constants for one run.
 struct RaceInput {
@@ -44,10 +66,17 @@ class RaceAdmittance {
     contact(fn, speed, g_dry, recess, c);
     return c;
   }
+  // The batch's contacts into out[0..size), four at a time (race_admittance_batch.cpp):
+  // out[k] is contact(fn[k], speed[k], g_dry[k], recess[k]) bit for bit, whatever its place
+  // in the batch and the batch's size. Compiled for SSE2 and AVX2, the best the CPU has taken
+  // unless `isa` asks for SSE2 (the tests compare both).
+  enum class Isa { best, sse2 };
+  void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
 
  private:
+  friend struct RaceLanes;  // the batched form's lanes (race_admittance_batch.cpp)
   RaceInput in_;
   double central_ = 0, minimum_ = 0;  // Hamrock-Dowson prefactor times ellipticity factor
   double ell_central_ = 0, ell_minimum_ = 0;
