@@ -75,7 +75,9 @@ OHMDEM_LANES_INLINE v4d log(v4d x)
   }
   const v4d s = (m - c) / (m + c), z = s * s;
   const v4d series = 2.0 * s + 2.0 * s * z * (1.0 / 3 + z * (1.0 / 5 + z * (1.0 / 7)));
-  const v4d kd = __builtin_convertvector(k, v4d);
+  // double(k) through the bits of 1.5 2^52 + k (exact for |k| < 2^51; no vector conversion
+  // from int64 below AVX-512).
+  const v4d kd = (v4d)(k + (v4i)splat(0x1.8p52)) - 0x1.8p52;
   return kd * d::kLn2Hi + (lc + (series + kd * d::kLn2Lo));
 }
 

@@ -18,24 +18,34 @@
 
 namespace ohmdem::lubrication {
 
-// The inputs of a race's loaded contacts, one array per input (RaceAdmittance::contacts).
-struct ContactBatch {
-  std::vector<double> fn, speed, g_dry, recess;
-  std::size_t size() const { return fn.size(); }
-  void clear()
+// The inputs of a race's loaded contacts, one array per input (RaceAdmittance::contacts). The
+// arrays keep their size between steps: one capacity test per contact.
+class ContactBatch {
+ public:
+  std::size_t size() const { return n_; }
+  void clear() { n_ = 0; }
+  void add(double fn, double speed, double g_dry, double recess)
   {
-    fn.clear();
-    speed.clear();
-    g_dry.clear();
-    recess.clear();
+    if (n_ == fn_.size()) grow();
+    fn_[n_] = fn;
+    speed_[n_] = speed;
+    g_dry_[n_] = g_dry;
+    recess_[n_] = recess;
+    ++n_;
   }
-  void add(double f, double u, double g, double r)
+  const double *fn() const { return fn_.data(); }
+  const double *speed() const { return speed_.data(); }
+  const double *g_dry() const { return g_dry_.data(); }
+  const double *recess() const { return recess_.data(); }
+
+ private:
+  void grow()
   {
-    fn.push_back(f);
-    speed.push_back(u);
-    g_dry.push_back(g);
-    recess.push_back(r);
+    const std::size_t size = 2 * fn_.size() + 16;
+    for (std::vector<double> *v : {&fn_, &speed_, &g_dry_, &recess_}) v->resize(size);
   }
+  std::vector<double> fn_, speed_, g_dry_, recess_;
+  std::size_t n_ = 0;
 };
 
 // A race's constants for one run.

@@ -214,14 +214,23 @@ struct RaceLanes {
   {
     const std::size_t n = in.size();
     for (std::size_t i = 0; i < n; i += kLanes) {
-      // Padding: a loaded, rolling contact (its record is dropped).
-      v4d fn = splat(1.0), speed = splat(1.0), g_dry = splat(0.0), recess = splat(0.0);
       const int m = n - i < kLanes ? static_cast<int>(n - i) : kLanes;
-      for (int l = 0; l < m; ++l) {
-        fn[l] = in.fn[i + l];
-        speed[l] = in.speed[i + l];
-        g_dry[l] = in.g_dry[i + l];
-        recess[l] = in.recess[i + l];
+      v4d fn, speed, g_dry, recess;
+      if (m == kLanes) {
+        __builtin_memcpy(&fn, in.fn() + i, sizeof fn);
+        __builtin_memcpy(&speed, in.speed() + i, sizeof speed);
+        __builtin_memcpy(&g_dry, in.g_dry() + i, sizeof g_dry);
+        __builtin_memcpy(&recess, in.recess() + i, sizeof recess);
+      } else {
+        // Padding: a loaded, rolling contact (its record is dropped).
+        fn = speed = splat(1.0);
+        g_dry = recess = splat(0.0);
+        for (int l = 0; l < m; ++l) {
+          fn[l] = in.fn()[i + l];
+          speed[l] = in.speed()[i + l];
+          g_dry[l] = in.g_dry()[i + l];
+          recess[l] = in.recess()[i + l];
+        }
       }
       four(r, fn, speed, g_dry, recess, m, out + i);
     }
