@@ -257,17 +257,24 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     const auto sum = ohmdem::ordered_sum<2>(gather_.gather(balls_, world));
     y_bearing = {sum[0], sum[1]};
   }
-  double mins[3] = {hmin[0], hmin[1], lambda_min}, all[3];
-  MPI_Allreduce(mins, all, 3, MPI_DOUBLE, MPI_MIN, world);
+  local_min_[0] = hmin[0];
+  local_min_[1] = hmin[1];
+  local_min_[2] = lambda_min;
   const lub::Impedance z = lub::impedance(y_bearing, omega());
   out.z_abs = z.z_abs;
   out.z_phase = z.z_phase;
   out.c_parallel = z.c_parallel;
   out.r_parallel = z.r_parallel;
-  out.hmin_inner = all[0];
-  out.hmin_outer = all[1];
-  out.lambda_min = all[2];
   out.v_high = y_bearing == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
                                                            : context.current / y_bearing;
   return out;
+}
+
+void LubricatedBearing::minima(LubricatedResult &out) const
+{
+  double all[3];
+  MPI_Allreduce(local_min_, all, 3, MPI_DOUBLE, MPI_MIN, world);
+  out.hmin_inner = all[0];
+  out.hmin_outer = all[1];
+  out.lambda_min = all[2];
 }

@@ -79,6 +79,9 @@ class LubricatedBearing : protected Pointers {
   // conductance of this step per local atom (NaN where it has none), or null.
   LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
                             const double *g_dry = nullptr);
+  // Collective: the last evaluation's smallest films and lambda over all processes (outputs
+  // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
+  void minima(LubricatedResult &out) const;
   // This process's records of the last evaluation (two per ball, high race first).
   const std::vector<LubricatedContact> &contacts() const { return contacts_; }
   const LubricatedNetwork &network() const { return *network_; }
@@ -107,6 +110,7 @@ class LubricatedBearing : protected Pointers {
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
   RaceMotion motion_[2];  // this step's, set by evaluate()
+  double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
   // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
