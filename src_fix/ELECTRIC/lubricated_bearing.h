@@ -109,7 +109,7 @@ class LubricatedBearing : protected Pointers {
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
-  RaceMotion motion_[2];  // this step's, set by evaluate()
+  RaceMotion motion_[2];             // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};

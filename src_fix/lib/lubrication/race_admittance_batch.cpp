@@ -135,7 +135,8 @@ struct RaceLanes {
     const v4i near = (z < 0.25) & (z > -0.25);
     v4d power_min = central_power * exp_small(z);
     if (!lanes::all(near))
-      power_min = select(near, power_min, lanes::exp(select(near, splat(0.0), 0.68 * ls - 0.073 * lw)));
+      power_min =
+          select(near, power_min, lanes::exp(select(near, splat(0.0), 0.68 * ls - 0.073 * lw)));
     const v4d minimum = select(go, r.minimum_ * power_min * r.ell_minimum_, splat(0.0));
     const v4d lambda = minimum * r.inv_sigma_;
     const v4d gap = minimum + recess;
@@ -150,8 +151,7 @@ struct RaceLanes {
     v4i negligible = big & 0;
     if (lanes::any(big)) {
       // min(floor(v), 1000) as floor(min(v, 1000)), the floor through 2^52 (0 <= v <= 1000).
-      const v4d v =
-          lanes::min(xm * xm * (1.4426950408889634 * (1.0 - 1e-12)), splat(1000.0));
+      const v4d v = lanes::min(xm * xm * (1.4426950408889634 * (1.0 - 1e-12)), splat(1000.0));
       const v4d shifted = v + 0x1p52;
       const v4i k = ((v4i)shifted - (v4i)splat(0x1p52)) + ((shifted - 0x1p52) > v);
       const v4d cheap = 0.1 * (v4d)((v4u)(1023 - k) << 52);  // 0.1 pow2_neg(k)
@@ -185,8 +185,7 @@ struct RaceLanes {
     const v4i wet = (r_wet > a) & (r_wet > b) & (a > 0.0) & (b > 0.0);
     const Forms outer = form_mean(lanes::sqrt(h0 * r.p_ + r.r2_), lanes::sqrt(h0 * r.q_ + r.r2_));
     const v4d inv_cb = 1.0 / cb, sp = r.sp_coef_ * inv_cb, sq = r.sq_coef_ * inv_cb;
-    const Forms inner =
-        form_mean(lanes::sqrt(h0 * sp * sp + 1.0), lanes::sqrt(h0 * sq * sq + 1.0));
+    const Forms inner = form_mean(lanes::sqrt(h0 * sp * sp + 1.0), lanes::sqrt(h0 * sq * sq + 1.0));
     const v4d x = outer.s * r.hertz_s_ * inv_cb / inner.s, y = outer.y * r.hertz_y_ / inner.y;
     const v4d c_outer = r.scale_ * (2.0 * log_where(wet, x) + aliasing(wet, y));
     for (int l = 0; l < m; ++l) {
@@ -239,8 +238,7 @@ struct RaceLanes {
 
 namespace {
 
-__attribute__((target("avx2"))) void contacts_avx2(const RaceAdmittance &r,
-                                                   const ContactBatch &in,
+__attribute__((target("avx2"))) void contacts_avx2(const RaceAdmittance &r, const ContactBatch &in,
                                                    ContactAdmittance *out)
 {
   RaceLanes::run(r, in, out);
