@@ -4,8 +4,9 @@
 // is that function's bit for bit (the bench's deck gives the same numbers as the scalar path,
 // with any number of processes). The scalar function's branches are masks; a lane that would
 // take one of its rare branches (inputs outside the inline functions' ranges, erfc below 0.5,
-// the wetted circle not holding the ellipse) is redone by the scalar code, alone. The last
-// group is padded with a plain contact that is computed and dropped. The body is compiled
+// the wetted circle not holding the ellipse) is redone by the scalar code, alone. A last group
+// of one contact goes to the scalar code too (cheaper than four lanes); one of two or three is
+// padded with a plain contact that is computed and dropped. The body is compiled
 // twice, for SSE2 and AVX2, chosen at run time: the same bits (no FMA: the file is built
 // with -ffp-contract=off).
 #include <cmath>
@@ -214,6 +215,10 @@ struct RaceLanes {
     const std::size_t n = in.size();
     for (std::size_t i = 0; i < n; i += kLanes) {
       const int m = n - i < kLanes ? static_cast<int>(n - i) : kLanes;
+      if (m == 1) {  // one contact: the scalar code (its bits; ~600 instructions, a group ~1100)
+        r.contact(in.fn()[i], in.speed()[i], in.g_dry()[i], in.recess()[i], out[i]);
+        continue;
+      }
       v4d fn, speed, g_dry, recess;
       if (m == kLanes) {
         __builtin_memcpy(&fn, in.fn() + i, sizeof fn);
