@@ -340,6 +340,7 @@ void ComputeNetworkResistance::evaluate()
   }
   report(r);
   const bool due = exports_->due(update->ntimestep);
+  minima_step_ = -1;
   if (lubricated_)
     lube_result_ = lubricated_->evaluate(
         context_, due,
@@ -409,6 +410,10 @@ void ComputeNetworkResistance::compute_vector()
   evaluate();
   std::copy(result_, result_ + kVectorSize, vector);
   if (lubricated_) {
+    if (minima_step_ != update->ntimestep) {
+      lubricated_->minima(lube_result_);  // collective, as compute_vector is
+      minima_step_ = update->ntimestep;
+    }
     const LubricatedResult &l = lube_result_;
     const double extra[LubricatedResult::kSize] = {
         l.z_abs, l.z_phase, l.c_parallel, l.r_parallel, l.hmin_inner, l.hmin_outer, l.lambda_min};

@@ -85,6 +85,7 @@ class ComputeNetworkResistance : public Compute {
   void define_lubricant_variables();
 
   bigint evaluated_step_ = -1;
+  bigint minima_step_ = -1;  // step whose lube_result_ holds the reduced minima
   double result_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
   bool had_path_ = false;           // a conducting path existed at some evaluation

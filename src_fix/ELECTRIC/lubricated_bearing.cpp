@@ -132,11 +132,10 @@ double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context,
   return dry_.conductance(atom->type[i], gamma, r, f0, f1, u, w);
 }
 
-// The per-contact physics, one contact at a time: a pressed contact's film and admittance
-// (its metallic part is half the ball's dry path: 2 g_ball, the two in series give g_ball),
-// or the capacitance of the gap to a race the ball does not press.
-void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmittance &film,
-                                LubricatedContact &out)
+// A pressed contact's inputs go to its race's batch (its metallic part is half the ball's dry
+// path: 2 g_ball, the two in series give g_ball); a race the ball does not press gets the
+// capacitance of the gap to it.
+void LubricatedBearing::collect(int i, int side, double g_ball, LubricatedContact &out)
 {
   const FixBearingRace &race = *race_[side];
   const ohmdem::RaceContactView view = race.contact_of(i);
@@ -152,14 +151,16 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
     out.lambda = gap / settings_.roughness;
     return;
   }
-  const double speed =
-      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]);
-  film_[side].contact(view.fn(), speed,
-                      view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                      race.recess_of(i),                     // over a pit the gap grows
-                      film);                                 // in place: no copy
-  const lub::ContactAdmittance &c = film;
   out.loaded = true;
+  batch_[side].add(
+      view.fn(),
+      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]),
+      view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+      race.recess_of(i));                    // over a pit the gap grows
+}
+
+void LubricatedBearing::fill(const lub::ContactAdmittance &c, LubricatedContact &out) const
+{
   out.y = c.y(omega());
   out.h_central = c.film.central;
   out.h_min = c.film.minimum;
@@ -198,27 +199,44 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     RaceMotion &m = motion_[side];
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
+    batch_[side].clear();
   }
+  // The records, and per race its pressed contacts' inputs ...
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
     // The closed form's conductance of this step where it has one (NaN: it has none).
     const double g_ball =
         g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
-    // The films of the ball's pressed contacts (break_down reads only those): kept between
-    // balls rather than zeroed for each.
-    lub::ContactAdmittance *const film = films_;
+    for (int side = 0; side < 2; ++side) collect(i, side, g_ball, contacts_.emplace_back());
+  }
+  // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
+  for (int side = 0; side < 2; ++side) {
+    films_[side].resize(batch_[side].size());
+    film_[side].contacts(batch_[side], films_[side].data());
+  }
+  // ... and the balls: each its two contacts in series.
+  std::size_t next[2] = {0, 0};  // the next pressed contact of each race
+  for (std::size_t n = 0; n < contacts_.size(); n += 2) {
+    LubricatedContact *const pair = &contacts_[n];
+    const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
     for (int side = 0; side < 2; ++side) {
-      LubricatedContact &c = contacts_.emplace_back();
-      contact(i, side, g_ball, film[side], c);
+      LubricatedContact &c = pair[side];
       if (!c.loaded) continue;
+      film[side] = &films_[side][next[side]++];
+      fill(*film[side], c);
       const int k = inner_[side];
       hmin[k] = std::min(hmin[k], c.h_min);
       lambda_min = std::min(lambda_min, c.lambda);
     }
-    const std::size_t n = contacts_.size();
-    if (settings_.breakdown > 0.0) break_down(&contacts_[n - 2], film);
-    const std::complex<double> ball = lub::series(contacts_[n - 2].y, contacts_[n - 1].y);
-    balls_.push_back({contacts_[n - 2].tag, {ball.real(), ball.imag()}});
+    if (settings_.breakdown > 0.0) {
+      // break_down_ball reads the films of the pressed contacts only.
+      lub::ContactAdmittance both[2];
+      for (int side = 0; side < 2; ++side)
+        if (film[side]) both[side] = *film[side];
+      break_down(pair, both);
+    }
+    const std::complex<double> ball = lub::series(pair[0].y, pair[1].y);
+    balls_.push_back({pair[0].tag, {ball.real(), ball.imag()}});
   }
   LubricatedResult out;
   std::complex<double> y_bearing;
@@ -239,17 +257,24 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     const auto sum = ohmdem::ordered_sum<2>(gather_.gather(balls_, world));
     y_bearing = {sum[0], sum[1]};
   }
-  double mins[3] = {hmin[0], hmin[1], lambda_min}, all[3];
-  MPI_Allreduce(mins, all, 3, MPI_DOUBLE, MPI_MIN, world);
+  local_min_[0] = hmin[0];
+  local_min_[1] = hmin[1];
+  local_min_[2] = lambda_min;
   const lub::Impedance z = lub::impedance(y_bearing, omega());
   out.z_abs = z.z_abs;
   out.z_phase = z.z_phase;
   out.c_parallel = z.c_parallel;
   out.r_parallel = z.r_parallel;
-  out.hmin_inner = all[0];
-  out.hmin_outer = all[1];
-  out.lambda_min = all[2];
   out.v_high = y_bearing == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
                                                            : context.current / y_bearing;
   return out;
+}
+
+void LubricatedBearing::minima(LubricatedResult &out) const
+{
+  double all[3];
+  MPI_Allreduce(local_min_, all, 3, MPI_DOUBLE, MPI_MIN, world);
+  out.hmin_inner = all[0];
+  out.hmin_outer = all[1];
+  out.lambda_min = all[2];
 }

@@ -79,6 +79,9 @@ class LubricatedBearing : protected Pointers {
   // conductance of this step per local atom (NaN where it has none), or null.
   LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
                             const double *g_dry = nullptr);
+  // Collective: the last evaluation's smallest films and lambda over all processes (outputs
+  // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
+  void minima(LubricatedResult &out) const;
   // This process's records of the last evaluation (two per ball, high race first).
   const std::vector<LubricatedContact> &contacts() const { return contacts_; }
   const LubricatedNetwork &network() const { return *network_; }
@@ -86,11 +89,12 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // The per-contact physics: the record `out` (fresh) of ball i's contact with race `side`; g_ball
-  // is the ball's dry (metallic) conductance between its two races; `film` gets a pressed contact's
-  // admittance (what film breakdown needs).
-  void contact(int i, int side, double g_ball, ohmdem::lubrication::ContactAdmittance &film,
-               LubricatedContact &out);
+  // Ball i's contact with race `side` into the record `out` (fresh): the gap's capacitance to a
+  // race the ball does not press, else `loaded` and the contact's inputs into the race's batch
+  // (g_ball: the ball's dry, metallic conductance between its two races).
+  void collect(int i, int side, double g_ball, LubricatedContact &out);
+  // A pressed contact's record from its admittance.
+  void fill(const ohmdem::lubrication::ContactAdmittance &c, LubricatedContact &out) const;
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
   // field times its gap conducts through its metal (doc/lubricated_contact.md).
   void break_down(LubricatedContact pair[2],
@@ -105,10 +109,13 @@ class LubricatedBearing : protected Pointers {
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
-  RaceMotion motion_[2];  // this step's, set by evaluate()
+  RaceMotion motion_[2];             // this step's, set by evaluate()
+  double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
-  ohmdem::lubrication::ContactAdmittance films_[2];  // scratch of evaluate()
+  // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
+  ohmdem::lubrication::ContactBatch batch_[2];
+  std::vector<ohmdem::lubrication::ContactAdmittance> films_[2];
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;

@@ -223,15 +223,6 @@ double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, doub
   return gap_capacitance(GapGeometry{std::max(gap, sigma), rx, ry, 0.0, 0.0, r_wet}, eps_r);
 }
 
-std::complex<double> series(std::complex<double> y1, std::complex<double> y2)
-{
-  const std::complex<double> s = y1 + y2;
-  if (s == 0.0) return 0.0;
-  // y1 y2 conj(s) / |s|^2: libgcc's general complex division (__divdc3) guards against
-  // overflows that admittances of pF and S cannot reach.
-  return y1 * y2 * std::conj(s) / std::norm(s);
-}
-
 Impedance impedance(std::complex<double> y, double omega)
 {
   Impedance z;

@@ -94,8 +94,19 @@ int break_down_ball(std::complex<double> y[2], const ContactAdmittance c[2], con
 double idle_gap_capacitance(double gap, double rx, double ry, double r_wet, double eps_r,
                             double sigma);
 
-// y1 y2 / (y1 + y2); 0 when both are 0.
-std::complex<double> series(std::complex<double> y1, std::complex<double> y2);
+// y1 y2 / (y1 + y2); 0 when both are 0. Inline and in real arithmetic: the bearing takes one per
+// ball and step. The operations, in order, of y1 y2 conj(s) / |s|^2 in std::complex (so the same
+// bits) without its products' NaN tests; libgcc's general division (__divdc3) guards against
+// overflows that admittances of pF and S cannot reach.
+inline std::complex<double> series(std::complex<double> y1, std::complex<double> y2)
+{
+  const double sr = y1.real() + y2.real(), si = y1.imag() + y2.imag();
+  if (sr == 0.0 && si == 0.0) return 0.0;
+  const double pr = y1.real() * y2.real() - y1.imag() * y2.imag();
+  const double pi = y1.real() * y2.imag() + y1.imag() * y2.real();
+  const double n = sr * sr + si * si;
+  return {(pr * sr - pi * -si) / n, (pr * -si + pi * sr) / n};
+}
 
 // The bearing's impedance from its admittance Y at omega > 0.
 struct Impedance {

@@ -11,10 +11,42 @@
 #define OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
 
 #include <array>
+#include <cstddef>
+#include <vector>
 
 #include "lubrication/contact_admittance.h"
 
 namespace ohmdem::lubrication {
+
+// The inputs of a race's loaded contacts, one array per input (RaceAdmittance::contacts). The
+// arrays keep their size between steps: one capacity test per contact.
+class ContactBatch {
+ public:
+  std::size_t size() const { return n_; }
+  void clear() { n_ = 0; }
+  void add(double fn, double speed, double g_dry, double recess)
+  {
+    if (n_ == fn_.size()) grow();
+    fn_[n_] = fn;
+    speed_[n_] = speed;
+    g_dry_[n_] = g_dry;
+    recess_[n_] = recess;
+    ++n_;
+  }
+  const double *fn() const { return fn_.data(); }
+  const double *speed() const { return speed_.data(); }
+  const double *g_dry() const { return g_dry_.data(); }
+  const double *recess() const { return recess_.data(); }
+
+ private:
+  void grow()
+  {
+    const std::size_t size = 2 * fn_.size() + 16;
+    for (std::vector<double> *v : {&fn_, &speed_, &g_dry_, &recess_}) v->resize(size);
+  }
+  std::vector<double> fn_, speed_, g_dry_, recess_;
+  std::size_t n_ = 0;
+};
 
 // A race's constants for one run.
 struct RaceInput {
@@ -44,10 +76,17 @@ class RaceAdmittance {
     contact(fn, speed, g_dry, recess, c);
     return c;
   }
+  // The batch's contacts into out[0..size), four at a time (race_admittance_batch.cpp):
+  // out[k] is contact(fn[k], speed[k], g_dry[k], recess[k]) bit for bit, whatever its place
+  // in the batch and the batch's size. Compiled for SSE2 and AVX2, the best the CPU has taken
+  // unless `isa` asks for SSE2 (the tests compare both).
+  enum class Isa { best, sse2 };
+  void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
 
  private:
+  friend struct RaceLanes;  // the batched form's lanes (race_admittance_batch.cpp)
   RaceInput in_;
   double central_ = 0, minimum_ = 0;  // Hamrock-Dowson prefactor times ellipticity factor
   double ell_central_ = 0, ell_minimum_ = 0;

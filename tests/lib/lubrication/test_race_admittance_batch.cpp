@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// RaceAdmittance::contacts (src_fix/lib/lubrication/race_admittance_batch.cpp), the batched
+// form the bearing evaluates at every step: each contact's record must be RaceAdmittance::contact's
+// bit for bit (the scalar path, itself held to the budget against contact_admittance() by
+// test_race_admittance.cpp), whatever its lane, its batch's size and its neighbours, in both
+// compiled forms (SSE2, AVX2); and within the accuracy budget of doc/lubricated_contact.md
+// "Speed" (1e-10 relative on h, C and G; held here to 1e-12) against contact_admittance(), the
+// reference.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "lubrication/contact_admittance.h"
+#include "lubrication/race_admittance.h"
+#include "race_cases.h"
+
+using namespace ohmdem::lubrication;
+using namespace ohmdem::lubrication::test;
+
+namespace {
+
+struct Case {
+  double fn, speed, g_dry, recess;
+};
+
+// Nine doubles, no padding: the record compared in all its bits.
+bool same_bits(const ContactAdmittance &a, const ContactAdmittance &b)
+{
+  static_assert(sizeof(ContactAdmittance) == 9 * sizeof(double), "a record is nine doubles");
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+std::vector<ContactAdmittance> batched(const RaceAdmittance &race, const std::vector<Case> &cases,
+                                       RaceAdmittance::Isa isa = RaceAdmittance::Isa::best)
+{
+  ContactBatch in;
+  for (const Case &c : cases) in.add(c.fn, c.speed, c.g_dry, c.recess);
+  std::vector<ContactAdmittance> out(cases.size());
+  race.contacts(in, out.data(), isa);
+  return out;
+}
+
+// The inputs where the scalar code branches, each in a batch with ordinary contacts.
+std::vector<Case> edge_cases()
+{
+  return {
+      {320.0, 5.0, 1.0, 0.0},     // ordinary: lambda ~10, erfc's bounds
+      {320.0, 0.05, 1.0, 0.0},    // lambda in erfc's range (x 0.5 to 6)
+      {320.0, 1e-6, 1.0, 0.0},    // lambda << 1: erfc below x = 0.5 (the scalar lane)
+      {320.0, 0.0, 1.0, 0.0},     // no entrainment: the dry contact, f = 1
+      {320.0, 0.0, 1.0, 2e-7},    // no entrainment over a pit
+      {320.0, 5.0, 0.0, 0.0},     // a defect zone: no metal
+      {320.0, 5.0, 1.0, 3e-7},    // over a pit, x in erfc's range
+      {320.0, 5.0, 1.0, 1e-5},    // over a deep pit
+      {320.0, 5.0, 1e300, 1e-5},  // the bound needed beyond the exponential's range
+      {0.0, 5.0, 1.0, 0.0},       // no force (the scalar lane: cbrt's range)
+      {-1.0, 5.0, 1.0, 0.0},      // negative force (the scalar lane)
+      {1e-20, 5.0, 1.0, 0.0},     // |z| >= 0.25: h_min through its own exponential
+      {320.0, 1e-310, 1.0, 0.0},  // subnormal speed (the scalar lane: log's range)
+      {3e3, 50.0, 10.0, 0.0},     // fast and heavy
+      {0.1, 1e-4, 1e-3, 0.0},     // light and slow
+  };
+}
+
+}  // namespace
+
+// 3000 races, batches of 1 to 13 contacts (the 6208 has 9 balls; a process may hold any number),
+// the distributions of test_race_admittance.cpp.
+TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
+{
+  std::mt19937_64 rng(2025);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto logu = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
+  double worst[5] = {0, 0, 0, 0, 0};  // h_c, h_min, c_hertz, c_outer, g
+  int contacts = 0, differ = 0, erfc_range = 0, recessed = 0, beyond = 0;
+  for (int n = 0; n < 3000; ++n) {
+    const RaceInput r = race(n, logu(2e-4, 5e-3));
+    const RaceAdmittance fast(r);
+    std::vector<Case> cases(1 + n % 13);
+    for (Case &c : cases) {
+      c.fn = logu(0.1, 3e3);
+      c.speed = u01(rng) < 0.02 ? 0.0 : logu(1e-4, 50.0);
+      c.g_dry = u01(rng) < 0.15 ? 0.0 : logu(1e-3, 10.0);
+      c.recess = u01(rng) < 0.33 ? logu(1e-8, 1e-5) : 0.0;
+    }
+    for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+      const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+        const Case &c = cases[k];
+        differ += !same_bits(out[k], fast.contact(c.fn, c.speed, c.g_dry, c.recess));
+        if (isa == RaceAdmittance::Isa::sse2) continue;
+        ++contacts;
+        const ContactAdmittance &a = out[k];
+        const ContactInput in = input(r, c.fn, c.speed, c.g_dry, c.recess);
+        const ContactAdmittance b = contact_admittance(in);
+        worst[0] = std::fmax(worst[0], rel(a.film.central, b.film.central));
+        worst[1] = std::fmax(worst[1], rel(a.film.minimum, b.film.minimum));
+        worst[2] = std::fmax(worst[2], rel(a.c_hertz, b.c_hertz));
+        worst[3] = std::fmax(worst[3], rel(a.c_outer, b.c_outer));
+        worst[4] = std::fmax(worst[4], rel(a.g, b.g));
+        const double x = a.gap / (r.sigma * std::sqrt(2.0));
+        erfc_range += x > 0.5 && x < 6.0;
+        recessed += c.recess > 0.0;
+        beyond += !(r.r_wet > in.a && r.r_wet > in.b);
+      }
+    }
+  }
+  std::printf(
+      "%d contacts: %d records differ from the scalar path; worst relative differences against "
+      "contact_admittance: h_c %.1e, h_min %.1e, C_hertz %.1e, C_outer %.1e, G %.1e; erfc's "
+      "range in %d, over pits %d, ellipses past the wetted circle %d\n",
+      contacts, differ, worst[0], worst[1], worst[2], worst[3], worst[4], erfc_range, recessed,
+      beyond);
+  EXPECT_EQ(differ, 0);
+  for (double w : worst) EXPECT_LT(w, 1e-12);
+  EXPECT_GT(contacts, 20000);
+  EXPECT_GT(erfc_range, 1000);
+  EXPECT_GT(recessed, 5000);
+  EXPECT_GT(beyond, 100);
+}
+
+// Every edge case in every lane of batches of 1 to 9 among other contacts (padding included):
+// the same bits as alone and as the scalar path; never NaN for a loaded contact.
+TEST(RaceAdmittanceBatch, AContactsRecordDoesNotDependOnItsLaneOrBatch)
+{
+  const std::vector<Case> edge = edge_cases();
+  for (const double r_wet : {1e-3, 1e-5}) {  // 1e-5: the wetted circle inside the ellipse
+    const RaceInput r = race(0, r_wet);
+    const RaceAdmittance fast(r);
+    for (std::size_t e = 0; e < edge.size(); ++e) {
+      const Case &c = edge[e];
+      const ContactAdmittance scalar = fast.contact(c.fn, c.speed, c.g_dry, c.recess);
+      if (c.fn > 0.0) {
+        EXPECT_FALSE(std::isnan(scalar.g) || std::isnan(scalar.capacitance())) << "case " << e;
+      }
+      for (std::size_t size = 1; size <= 9; ++size) {
+        for (std::size_t lane = 0; lane < size; ++lane) {
+          std::vector<Case> cases(size);
+          for (std::size_t k = 0; k < size; ++k) cases[k] = edge[(e + 1 + k) % edge.size()];
+          cases[lane] = c;
+          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+            const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
+            EXPECT_TRUE(same_bits(out[lane], scalar))
+                << "case " << e << " r_wet " << r_wet << " batch " << size << " lane " << lane;
+          }
+        }
+      }
+    }
+  }
+}
+
+// A process without loaded contacts on a race.
+TEST(RaceAdmittanceBatch, AnEmptyBatchWritesNothing)
+{
+  const RaceAdmittance fast(race(1, 1e-3));
+  ContactAdmittance sentinel;
+  sentinel.g = 42.0;
+  fast.contacts(ContactBatch{}, &sentinel);
+  EXPECT_EQ(sentinel.g, 42.0);
+}
