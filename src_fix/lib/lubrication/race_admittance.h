@@ -46,6 +46,7 @@ class RaceAdmittance {
   }
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
+  const RaceInput &input() const { return in_; }
 
  private:
   RaceInput in_;
