@@ -59,6 +59,10 @@ class FixBearingRace : public FixBearingBody {
     bool in_zone = false;
     return defects_.empty() ? 0.0 : defect_recess(i, defect_surface_, in_zone);
   }
+  // For the lubricated gap: the race pit whose zone comes within `reach` (m) of that contact
+  // (the first defect with one), and in `rest` the recess of the other defects under it (a
+  // ball's pit); false without such a pit, `rest` then recess_of(i).
+  bool pit_near(int i, double reach, ohmdem::PitView &pit, double &rest) const;
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return settings_.inner; }
   double groove() const { return settings_.groove; }  // groove radius (m)

@@ -18,6 +18,7 @@
 #include "common/constants.h"
 #include "error.h"
 #include "lubrication/contact_admittance.h"
+#include "lubrication/pit_contact.h"
 #include "lubrication/race_admittance.h"
 
 using namespace LAMMPS_NS;
@@ -143,21 +144,32 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
   const double *x = atom->x[i], *v = atom->v[i];
   out.tag = static_cast<std::int64_t>(atom->tag[i]);
   out.side = side;
+  // A race pit within the wetted circle is a strip across the raceway, x along the rolling
+  // direction from the contact (the pit's centre at -offset); other defects under the contact
+  // (a ball's pit) add their recess over the whole circle.
+  ohmdem::PitView pit;
+  double recess = 0.0;
+  const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
+  const lub::PitStrip strip{-pit.offset - 0.5 * pit.width, -pit.offset + 0.5 * pit.width,
+                            pit.depth, pit.ball_radius};
   if (!(view.fn() > 0.0)) {
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
-    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + race.recess_of(i);
-    out.c = film_[side].idle(gap);
+    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + recess;
+    out.c = near_pit ? lub::idle_over_pit(film_[side].input(), gap, strip) : film_[side].idle(gap);
     out.y = {0.0, omega() * out.c};
-    out.h_central = out.h_min = gap;
-    out.lambda = gap / settings_.roughness;
+    // The gap at the contact point (with the strip's recess there).
+    out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(strip, 0.0) : gap;
+    out.lambda = out.h_min / settings_.roughness;
     return;
   }
   const double speed =
       entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]);
   film_[side].contact(view.fn(), speed,
                       view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                      race.recess_of(i),                     // over a pit the gap grows
+                      recess,                                // over a pit the gap grows
                       film);                                 // in place: no copy
+  // The few contacts near a race pit: the Hertz zone and the gap over the strip.
+  if (near_pit) lub::contact_over_pit(film_[side].input(), view.fn(), recess, strip, film);
   const lub::ContactAdmittance &c = film;
   out.loaded = true;
   out.y = c.y(omega());

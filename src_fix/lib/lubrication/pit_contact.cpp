@@ -33,4 +33,10 @@ void contact_over_pit(const RaceInput &race, double fn, double rest, const PitSt
   c.c_outer = strip_gap_capacitance(gap, race.eps_r, strip);
 }
 
+double idle_over_pit(const RaceInput &race, double gap, const PitStrip &strip)
+{
+  const GapGeometry g{std::max(gap, race.sigma), race.rx, race.ry, 0.0, 0.0, race.r_wet};
+  return strip_gap_capacitance(g, race.eps_r, strip);
+}
+
 }  // namespace ohmdem::lubrication

@@ -24,6 +24,10 @@ namespace ohmdem::lubrication {
 void contact_over_pit(const RaceInput &race, double fn, double rest, const PitStrip &strip,
                       ContactAdmittance &c);
 
+// A ball that does not press the race, over or near its pit: idle_gap_capacitance's gap
+// (nothing excluded, h0 = max(gap, sigma); `gap` without the pit's recess) with the strip.
+double idle_over_pit(const RaceInput &race, double gap, const PitStrip &strip);
+
 }  // namespace ohmdem::lubrication
 
 #endif

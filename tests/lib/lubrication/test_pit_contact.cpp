@@ -5,6 +5,7 @@
 // fast path gave it; no NaN without entrainment.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lubrication/contact_admittance.h"
@@ -108,4 +109,21 @@ TEST(PitContact, AStripOverTheHertzZoneWidensItsFilmThere)
   EXPECT_LT(c.c_hertz, plain.c_hertz * hc / (hc + sag(0.21e-3 - b)));
   EXPECT_GT(c.c_hertz, plain.c_hertz * hc / (hc + sag(0.21e-3)));
   EXPECT_LT(c.c_outer, plain.c_outer);
+}
+
+TEST(PitContact, AnIdleGapOverAStrip)
+{
+  // Nothing excluded: a strip over the whole circle is idle_gap_capacitance at
+  // max(gap, sigma) + depth (the roughness floor is the nominal surface's, the pit adds to it,
+  // as for a loaded contact); a narrow one under the ball takes less off.
+  const RaceInput race = inner_race();
+  for (const double gap : {0.0, 2e-6, 50e-6}) {
+    const double whole = idle_gap_capacitance(std::max(gap, race.sigma) + 5e-6, race.rx, race.ry,
+                                              race.r_wet, race.eps_r, race.sigma);
+    EXPECT_NEAR(idle_over_pit(race, gap, PitStrip{-2e-3, 2e-3, 5e-6, 0.0}) / whole, 1.0, 1e-10);
+    const double none = idle_gap_capacitance(gap, race.rx, race.ry, race.r_wet, race.eps_r,
+                                             race.sigma);
+    const double narrow = idle_over_pit(race, gap, PitStrip{-0.21e-3, 0.21e-3, 5e-6, 6.3e-3});
+    EXPECT_TRUE(narrow < none && narrow > whole) << gap;
+  }
 }
