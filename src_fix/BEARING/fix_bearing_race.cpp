@@ -348,10 +348,8 @@ double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surfac
   return recess;
 }
 
-bool FixBearingRace::pit_near(int i, double reach, ohmdem::PitView &pit, double &rest) const
+bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const
 {
-  rest = 0.0;
-  if (defects_.empty()) return false;
   const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;  // as defect_recess
   bool found = false, in_zone = false;
   for (const auto *d : defects_) {

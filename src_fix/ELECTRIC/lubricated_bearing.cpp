@@ -150,8 +150,8 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
   ohmdem::PitView pit;
   double recess = 0.0;
   const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
-  const lub::PitStrip strip{-pit.offset - 0.5 * pit.width, -pit.offset + 0.5 * pit.width,
-                            pit.depth, pit.ball_radius};
+  const lub::PitStrip strip{-pit.offset - 0.5 * pit.width, -pit.offset + 0.5 * pit.width, pit.depth,
+                            pit.ball_radius};
   if (!(view.fn() > 0.0)) {
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
     const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + recess;

@@ -28,8 +28,8 @@ void contact_over_pit(const RaceInput &race, double fn, double rest, const PitSt
       c.g += hz.free_h / race.resistivity;
     }
   }
-  const GapGeometry gap{std::max(c.film.central, race.sigma) + rest, race.rx, race.ry, a, b,
-                        race.r_wet};
+  const GapGeometry gap{
+      std::max(c.film.central, race.sigma) + rest, race.rx, race.ry, a, b, race.r_wet};
   c.c_outer = strip_gap_capacitance(gap, race.eps_r, strip);
 }
 

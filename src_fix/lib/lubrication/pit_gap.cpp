@@ -153,7 +153,8 @@ double strip_gap_capacitance(const GapGeometry &g, double eps_r, const PitStrip 
   const auto change = [&](double xx) {
     const double r = strip_recess(p, xx);
     const double yc = std::sqrt(std::max(rw * rw - xx * xx, 0.0));
-    const double ye = ellipse && std::fabs(xx) < g.b ? g.a * std::sqrt(1.0 - xx * xx / (g.b * g.b)) : 0.0;
+    const double ye =
+        ellipse && std::fabs(xx) < g.b ? g.a * std::sqrt(1.0 - xx * xx / (g.b * g.b)) : 0.0;
     if (!(r > 0.0) || !(yc > ye)) return 0.0;
     const double a0 = g.h0 + xx * xx * inv_2rx;
     return chord(a0 + r, yc, ye) - chord(a0, yc, ye);
@@ -206,7 +207,8 @@ HertzOverPit hertz_over_pit(const HertzFilm &film, const PitStrip &p)
   };
   const Breaks x = breaks(p, lo, hi, nullptr, 0);
   const double ta = asin_clamped(lo / b), tb = asin_clamped(hi / b);
-  const double over = a * b * ((tb + std::sin(tb) * std::cos(tb)) - (ta + std::sin(ta) * std::cos(ta)));
+  const double over =
+      a * b * ((tb + std::sin(tb) * std::cos(tb)) - (ta + std::sin(ta) * std::cos(ta)));
   outside(area - over);
   const double h_ref = film.h_c + p.depth;  // the scale of 1/h for the tolerance
   Vec<2> sum{};

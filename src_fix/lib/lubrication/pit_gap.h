@@ -16,9 +16,9 @@ namespace ohmdem::lubrication {
 // where a ball of radius R reaches it, its sag near the edges), 0 outside. edge_radius = 0:
 // a flat floor, r = depth across the strip.
 struct PitStrip {
-  double x1 = 0, x2 = 0;    // edges (m), x1 < x2
-  double depth = 0;         // floor depth (m), >= 0
-  double edge_radius = 0;   // radius of the ball that rounds the profile (m); 0: flat floor
+  double x1 = 0, x2 = 0;   // edges (m), x1 < x2
+  double depth = 0;        // floor depth (m), >= 0
+  double edge_radius = 0;  // radius of the ball that rounds the profile (m); 0: flat floor
 };
 // r(x) (m).
 double strip_recess(const PitStrip &p, double x);
@@ -46,8 +46,8 @@ struct HertzFilm {
   double a = 0, b = 0;        // semi-axes (m): a across, b along x
 };
 struct HertzOverPit {
-  double metallic = 0;  // area mean of the metallic fraction over the ellipse
-  double free_h = 0;    // int (1 - f) / h dA over the ellipse (m): C = eps0 eps C, G = it / rho
+  double metallic = 0;    // area mean of the metallic fraction over the ellipse
+  double free_h = 0;      // int (1 - f) / h dA over the ellipse (m): C = eps0 eps C, G = it / rho
   double min_recess = 0;  // smallest r(x) over the ellipse (0 when it reaches past the strip)
 };
 HertzOverPit hertz_over_pit(const HertzFilm &film, const PitStrip &p);

@@ -64,8 +64,10 @@ TEST(PitContact, StripOverTheWholeCircleIsTheRecessOverTheWholeCircle)
       contact_over_pit(race, fn, 0.0, PitStrip{-2e-3, 2e-3, depth, 0.0}, c);
       const ContactAdmittance want = contact_admittance(reference(race, fn, speed, g_dry, depth));
       EXPECT_NEAR(c.c_outer / want.c_outer, 1.0, 1e-10) << speed << " " << depth;
-      if (want.c_hertz > 0.0) EXPECT_NEAR(c.c_hertz / want.c_hertz, 1.0, 1e-10);
-      else EXPECT_EQ(c.c_hertz, 0.0);
+      if (want.c_hertz > 0.0)
+        EXPECT_NEAR(c.c_hertz / want.c_hertz, 1.0, 1e-10);
+      else
+        EXPECT_EQ(c.c_hertz, 0.0);
       EXPECT_NEAR(c.metallic, want.metallic, 1e-12);
       EXPECT_NEAR(c.gap, want.gap, 1e-18);
       EXPECT_TRUE(std::isfinite(c.g) && std::isfinite(c.c_hertz));
@@ -121,8 +123,8 @@ TEST(PitContact, AnIdleGapOverAStrip)
     const double whole = idle_gap_capacitance(std::max(gap, race.sigma) + 5e-6, race.rx, race.ry,
                                               race.r_wet, race.eps_r, race.sigma);
     EXPECT_NEAR(idle_over_pit(race, gap, PitStrip{-2e-3, 2e-3, 5e-6, 0.0}) / whole, 1.0, 1e-10);
-    const double none = idle_gap_capacitance(gap, race.rx, race.ry, race.r_wet, race.eps_r,
-                                             race.sigma);
+    const double none =
+        idle_gap_capacitance(gap, race.rx, race.ry, race.r_wet, race.eps_r, race.sigma);
     const double narrow = idle_over_pit(race, gap, PitStrip{-0.21e-3, 0.21e-3, 5e-6, 6.3e-3});
     EXPECT_TRUE(narrow < none && narrow > whole) << gap;
   }

@@ -121,8 +121,8 @@ TEST(PitGap, StripOverTheWholeCircleIsTheGapPlusTheDepth)
 {
   // Flat, and rounded by the ball but reaching the floor everywhere inside the circle (the
   // edges 5 mm away, sag there > 5 um): both are the closed form at h0 + depth.
-  for (const GapGeometry &g : {inner_contact(), inner_contact(1e-7),
-                               GapGeometry{2e-6, 3e-3, 3e-3, 0.0, 0.0, 1.26e-3}}) {
+  for (const GapGeometry &g :
+       {inner_contact(), inner_contact(1e-7), GapGeometry{2e-6, 3e-3, 3e-3, 0.0, 0.0, 1.26e-3}}) {
     for (const double depth : {0.24e-6, 5e-6, 1e-4}) {
       GapGeometry deep = g;
       deep.h0 += depth;
@@ -160,13 +160,13 @@ TEST(PitGap, NarrowWideAndStraddlingStripsAgainstBruteForce)
   struct Case {
     double x1, x2, depth, r;
   };
-  for (const Case &c : {Case{-w / 2, w / 2, 5e-6, kBall},          // pit under the contact
-                        Case{-w / 2, w / 2, 5e-6, 0.0},            // the same, flat floor
-                        Case{0.5e-3, 0.5e-3 + w, 5e-6, kBall},     // ahead, inside the circle
-                        Case{1.1e-3, 1.1e-3 + w, 5e-6, 0.0},       // across the circle's edge
-                        Case{0.01e-3, 0.01e-3 + w, 5e-6, kBall},   // across the ellipse's end
-                        Case{-0.7e-3, 2e-3, 20e-6, 0.0},           // wide, flat
-                        Case{-0.1e-3, 0.05e-3, 5e-6, kBall}}) {    // narrower than the sag
+  for (const Case &c : {Case{-w / 2, w / 2, 5e-6, kBall},         // pit under the contact
+                        Case{-w / 2, w / 2, 5e-6, 0.0},           // the same, flat floor
+                        Case{0.5e-3, 0.5e-3 + w, 5e-6, kBall},    // ahead, inside the circle
+                        Case{1.1e-3, 1.1e-3 + w, 5e-6, 0.0},      // across the circle's edge
+                        Case{0.01e-3, 0.01e-3 + w, 5e-6, kBall},  // across the ellipse's end
+                        Case{-0.7e-3, 2e-3, 20e-6, 0.0},          // wide, flat
+                        Case{-0.1e-3, 0.05e-3, 5e-6, kBall}}) {   // narrower than the sag
     const PitStrip p{c.x1, c.x2, c.depth, c.r};
     const double kernel = strip_gap_capacitance(g, kEps, p) - base;
     const double brute = brute_force(g, p, n_theta, 4) - bf0;
@@ -184,7 +184,8 @@ TEST(PitGap, StiffThinFilmsAndHugeDepthsStayFinite)
       for (const double x1 : {-1.5e-3, -0.1e-3, 0.0}) {
         const double c = strip_gap_capacitance(g, kEps, PitStrip{x1, x1 + 0.42e-3, depth, kBall});
         EXPECT_TRUE(std::isfinite(c) && c > 0.0 && c <= base) << h0 << " " << depth << " " << x1;
-        const double flat = strip_gap_capacitance(g, kEps, PitStrip{-2e-3, x1 + 0.42e-3, depth, 0.0});
+        const double flat =
+            strip_gap_capacitance(g, kEps, PitStrip{-2e-3, x1 + 0.42e-3, depth, 0.0});
         EXPECT_TRUE(std::isfinite(flat) && flat > 0.0 && flat <= base) << h0 << " " << depth;
       }
     }
@@ -202,12 +203,15 @@ TEST(PitGap, StiffThinFilmsAndHugeDepthsStayFinite)
 TEST(PitGap, BadStripsAreRefused)
 {
   const GapGeometry g = inner_contact();
-  EXPECT_THROW(strip_gap_capacitance(g, kEps, PitStrip{1e-4, 1e-4, 5e-6, 0.0}), std::invalid_argument);
-  EXPECT_THROW(strip_gap_capacitance(g, kEps, PitStrip{0.0, 1e-4, -1e-6, 0.0}), std::invalid_argument);
+  EXPECT_THROW(strip_gap_capacitance(g, kEps, PitStrip{1e-4, 1e-4, 5e-6, 0.0}),
+               std::invalid_argument);
+  EXPECT_THROW(strip_gap_capacitance(g, kEps, PitStrip{0.0, 1e-4, -1e-6, 0.0}),
+               std::invalid_argument);
   EXPECT_THROW(strip_gap_capacitance(g, kEps, PitStrip{0.0, 1e-4, std::nan(""), 0.0}),
                std::invalid_argument);
-  EXPECT_THROW(hertz_over_pit(HertzFilm{1e-6, 1e-6, 1e-7, 3e-4, 3e-5}, PitStrip{0.0, 1e-4, 1e-6, -1.0}),
-               std::invalid_argument);
+  EXPECT_THROW(
+      hertz_over_pit(HertzFilm{1e-6, 1e-6, 1e-7, 3e-4, 3e-5}, PitStrip{0.0, 1e-4, 1e-6, -1.0}),
+      std::invalid_argument);
 }
 
 // The Hertz zone, flat floor of depth D over x in (x1, x2) inside the ellipse: the strip's
@@ -222,19 +226,21 @@ TEST(PitGap, HertzZoneOverAFlatFloorIsTheAreaWeightedSum)
                                  std::pair{-1.0, 0.005e-3}, std::pair{-1.0, 1.0}}) {
       const double t1 = std::asin(std::fmax(-1.0, x1 / film.b));
       const double t2 = std::asin(std::fmin(1.0, x2 / film.b));
-      const double over = film.a * film.b * ((t2 + std::sin(t2) * std::cos(t2)) -
-                                             (t1 + std::sin(t1) * std::cos(t1)));
+      const double over = film.a * film.b *
+                          ((t2 + std::sin(t2) * std::cos(t2)) - (t1 + std::sin(t1) * std::cos(t1)));
       const double fd = std::erfc((film.h_min + depth) * k);
       const HertzOverPit hz = hertz_over_pit(film, PitStrip{x1, x2, depth, 0.0});
       EXPECT_NEAR(hz.metallic, (f0 * (area - over) + fd * over) / area, 1e-12);
-      const double free_h = (1.0 - f0) * (area - over) / film.h_c + (1.0 - fd) * over / (film.h_c + depth);
+      const double free_h =
+          (1.0 - f0) * (area - over) / film.h_c + (1.0 - fd) * over / (film.h_c + depth);
       EXPECT_NEAR(hz.free_h / free_h, 1.0, 1e-11) << x1 << " " << x2;
       EXPECT_EQ(hz.min_recess, x1 < -film.b && x2 > film.b ? depth : 0.0);
     }
   // Half the ellipse over the floor, by symmetry.
   const HertzOverPit half = hertz_over_pit(film, PitStrip{0.0, 1.0, 5e-6, 0.0});
-  EXPECT_NEAR(half.free_h / (0.5 * area * ((1.0 - f0) / film.h_c +
-                                           (1.0 - std::erfc((film.h_min + 5e-6) * k)) / (film.h_c + 5e-6))),
+  EXPECT_NEAR(half.free_h / (0.5 * area *
+                             ((1.0 - f0) / film.h_c +
+                              (1.0 - std::erfc((film.h_min + 5e-6) * k)) / (film.h_c + 5e-6))),
               1.0, 1e-11);
 }
 
@@ -250,7 +256,8 @@ TEST(PitGap, HertzZoneOverTheRoundedProfileAgainstA2DSum)
   double metal = 0.0, free_h = 0.0, area = 0.0;
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      const double x = film.b * (2.0 * (i + 0.5) / n - 1.0), y = film.a * (2.0 * (j + 0.5) / n - 1.0);
+      const double x = film.b * (2.0 * (i + 0.5) / n - 1.0),
+                   y = film.a * (2.0 * (j + 0.5) / n - 1.0);
       if (x * x / (film.b * film.b) + y * y / (film.a * film.a) > 1.0) continue;
       const double r = profile(p, x), f = std::erfc((film.h_min + r) * k);
       area += 1.0;
