@@ -69,7 +69,8 @@ def table(exe, src, wd, post=None):
         if post:
             rep = subprocess.run([post, "diagnose", "--column", "Cb", "--from", str(T_STEADY),
                                   os.path.join(out, "signal.txt")], capture_output=True, text=True)
-            print("    " + " / ".join(l.strip() for l in rep.stdout.splitlines()[:4]))
+            lines = [l.strip() for l in rep.stdout.splitlines() if l.strip() and l[0] != "#"]
+            print("    " + " / ".join(lines[:4]))
     return rows
 
 

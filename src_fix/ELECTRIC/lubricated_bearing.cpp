@@ -45,6 +45,13 @@ double entrainment_speed(const double *x, const double *v, double omega_z, doubl
   return std::fabs(-ny * ux + nx * uy) / std::sqrt(nx * nx + ny * ny);
 }
 
+// A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
+// the pit's centre is at -offset.
+lub::PitStrip pit_strip(const ohmdem::PitView &p)
+{
+  return {-p.offset - 0.5 * p.width, -p.offset + 0.5 * p.width, p.depth, p.ball_radius};
+}
+
 // The gap between a ball and a race it does not press (m), along the line through the ring
 // centre.
 double race_gap(const double *x, double r, const FixBearingRace &race)
@@ -144,21 +151,19 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
   const double *x = atom->x[i], *v = atom->v[i];
   out.tag = static_cast<std::int64_t>(atom->tag[i]);
   out.side = side;
-  // A race pit within the wetted circle is a strip across the raceway, x along the rolling
-  // direction from the contact (the pit's centre at -offset); other defects under the contact
-  // (a ball's pit) add their recess over the whole circle.
+  // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
+  // defects under the contact (a ball's pit) add their recess over the whole circle.
   ohmdem::PitView pit;
   double recess = 0.0;
   const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
-  const lub::PitStrip strip{-pit.offset - 0.5 * pit.width, -pit.offset + 0.5 * pit.width, pit.depth,
-                            pit.ball_radius};
   if (!(view.fn() > 0.0)) {
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
     const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + recess;
-    out.c = near_pit ? lub::idle_over_pit(film_[side].input(), gap, strip) : film_[side].idle(gap);
+    out.c = near_pit ? lub::idle_over_pit(film_[side].input(), gap, pit_strip(pit))
+                     : film_[side].idle(gap);
     out.y = {0.0, omega() * out.c};
     // The gap at the contact point (with the strip's recess there).
-    out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(strip, 0.0) : gap;
+    out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(pit_strip(pit), 0.0) : gap;
     out.lambda = out.h_min / settings_.roughness;
     return;
   }
@@ -169,7 +174,7 @@ void LubricatedBearing::contact(int i, int side, double g_ball, lub::ContactAdmi
                       recess,                                // over a pit the gap grows
                       film);                                 // in place: no copy
   // The few contacts near a race pit: the Hertz zone and the gap over the strip.
-  if (near_pit) lub::contact_over_pit(film_[side].input(), view.fn(), recess, strip, film);
+  if (near_pit) lub::contact_over_pit(film_[side].input(), view.fn(), recess, pit_strip(pit), film);
   const lub::ContactAdmittance &c = film;
   out.loaded = true;
   out.y = c.y(omega());

@@ -39,10 +39,11 @@ Vec<N> gauss8(const F &f, double t0, double t1)
 }
 
 // Adaptive Gauss-Legendre: a panel is split until its two halves agree with it to tol (the
-// tolerance halves with the panel), at most kMaxDepth deep and kMaxPanels panels per call
-// (`budget`: against an integrand whose rounding noise exceeds the tolerance, which would
-// otherwise split every panel). Deterministic: the same inputs give the same panels.
-constexpr int kMaxPanels = 4000;
+// tolerance halves with the panel) or to 1e-13 of their sum (a narrow panel that holds much of
+// the integral would otherwise chase its rounding), at most kMaxDepth deep and kMaxPanels
+// panels per call (`budget`: a last guard against an integrand whose noise exceeds both).
+// Deterministic: the same inputs give the same panels.
+constexpr int kMaxPanels = 1000;
 template <std::size_t N, class F>
 Vec<N> adapt(const F &f, double t0, double t1, const Vec<N> &whole, Vec<N> tol, int depth,
              int &budget)
@@ -54,7 +55,8 @@ Vec<N> adapt(const F &f, double t0, double t1, const Vec<N> &whole, Vec<N> tol, 
   for (std::size_t k = 0; k < N; ++k) sum[k] = l[k] + r[k];
   if (!done) {
     done = true;
-    for (std::size_t k = 0; k < N; ++k) done = done && std::fabs(sum[k] - whole[k]) <= tol[k];
+    for (std::size_t k = 0; k < N; ++k)  // tol, or the rounding of the panel's own sum
+      done = done && std::fabs(sum[k] - whole[k]) <= std::max(tol[k], 1e-13 * std::fabs(sum[k]));
   }
   if (done) return sum;
   for (double &v : tol) v *= 0.5;
@@ -122,7 +124,9 @@ double strip_recess(const PitStrip &p, double x)
   if (!(x > p.x1 && x < p.x2)) return 0.0;
   if (!(p.edge_radius > 0.0)) return p.depth;
   const double d = std::min(x - p.x1, p.x2 - x), r = p.edge_radius;
-  const double on_edge = d < r ? r - std::sqrt((r - d) * (r + d)) : r;  // as pit_recess
+  // pit_recess's r - sqrt(r^2 - d^2), written without its cancellation near the edges (there
+  // it is d^2/2r ~ 1e-10 m, and a rounding of r's ulp, 1e-18 m, would be noise to erfc).
+  const double on_edge = d < r ? d * d / (r + std::sqrt((r - d) * (r + d))) : r;
   return std::min(p.depth, on_edge);
 }
 
@@ -145,10 +149,11 @@ double strip_gap_capacitance(const GapGeometry &g, double eps_r, const PitStrip 
   if (xi > 0.0) extra[n_extra++] = -xi, extra[n_extra++] = xi;
   const Breaks x = breaks(p, lo, hi, extra, n_extra);
   const double two_ry = 2.0 * g.ry, inv_2rx = 0.5 / g.rx;
-  // F(A) of pit_gap.h: 2 sqrt(2 ry / A) [atan(Yc / s) - atan(Ye / s)], s = sqrt(2 ry A).
+  // F(A) of pit_gap.h: 2 sqrt(2 ry / A) [atan(Yc / s) - atan(Ye / s)], s = sqrt(2 ry A), the
+  // difference as one arctangent (both arguments >= 0): atan(s (Yc - Ye) / (s^2 + Yc Ye)).
   const auto chord = [&](double a_gap, double yc, double ye) {
-    const double s = std::sqrt(two_ry * a_gap);
-    return 2.0 * two_ry / s * (std::atan(yc / s) - std::atan(ye / s));
+    const double s2 = two_ry * a_gap, s = std::sqrt(s2);
+    return 2.0 * two_ry / s * std::atan(s * (yc - ye) / (s2 + yc * ye));
   };
   const auto change = [&](double xx) {
     const double r = strip_recess(p, xx);
@@ -210,7 +215,9 @@ HertzOverPit hertz_over_pit(const HertzFilm &film, const PitStrip &p)
   const double over =
       a * b * ((tb + std::sin(tb) * std::cos(tb)) - (ta + std::sin(ta) * std::cos(ta)));
   outside(area - over);
-  const double h_ref = film.h_c + p.depth;  // the scale of 1/h for the tolerance
+  // The scale of (1 - f)/h for the tolerance: at most ~1/h_c, and ~1/sigma where h_c -> 0
+  // (1 - f = erf((h_min + r)/(sigma sqrt 2)) ~ r/sigma as h = h_c + r -> 0).
+  const double h_ref = std::max(film.h_c, film.sigma);
   Vec<2> sum{};
   int budget = kMaxPanels;
   for (int i = 0; i + 1 < x.n; ++i) {
