@@ -17,7 +17,9 @@ using namespace ohmdem::lubrication;
 
 namespace {
 
-// The 6208's inner race in VG 68 at 40 C (the numbers of test_race_admittance.cpp's races).
+// A race like the 6208's inner one in VG 68 at 40 C: Hamrock's Rx and Ry for d = 12.6 mm,
+// dm = 60 mm, f = 0.52; a Hertz ellipse of k ~ 9 (0.30 mm by 0.032 mm at 15 N); the deck's
+// roughness and wetted radius; VG 68's viscosity, pressure coefficient and permittivity.
 RaceInput inner_race()
 {
   RaceInput in;
