@@ -288,6 +288,24 @@ double FixBearingDefect::recess(const ohmdem::BearingSurface &race, std::int64_t
   return ohmdem::pit_recess(pit, s);
 }
 
+// The same arc offset and width as recess(), for the lubricated gap (a query: the mechanics do
+// not call it).
+bool FixBearingDefect::pit_near(const ohmdem::BearingSurface &race, double dx, double dy,
+                                double reach, ohmdem::PitView &pit) const
+{
+  if (!(kind_ == Kind::Inner || kind_ == Kind::Outer) || race.body != race_ || !active())
+    return false;
+  const double R = race.radius;
+  const double s = R * ohmdem::wrap_angle(std::atan2(dy, dx) - zone_centre(race.angle));
+  const double width = arc_ > 0.0 ? arc_ : R * size_;
+  if (!(std::fabs(s) - 0.5 * width < reach)) return false;
+  pit.offset = s;
+  pit.width = width;
+  pit.depth = depth_;
+  pit.ball_radius = race.ball_radius;
+  return true;
+}
+
 // The broken bar separates pocket K from its neighbour on `side`: it is the wall on that side
 // of pocket K and the opposite wall of the neighbour.
 bool FixBearingDefect::breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const

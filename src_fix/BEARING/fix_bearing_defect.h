@@ -47,6 +47,8 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   bool acts_on_cage() const override { return kind_ == Kind::Cage; }
   double recess(const ohmdem::BearingSurface &race, std::int64_t tag, double dx, double dy,
                 bool &masked) const override;
+  bool pit_near(const ohmdem::BearingSurface &race, double dx, double dy, double reach,
+                ohmdem::PitView &pit) const override;
   bool breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const override;
 
  private:

@@ -348,6 +348,19 @@ double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surfac
   return recess;
 }
 
+bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const
+{
+  const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;  // as defect_recess
+  bool found = false, in_zone = false;
+  for (const auto *d : defects_) {
+    if (!found && d->pit_near(defect_surface_, dx, dy, reach, pit))
+      found = true;
+    else
+      rest += d->recess(defect_surface_, atom->tag[i], dx, dy, in_zone);
+  }
+  return found;
+}
+
 double FixBearingRace::compute_vector(int n)
 {
   switch (n) {

@@ -59,6 +59,14 @@ class FixBearingRace : public FixBearingBody {
     bool in_zone = false;
     return defects_.empty() ? 0.0 : defect_recess(i, defect_surface_, in_zone);
   }
+  // For the lubricated gap: the race pit whose zone comes within `reach` (m) of that contact
+  // (the first defect with one), and in `rest` the recess of the other defects under it (a
+  // ball's pit); false without such a pit, `rest` then recess_of(i).
+  bool pit_near(int i, double reach, ohmdem::PitView &pit, double &rest) const
+  {
+    rest = 0.0;
+    return !defects_.empty() && defect_pit(i, reach, pit, rest);  // inline: most runs have none
+  }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return settings_.inner; }
   double groove() const { return settings_.groove; }  // groove radius (m)
@@ -118,6 +126,7 @@ class FixBearingRace : public FixBearingBody {
   int ncontacts_ = 0;
   int nmasked_ = 0;  // contacts whose point lies in a defect zone (no current)
   double defect_recess(int i, const ohmdem::BearingSurface &surface, bool &in_zone) const;
+  bool defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const;  // pit_near
   // Per touching ball: force on the ball x, y, normal force, torque on the race. Members so
   // that their memory is reused from step to step.
   std::vector<ohmdem::TaggedValues<4> > mine_;

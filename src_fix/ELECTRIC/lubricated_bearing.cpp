@@ -18,6 +18,7 @@
 #include "common/constants.h"
 #include "error.h"
 #include "lubrication/contact_admittance.h"
+#include "lubrication/pit_contact.h"
 #include "lubrication/race_admittance.h"
 
 using namespace LAMMPS_NS;
@@ -42,6 +43,13 @@ double entrainment_speed(const double *x, const double *v, double omega_z, doubl
   const double ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
   // The component along the unit tangent (-ny, nx)/|n|: one division.
   return std::fabs(-ny * ux + nx * uy) / std::sqrt(nx * nx + ny * ny);
+}
+
+// A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
+// the pit's centre is at -offset.
+lub::PitStrip pit_strip(const ohmdem::PitView &p)
+{
+  return {-p.offset - 0.5 * p.width, -p.offset + 0.5 * p.width, p.depth, p.ball_radius};
 }
 
 // The gap between a ball and a race it does not press (m), along the line through the ring
@@ -142,21 +150,31 @@ void LubricatedBearing::collect(int i, int side, double g_ball, LubricatedContac
   const double *x = atom->x[i], *v = atom->v[i];
   out.tag = static_cast<std::int64_t>(atom->tag[i]);
   out.side = side;
+  // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
+  // defects under the contact (a ball's pit) add their recess over the whole circle.
+  ohmdem::PitView pit;
+  double recess = 0.0;
+  const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
   if (!(view.fn() > 0.0)) {
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
-    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + race.recess_of(i);
-    out.c = film_[side].idle(gap);
+    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + recess;
+    out.c = near_pit ? lub::idle_over_pit(film_[side].input(), gap, pit_strip(pit))
+                     : film_[side].idle(gap);
     out.y = {0.0, omega() * out.c};
-    out.h_central = out.h_min = gap;
-    out.lambda = gap / settings_.roughness;
+    // The gap at the contact point (with the strip's recess there).
+    out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(pit_strip(pit), 0.0) : gap;
+    out.lambda = out.h_min / settings_.roughness;
     return;
   }
   out.loaded = true;
+  // The few contacts near a race pit: the Hertz zone and the gap over the strip, once the batch
+  // has the contact's film (evaluate()).
+  if (near_pit) pit_fixes_.push_back({side, batch_[side].size(), view.fn(), recess, pit});
   batch_[side].add(
       view.fn(),
       entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]),
       view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-      race.recess_of(i));                    // over a pit the gap grows
+      recess);                               // other defects' recess under the contact
 }
 
 void LubricatedBearing::fill(const lub::ContactAdmittance &c, LubricatedContact &out) const
@@ -195,6 +213,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
 
   contacts_.clear();
   balls_.clear();
+  pit_fixes_.clear();
   for (int side = 0; side < 2; ++side) {
     RaceMotion &m = motion_[side];
     race_[side]->centre(m.cx, m.cy);
@@ -214,6 +233,9 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     films_[side].resize(batch_[side].size());
     film_[side].contacts(batch_[side], films_[side].data());
   }
+  for (const PitFix &f : pit_fixes_)
+    lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
+                          films_[f.side][f.index]);
   // ... and the balls: each its two contacts in series.
   std::size_t next[2] = {0, 0};  // the next pressed contact of each race
   for (std::size_t n = 0; n < contacts_.size(); n += 2) {

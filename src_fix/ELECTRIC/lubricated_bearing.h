@@ -21,6 +21,7 @@
 #include "lubrication/lubricant.h"
 #include "lubrication/race_admittance.h"
 #include "pointers.h"
+#include "support/bearing_surface.h"
 
 namespace LAMMPS_NS {
 
@@ -116,6 +117,14 @@ class LubricatedBearing : protected Pointers {
   // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
   ohmdem::lubrication::ContactBatch batch_[2];
   std::vector<ohmdem::lubrication::ContactAdmittance> films_[2];
+  // The pressed contacts near a race pit: corrected after their batch (pit_contact.h).
+  struct PitFix {
+    int side = 0;
+    std::size_t index = 0;  // in batch_[side] and films_[side]
+    double fn = 0, rest = 0;
+    ohmdem::PitView pit;
+  };
+  std::vector<PitFix> pit_fixes_;
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;

@@ -25,6 +25,13 @@ struct BearingSurface {
   bool inner() const { return kind == BodyKind::InnerRace; }
 };
 
+// A race pit seen from a contact (the lubricated gap's strip, doc/lubricated_contact.md): the
+// contact's arc offset from the pit's centre and the pit's arc width at the race's radius (m),
+// its depth (m) and the radius of the ball that rolls over it (m).
+struct PitView {
+  double offset = 0, width = 0, depth = 0, ball_radius = 0;
+};
+
 class BearingBody {
  public:
   virtual ~BearingBody() = default;
@@ -41,6 +48,15 @@ class BearingDefect {
   // lies. `masked` is set when the contact point lies in the zone (no current).
   virtual double recess(const BearingSurface &race, std::int64_t tag, double dx, double dy,
                         bool &masked) const = 0;
+  // The race pit on `race` whose zone comes within `reach` (m, along the race) of the contact
+  // on the line (dx, dy) from the race centre, as `pit`; false when this defect has none there
+  // (a ball's pit, a cage defect). Its recess at the contact is recess()'s.
+  virtual bool pit_near(const BearingSurface &race, double dx, double dy, double reach,
+                        PitView &pit) const
+  {
+    (void)race, (void)dx, (void)dy, (void)reach, (void)pit;
+    return false;
+  }
   // Whether the wall on `side` (+1 leading, -1 trailing, in the sense of increasing angle) of
   // pocket `pocket` of `cage` is broken.
   virtual bool breaks_wall(const BearingSurface &cage, int pocket, int side) const = 0;

@@ -50,16 +50,34 @@ def test_defect_inner(r, post):
     s = sig["time"] >= T_STEADY
     crossings = passes(sig, s)
     check(len(crossings) >= 30, f"the ball set crosses the pit many times: {len(crossings)}")
-    # The deepest Cb of each crossing (the ball unloads and its inner gap widens), relative to
-    # the healthy bearing: measured 0.96 to 1.55 %.
-    dips = np.array([1 - sig["Cb"][p].min() / cb0 for p in crossings[:-1]])
+    # The deepest Cb of each crossing (the ball unloads, and the pit's strip widens the gap
+    # over part of its Hertz zone and of its wetted circle), relative to the healthy bearing,
+    # from 0.5 ms before the crossing to 0.5 ms after (the pit enters a contact's 1.26 mm wetted
+    # circle ~0.17 ms before the contact point reaches it at 7.25 m/s). Measured 0.56 to 1.06 %
+    # (scripts/lubricated_defect_table.py, the pit as a strip, doc/lubricated_contact.md); the
+    # recess over the whole wetted circle, an upper bound on the gap's change, gave 0.96 to
+    # 1.55 %, and nothing before the crossing.
+    t = sig["time"]
+    windows = [np.nonzero((t >= t[p[0]] - 5e-4) & (t <= t[p[-1]] + 5e-4))[0]
+               for p in crossings[1:-1]]
+    dips = np.array([1 - sig["Cb"][w].min() / cb0 for w in windows])
     print(f"     Cb dip per crossing: {100 * dips.min():.3f} .. {100 * dips.max():.3f} % "
           f"(healthy Cb {cb0:.5e} F)")
-    check(np.all(dips > 0.005), "every crossing dips Cb by more than 0.5 %")
+    check(np.all(dips > 0.004), "every crossing dips Cb by more than 0.4 %")
+    check(np.all(dips < 0.0125), "and by less than 1.25 % (the whole-circle recess: 0.96-1.55 %)")
+    # The dip starts when the pit enters the wetted circle, before the zone: Cb is 1e-5 below
+    # the healthy value (ten times its spread) 0.090 to 0.100 ms (~0.7 mm of rolling) before
+    # the first masked step (measured, scripts/lubricated_defect_table.py); with the recess
+    # over the whole circle, not before the zone.
+    leads = np.array([t[p[0]] - t[w[sig["Cb"][w] < cb0 * (1 - 1e-5)][0]]
+                      for p, w in zip(crossings[1:-1], windows)])
+    print(f"     dip onset before the zone: {1e3 * leads.min():.3f} .. {1e3 * leads.max():.3f} ms")
+    check(np.all(leads >= 0.05e-3), "Cb dips before the contact reaches the zone (wetted circle)")
     # Away from the crossings Cb comes back to the healthy value (within the ring's ringing
     # after each impact, a few percent).
     check(np.all(np.abs(sig["Cb"][s] / cb0 - 1) < 0.05), "Cb within 5 % of the healthy value")
-    # The pit's recess is read from the race on the ball's own process: 1 and 2 processes agree.
+    # The pit (recess and strip) is read from the race on the ball's own process: 1 and 2
+    # processes agree.
     one, _ = r.run("inner_1", lubricant="VG68", defect="inner", size=1.0, tend=0.02, dt=DT, nout=1)
     two, _ = r.run("inner_2", lubricant="VG68", defect="inner", size=1.0, tend=0.02, dt=DT, nout=1,
                    nprocs=2)

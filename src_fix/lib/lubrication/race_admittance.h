@@ -84,6 +84,7 @@ class RaceAdmittance {
   void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
+  const RaceInput &input() const { return in_; }
 
  private:
   friend struct RaceLanes;  // the batched form's lanes (race_admittance_batch.cpp)
