@@ -25,6 +25,25 @@ namespace lub = ohmdem::lubrication;
 
 namespace {
 
+// The mean entrainment speed of a ball-race contact at point p: the tangential component of
+// the mean of the two surfaces' velocities, relative to the contact point, which travels with
+// the ball's orbit about the ring centre c. Pure rolling on a fixed outer ring gives
+// (omega_i - omega_cage) R_i at the inner contact. The ring's velocity at p is
+// FixBearingRace::surface_velocity's, from its terms taken once per race and step (m).
+double entrainment_speed(const double *x, const double *v, double omega_z, double px, double py,
+                         const RaceMotion &m)
+{
+  const double rvx = m.vcx - m.w * (py - m.cy), rvy = m.vcy + m.w * (px - m.cx);
+  const double bvx = v[0] - omega_z * (py - x[1]), bvy = v[1] + omega_z * (px - x[0]);
+  const double ox = x[0] - m.cx, oy = x[1] - m.cy;
+  const double orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
+  const double pvx = -orbit * (py - m.cy), pvy = orbit * (px - m.cx);
+  const double nx = px - x[0], ny = py - x[1];
+  const double ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
+  // The component along the unit tangent (-ny, nx)/|n|: one division.
+  return std::fabs(-ny * ux + nx * uy) / std::sqrt(nx * nx + ny * ny);
+}
+
 // The gap between a ball and a race it does not press (m), along the line through the ring
 // centre.
 double race_gap(const double *x, double r, const FixBearingRace &race)
@@ -133,11 +152,11 @@ void LubricatedBearing::collect(int i, int side, double g_ball, LubricatedContac
     return;
   }
   out.loaded = true;
-  // The speed comes later, the race's together (evaluate()).
-  speeds_[side].add({x[0], x[1], v[0], v[1], atom->omega[i][2], view.point_x(), view.point_y()});
-  batch_[side].add(view.fn(), 0.0,
-                   view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                   race.recess_of(i));                    // over a pit the gap grows
+  batch_[side].add(
+      view.fn(),
+      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]),
+      view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+      race.recess_of(i));                    // over a pit the gap grows
 }
 
 void LubricatedBearing::fill(const lub::ContactAdmittance &c, LubricatedContact &out) const
@@ -177,11 +196,10 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   contacts_.clear();
   balls_.clear();
   for (int side = 0; side < 2; ++side) {
-    lub::RaceMotion &m = motion_[side];
+    RaceMotion &m = motion_[side];
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
     batch_[side].clear();
-    speeds_[side].clear();
   }
   // The records, and per race its pressed contacts' inputs ...
   for (int i = 0; i < atom->nlocal; ++i) {
@@ -191,10 +209,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
         g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
     for (int side = 0; side < 2; ++side) collect(i, side, g_ball, contacts_.emplace_back());
   }
-  // ... their entrainment speeds and admittances, a race's contacts together (lib/lubrication,
-  // entrainment.h, race_admittance.h) ...
+  // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) {
-    speeds_[side].speeds(motion_[side], batch_[side].speed());
     films_[side].resize(batch_[side].size());
     film_[side].contacts(batch_[side], films_[side].data());
   }

@@ -18,7 +18,6 @@
 #include "common/ordered_reduce.h"
 #include "conduction/conduction_model.h"
 #include "lubrication/contact_admittance.h"
-#include "lubrication/entrainment.h"
 #include "lubrication/lubricant.h"
 #include "lubrication/race_admittance.h"
 #include "pointers.h"
@@ -59,6 +58,11 @@ struct LubricatedContact {
 
 class FixBearingRace;
 class LubricatedNetwork;
+
+// A race's rigid motion on this step: centre (m), angular speed (rad/s), centre velocity (m/s).
+struct RaceMotion {
+  double cx = 0, cy = 0, w = 0, vcx = 0, vcy = 0;
+};
 
 class LubricatedBearing : protected Pointers {
  public:
@@ -105,13 +109,12 @@ class LubricatedBearing : protected Pointers {
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
-  ohmdem::lubrication::RaceMotion motion_[2];  // this step's, set by evaluate()
+  RaceMotion motion_[2];             // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
   // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
   ohmdem::lubrication::ContactBatch batch_[2];
-  ohmdem::lubrication::EntrainmentBatch speeds_[2];  // their speeds' inputs (batch_'s order)
   std::vector<ohmdem::lubrication::ContactAdmittance> films_[2];
   std::vector<LubricatedContact> contacts_;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball

@@ -35,7 +35,6 @@ class ContactBatch {
   }
   const double *fn() const { return fn_.data(); }
   const double *speed() const { return speed_.data(); }
-  double *speed() { return speed_.data(); }  // filled after add() (the bearing's speeds)
   const double *g_dry() const { return g_dry_.data(); }
   const double *recess() const { return recess_.data(); }
 
