@@ -64,8 +64,9 @@ def test_restart(r):
 
 
 def test_restart_inner(r):
-    # A 1 degree pit, 5 um deep, on the inner race (lubricated_defect_inner's): the ball set
-    # crosses it about every 2.3 ms, so the second half holds several crossings (n_masked).
+    # A 1 degree pit, 5 um deep, on the inner race (lubricated_defect_inner's): the balls cross
+    # it at BPFI (625 Hz at 500 rad/s), about every 1.6 ms, ~6 steps each: about nine crossings
+    # in the second half (n_masked > 0; measured 54 steps).
     names, tail = split_against_single(r, "inner", defect="inner", size=1.0)
     j = names.index("n_masked")
     steps = sum(float(row[j]) > 0 for row in tail)
