@@ -1,0 +1,361 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "bearing/pulse_template.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "bearing/defect_size.h"
+#include "bearing/diagnose.h"
+#include "bearing/race_sizing.h"
+#include "core/sampled_signal.h"
+#include "dsp/detect_laws.h"
+#include "dsp/pulses.h"
+
+namespace ohmdem::post {
+
+namespace {
+
+// Fewer passes leave a fine bin with a handful of samples: its scatter would not be its error.
+constexpr std::size_t kMinPasses = 32;
+
+std::size_t wrap(long i, std::size_t n)
+{
+  const long m = static_cast<long>(n);
+  return static_cast<std::size_t>(((i % m) + m) % m);
+}
+
+}  // namespace
+
+FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int oversample)
+{
+  if (!(rate > 0 && f > 0 && oversample >= 1))
+    throw std::invalid_argument("pulse fold: rate, defect frequency and oversampling must be > 0");
+  FoldedPulse p;
+  double level = 0;
+  for (double v : x) level += v;
+  level /= static_cast<double>(std::max<std::size_t>(x.size(), 1));
+  if (!(level > 0)) {
+    p.note = "the record's level is not above zero (a vibration channel?): the pulses are read "
+             "relative to it";
+    return p;
+  }
+  const double period = rate / refine_repetition(x, rate, f);  // samples
+  const auto bins = static_cast<std::size_t>(std::floor(period * oversample));
+  p.passes = static_cast<std::size_t>(static_cast<double>(x.size()) / period);
+  if (!(period >= 4) || p.passes < kMinPasses) {
+    p.note = std::to_string(p.passes) + " defect passes, fewer than " +
+             std::to_string(kMinPasses) + " (or under 4 samples per period)";
+    return p;
+  }
+  std::vector<double> sum(bins, 0.0), sum2(bins, 0.0), n(bins, 0.0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double u = std::fmod(static_cast<double>(i) / period, 1.0);
+    const auto b = std::min(static_cast<std::size_t>(u * static_cast<double>(bins)), bins - 1);
+    const double v = x[i] / level - 1;
+    sum[b] += v;
+    sum2[b] += v * v;
+    n[b] += 1;
+  }
+  std::vector<double> y(bins), se(bins);
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (n[b] < 2) {
+      p.note = "a bin of the fold holds fewer than 2 samples (the passes do not cover the period's "
+               "sub-sample phases)";
+      return p;
+    }
+    y[b] = sum[b] / n[b];
+    se[b] = std::sqrt(std::max(sum2[b] - n[b] * y[b] * y[b], 0.0) / (n[b] - 1) / n[b]);
+  }
+  // a quantised, noiseless bin would weigh without bound: no bin's error below a tenth of the
+  // median's
+  std::vector<double> sorted = se;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(bins / 2), sorted.end());
+  const double floor_se = std::max(0.1 * sorted[bins / 2], 1e-12);
+  for (double &v : se) v = std::max(v, floor_se);
+  // the entry: the largest rise over one sample of the fold smoothed over one sample (the ball's
+  // path lost: R jumps up), at the middle of that rise
+  const auto os = static_cast<std::size_t>(oversample);
+  std::vector<double> sm(bins, 0.0);
+  for (std::size_t b = 0; b < bins; ++b)
+    for (std::size_t k = 0; k < os; ++k) sm[b] += y[(b + k) % bins] / static_cast<double>(os);
+  std::size_t entry = 0;
+  double rise = -1e300;
+  for (std::size_t b = 0; b < bins; ++b) {
+    const double d = sm[(b + os) % bins] - sm[b];
+    if (d > rise) rise = d, entry = (b + os / 2 + os / 2) % bins;
+  }
+  p.entry = bins / 4;
+  p.y.resize(bins);
+  p.se.resize(bins);
+  for (std::size_t j = 0; j < bins; ++j) {
+    const std::size_t b = wrap(static_cast<long>(entry + j) - static_cast<long>(p.entry), bins);
+    p.y[j] = y[b];
+    p.se[j] = se[b];
+  }
+  p.bin_s = 1 / (rate * oversample);
+  p.period_s = period / rate;
+  p.valid = true;
+  return p;
+}
+
+void bank_grid(const TemplateBank &b, std::vector<double> &sizes, std::vector<double> &angles)
+{
+  sizes.clear();
+  angles.clear();
+  for (const PulseTemplate &t : b.templates) {
+    if (t.y.size() < 8 || t.se.size() != t.y.size())
+      throw std::invalid_argument("a template has fewer than 8 bins or no error per bin");
+    sizes.push_back(t.size_deg);
+    angles.push_back(t.angle_deg);
+  }
+  for (auto *v : {&sizes, &angles}) {
+    std::sort(v->begin(), v->end());
+    v->erase(std::unique(v->begin(), v->end()), v->end());
+  }
+  if (sizes.size() < 2 || sizes.size() * angles.size() != b.templates.size())
+    throw std::invalid_argument(
+        "the templates must cover every size at every angle once (a full grid), with at least "
+        "two sizes");
+}
+
+namespace {
+
+// A template at a point between the bank's: the weighted sum of up to four.
+struct Mix {
+  std::vector<double> y, var;
+};
+
+Mix mix(const std::vector<std::pair<const PulseTemplate *, double>> &parts, std::size_t n)
+{
+  Mix m{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  for (const auto &[t, w] : parts) {
+    if (w == 0) continue;
+    for (std::size_t j = 0; j < n; ++j) {
+      m.y[j] += w * t->y[j];
+      m.var[j] += w * w * t->se[j] * t->se[j];
+    }
+  }
+  return m;
+}
+
+// chi2 of the record against m over the template's first n bins, the record shifted by `shift`
+// bins (linear interpolation between its bins, circular), the best constant offset removed.
+double chi2_at(const FoldedPulse &rec, const Mix &m, std::size_t n, double shift)
+{
+  const std::size_t nb = rec.y.size();
+  const double base = static_cast<double>(rec.entry) - static_cast<double>(m.y.size() / 4) + shift;
+  double sw = 0, swr = 0, swr2 = 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double at = static_cast<double>(j) + base;
+    const double fl = std::floor(at);
+    const double u = at - fl;
+    const std::size_t i0 = wrap(static_cast<long>(fl), nb), i1 = (i0 + 1) % nb;
+    const double yr = (1 - u) * rec.y[i0] + u * rec.y[i1];
+    const double se = u < 0.5 ? rec.se[i0] : rec.se[i1];
+    const double w = 1 / (se * se + m.var[j]);
+    const double r = yr - m.y[j];
+    sw += w;
+    swr += w * r;
+    swr2 += w * r * r;
+  }
+  return swr2 - swr * swr / sw;
+}
+
+// The least chi2 over shifts within +-reach bins (every bin, then the parabola's vertex).
+std::pair<double, double> best_shift(const FoldedPulse &rec, const Mix &m, std::size_t n,
+                                     int reach)
+{
+  std::vector<double> c;
+  for (int k = -reach; k <= reach; ++k) c.push_back(chi2_at(rec, m, n, k));
+  const auto i = static_cast<std::size_t>(std::min_element(c.begin(), c.end()) - c.begin());
+  double best = c[i], shift = static_cast<double>(i) - reach;
+  if (i > 0 && i + 1 < c.size()) {
+    const double curv = c[i - 1] - 2 * c[i] + c[i + 1];
+    if (curv > 0) {
+      const double s = shift + 0.5 * (c[i - 1] - c[i + 1]) / curv;
+      const double v = chi2_at(rec, m, n, s);
+      if (v < best) best = v, shift = s;
+    }
+  }
+  return {best, shift};
+}
+
+// The profile's range under `limit`, refined between grid points by linear interpolation; lo
+// NaN-free, hi NaN when the range reaches the grid's last point.
+std::pair<double, double> range_under(const std::vector<double> &g, const std::vector<double> &p,
+                                      double limit, bool open_above)
+{
+  std::size_t first = g.size(), last = 0;
+  for (std::size_t i = 0; i < g.size(); ++i)
+    if (p[i] <= limit) first = std::min(first, i), last = i;
+  const auto cross = [&](std::size_t a, std::size_t b) {
+    return g[a] + (g[b] - g[a]) * (limit - p[a]) / (p[b] - p[a]);
+  };
+  const double lo = first == 0 ? g[0] : cross(first - 1, first);
+  const double hi = last + 1 == g.size() ? (open_above ? std::nan("") : g.back())
+                                         : cross(last + 1, last);
+  return {lo, hi};
+}
+
+// The least of p over x: the vertex of the parabola through the smallest point and its two
+// neighbours (kept between them), with its curvature; else the smallest point itself (an end of
+// the grid, or no upward parabola), curvature 0.
+struct Vertex {
+  double x = 0, curvature = 0;  // p ~ p(x) + curvature (x' - x)^2 near x
+};
+Vertex vertex(const std::vector<double> &x, const std::vector<double> &p)
+{
+  const auto i = static_cast<std::size_t>(std::min_element(p.begin(), p.end()) - p.begin());
+  if (i == 0 || i + 1 == p.size()) return {x[i], 0};
+  const double x0 = x[i - 1], x1 = x[i], x2 = x[i + 1];
+  const double d1 = (p[i] - p[i - 1]) / (x1 - x0), d2 = (p[i + 1] - p[i]) / (x2 - x1);
+  const double a = (d2 - d1) / (x2 - x0);  // p = p[i] + b (x - x1) + a (x - x1)^2
+  if (!(a > 0)) return {x1, 0};
+  const double b = d1 + a * (x1 - x0);
+  return {std::clamp(x1 - b / (2 * a), x0, x2), a};
+}
+
+}  // namespace
+
+TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, double confidence)
+{
+  TemplateFit f;
+  f.passes = rec.passes;
+  if (!rec.valid) {
+    f.note = "not determined: " + rec.note;
+    return f;
+  }
+  if (!(confidence > 0 && confidence < 1))
+    throw std::invalid_argument("template fit: confidence must lie in (0, 1)");
+  std::vector<double> sizes, angles;
+  bank_grid(bank, sizes, angles);
+  if (std::fabs(bank.bin_s / rec.bin_s - 1) > 1e-6) {
+    f.note = "not determined: the bank's fold bins (" + std::to_string(bank.bin_s) +
+             " s) are not the record's (" + std::to_string(rec.bin_s) +
+             " s): another sampling rate";
+    return f;
+  }
+  const auto at = [&](std::size_t ia, std::size_t is) -> const PulseTemplate * {
+    for (const PulseTemplate &t : bank.templates)
+      if (t.size_deg == sizes[is] && t.angle_deg == angles[ia]) return &t;
+    return nullptr;
+  };
+  std::size_t len = rec.y.size();
+  for (const PulseTemplate &t : bank.templates) len = std::min(len, t.y.size());
+  // the fit leaves out the period's last tenth: the templates' periods differ by a bin or two
+  const auto n = static_cast<std::size_t>(0.9 * static_cast<double>(len));
+  const int reach = 2 * kTemplateOversample;  // two samples either way
+  // The misfit at each template (a real pulse of the scene), then interpolated in the size: a
+  // mix of two templates whose exits lie a sample apart is two half steps, no pulse of the size
+  // between, and the fit snapped to the bank's sizes (a 100 us pulse on templates at 90 and 130
+  // us read 85 us, its interval not holding it).
+  std::vector<double> prof_s(sizes.size(), 1e300), prof_a(angles.size(), 1e300);
+  std::vector<double> shift_at(sizes.size(), 0.0);
+  for (std::size_t ia = 0; ia < angles.size(); ++ia)
+    for (std::size_t is = 0; is < sizes.size(); ++is) {
+      const Mix m = mix({{at(ia, is), 1.0}}, len);
+      const auto [c, shift] = best_shift(rec, m, n, reach);
+      if (c < prof_s[is]) prof_s[is] = c, shift_at[is] = shift;
+      prof_a[ia] = std::min(prof_a[ia], c);
+    }
+  // sizes on a log scale (the bank's are a geometric series), angles as they are
+  std::vector<double> ls(sizes.size());
+  for (std::size_t i = 0; i < sizes.size(); ++i) ls[i] = std::log(sizes[i]);
+  // the place from the parabola through the best template and its neighbours; the threshold
+  // from the best template's misfit (the parabola's own least value would dip below a flat
+  // profile and cut its points out)
+  const Vertex vs = vertex(ls, prof_s);
+  f.size_deg = std::exp(vs.x);
+  const double best = *std::min_element(prof_s.begin(), prof_s.end());
+  const std::size_t ib =
+      static_cast<std::size_t>(std::min_element(prof_s.begin(), prof_s.end()) - prof_s.begin());
+  f.shift_s = shift_at[ib] * rec.bin_s;
+  if (angles.size() > 1) f.angle_deg = vertex(angles, prof_a).x;
+  const double dof = static_cast<double>(n) - 3 - (angles.size() > 1 ? 1 : 0);
+  f.chi2_reduced = best / dof;
+  const double z = student_t_isf((1 - confidence) / 2, 1e9);
+  // a misfit the pass scatter does not explain (the bank's own noise, the passes' correlation):
+  // the errors scaled until the best fit's reduced chi-square is 1
+  const double rise = z * z * std::max(1.0, f.chi2_reduced);
+  auto [llo, lhi] = range_under(ls, prof_s, best + rise, true);
+  // between the bank's sizes the parabola's own rise: the interval is the union of both
+  if (vs.curvature > 0) {
+    const double h = std::sqrt(rise / vs.curvature);
+    llo = std::min(llo, vs.x - h);
+    if (std::isfinite(lhi)) lhi = std::max(lhi, vs.x + h);
+  }
+  const double lo = std::exp(llo), hi = std::exp(lhi);
+  // the bank's own error on held-out sizes, combined with the fit's half-widths
+  const double me = z * bank.model_error * f.size_deg;
+  f.size_lo_deg = std::max(0.0, f.size_deg - std::hypot(f.size_deg - std::min(lo, f.size_deg), me));
+  if (llo <= ls.front()) f.size_lo_deg = 0;  // a smaller pit than the bank has fits as well
+  f.size_hi_deg = std::isfinite(lhi)
+                      ? f.size_deg + std::hypot(std::max(hi, f.size_deg) - f.size_deg, me)
+                      : std::nan("");
+  if (angles.size() > 1) {
+    const auto [alo, ahi] = range_under(angles, prof_a, best + rise, false);
+    f.angle_lo_deg = std::min(alo, f.angle_deg);
+    f.angle_hi_deg = std::max(ahi, f.angle_deg);
+  }
+  f.profile_size_deg = sizes;
+  f.profile_chi2 = prof_s;
+  const double flat = *std::max_element(prof_s.begin(), prof_s.end()) - best;
+  f.valid = true;
+  f.note = "pulse template fit: " + std::to_string(rec.passes) + " passes folded at 1/" +
+           std::to_string(kTemplateOversample) + " sample, " + std::to_string(bank.templates.size()) +
+           " templates, reduced chi-square " + std::to_string(f.chi2_reduced).substr(0, 5) +
+           ", the profile rises by " + std::to_string(flat / rise).substr(0, 6) +
+           " times the interval's threshold over the bank's sizes";
+  return f;
+}
+
+FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
+{
+  LocatedDefect l;
+  const RaceToSize r = race_to_size(found, o, "the pulse template", l);
+  if (!r.race) {
+    FoldedPulse p;
+    p.note = l.method;
+    return p;
+  }
+  return fold_pulse(s.x, s.rate, r.f);
+}
+
+LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
+{
+  // the place (and the area's quantities) as the area method gives them: the inner pit's angle
+  // from its passes through the load zone, the outer pit's from the pulses' phase; they do not
+  // use the jump, so a unit one stands in where none is given
+  DiagnoseOptions po = o;
+  if (!(po.pulse_height > 0) && po.curve_size_deg.empty()) po.pulse_height = 1;
+  LocatedDefect l = locate_defect(s, found, po);
+  l.valid = false;
+  l.size_deg = l.size_lo_deg = l.size_hi_deg = l.arc_m = std::nan("");
+  l.pulse_height = 0;
+  l.height_source = "no pulse height: the model's pulse templates ({diagnose.template_bank})";
+  LocatedDefect why;
+  const RaceToSize r = race_to_size(found, o, "the pulse template", why);
+  if (!r.race) {
+    why.depth_note = l.depth_note;
+    return why;
+  }
+  if (!o.template_bank) {
+    set_method(l, r, "not determined: the template fit needs the model's bank "
+                     "({diagnose.template_bank})");
+    return l;
+  }
+  const FoldedPulse p = fold_pulse(s.x, s.rate, r.f);
+  const TemplateFit f = fit_templates(p, *o.template_bank);
+  set_method(l, r, f.note);
+  l.passes = f.passes;
+  if (!f.valid) return l;
+  l.valid = true;
+  l.size_deg = f.size_deg;
+  l.size_lo_deg = f.size_lo_deg;
+  l.size_hi_deg = f.size_hi_deg;
+  l.arc_m = race_arc_m(o.geometry, r.defect, f.size_deg);
+  return l;
+}
+
+}  // namespace ohmdem::post
