@@ -16,6 +16,9 @@ namespace ohmdem::post {
 
 namespace {
 
+// The runs' own differences (mix below): 2 % of the pulse, 5 us of timing.
+constexpr double kModelRel = 0.02, kModelJitterS = 5e-6;
+
 // Fewer passes leave a fine bin with a handful of samples: its scatter would not be its error.
 constexpr std::size_t kMinPasses = 32;
 
@@ -126,7 +129,8 @@ struct Mix {
   std::vector<double> y, var;
 };
 
-Mix mix(const std::vector<std::pair<const PulseTemplate *, double>> &parts, std::size_t n)
+Mix mix(const std::vector<std::pair<const PulseTemplate *, double>> &parts, std::size_t n,
+        double jitter_bins)
 {
   Mix m{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
   for (const auto &[t, w] : parts) {
@@ -135,6 +139,14 @@ Mix mix(const std::vector<std::pair<const PulseTemplate *, double>> &parts, std:
       m.y[j] += w * t->y[j];
       m.var[j] += w * w * t->se[j] * t->se[j];
     }
+  }
+  // two runs of the scene differ by more than their passes' scatter (the ring's motion is not
+  // repeated to the microsecond): a relative amplitude and a timing jitter (kModelRel,
+  // kModelJitterS) per bin, so that the sharp edges and the peak, where the least of these shows, do not
+  // outweigh the rest of the pulse
+  for (std::size_t j = 0; j < n; ++j) {
+    const double slope = 0.5 * (m.y[std::min(j + 1, n - 1)] - m.y[j > 0 ? j - 1 : 0]);
+    m.var[j] += std::pow(kModelRel * m.y[j], 2) + std::pow(jitter_bins * slope, 2);
   }
   return m;
 }
@@ -254,7 +266,7 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   std::vector<double> shift_at(sizes.size(), 0.0);
   for (std::size_t ia = 0; ia < angles.size(); ++ia)
     for (std::size_t is = 0; is < sizes.size(); ++is) {
-      const Mix m = mix({{at(ia, is), 1.0}}, len);
+      const Mix m = mix({{at(ia, is), 1.0}}, len, kModelJitterS / rec.bin_s);
       const auto [c, shift] = best_shift(rec, m, n, reach);
       if (c < prof_s[is]) prof_s[is] = c, shift_at[is] = shift;
       prof_a[ia] = std::min(prof_a[ia], c);
