@@ -113,8 +113,10 @@ def make_bank(out, defect, load, rate, noise):
     for angle in angles_of(defect, load):
         for size in sizes_of(defect, load):
             fo = fold(out, defect, size, load, angle, rate, noise)
-            if fo is None:  # a size the chain cannot record: the grid stops below it
-                break
+            # a size the chain cannot record (R infinite), or whose period is a near whole number
+            # of samples (its fold misses sub-sample phases): the bank goes without it
+            if fo is None:
+                continue
             rows.append((size, angle, fo))
     # a full grid: the sizes every angle has
     common_sizes = set.intersection(*[{r[0] for r in rows if r[1] == a}
@@ -171,9 +173,17 @@ def main(argv):
                     sizing.acquire_with_angle(sim, load, rate, noise, acq)
                 d = diagnose(a.out, sim, acq, defect, errors[key][0])
                 r = sizing.row(d, case, rate, noise, "template")
+                if d.get("position_reference") == "load direction" and r["position_est_deg"] \
+                        is not None and not d.get("position_modulo_deg"):
+                    # the branch resolved by the fit's angle: the error on the true angle
+                    r["position_error_deg"] = (r["position_est_deg"] - (position - 90) + 180) \
+                        % 360 - 180
+                r["branch"] = d.get("position_reference") == "load direction" and \
+                    not d.get("position_modulo_deg")
                 print(f"{defect} {size:g} {load} p{position:g} {rate:g} {noise}: "
                       f"{r['size_deg_est']} [{r['low']}, {r['high']}] covers {r['covers']} "
-                      f"pos {r['position_est_deg']}", flush=True)
+                      f"pos {r['position_est_deg']} err {r['position_error_deg']} branch "
+                      f"{r['branch']}", flush=True)
                 rows.append(r)
     cols = list(rows[0].keys())
     with open(os.path.join(a.out, "template.csv"), "w") as f:

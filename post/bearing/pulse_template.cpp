@@ -60,22 +60,46 @@ FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int 
     sum2[b] += v * v;
     n[b] += 1;
   }
-  std::vector<double> y(bins), se(bins);
+  std::vector<double> y(bins, 0.0), se(bins, 0.0);
+  std::size_t empty = 0;
   for (std::size_t b = 0; b < bins; ++b) {
     if (n[b] < 2) {
-      p.note = "a bin of the fold holds fewer than 2 samples (the passes do not cover the period's "
-               "sub-sample phases)";
-      return p;
+      ++empty;
+      continue;
     }
     y[b] = sum[b] / n[b];
     se[b] = std::sqrt(std::max(sum2[b] - n[b] * y[b] * y[b], 0.0) / (n[b] - 1) / n[b]);
   }
+  // a period close to a whole number of samples leaves sub-sample phases no pass fell at (the
+  // 6208's BPFI at 10 kHz: 16.0 samples)
+  if (2 * empty > bins) {
+    p.note = "the passes cover under half the period's sub-sample phases (a period of a near "
+             "whole number of samples)";
+    return p;
+  }
   // a quantised, noiseless bin would weigh without bound: no bin's error below a tenth of the
   // median's
-  std::vector<double> sorted = se;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(bins / 2), sorted.end());
-  const double floor_se = std::max(0.1 * sorted[bins / 2], 1e-12);
+  std::vector<double> sorted;
+  for (std::size_t b = 0; b < bins; ++b)
+    if (n[b] >= 2) sorted.push_back(se[b]);
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2),
+                   sorted.end());
+  const double floor_se = std::max(0.1 * sorted[sorted.size() / 2], 1e-12);
   for (double &v : se) v = std::max(v, floor_se);
+  // an empty bin: the line between its filled neighbours, weighing nothing in a fit
+  double big = 0;
+  for (std::size_t b = 0; b < bins; ++b)
+    if (n[b] >= 2) big = std::max(big, 1e3 * se[b]);
+  for (std::size_t b = 0; b < bins; ++b) {
+    if (n[b] >= 2) continue;
+    std::size_t l = 1, r = 1;
+    while (n[(b + bins - l) % bins] < 2) ++l;
+    while (n[(b + r) % bins] < 2) ++r;
+    y[b] = (static_cast<double>(r) * y[(b + bins - l) % bins] +
+            static_cast<double>(l) * y[(b + r) % bins]) /
+           static_cast<double>(l + r);
+    se[b] = big;
+  }
   // the entry: the largest rise over one sample of the fold smoothed over one sample (the ball's
   // path lost: R jumps up), at the middle of that rise
   const auto os = static_cast<std::size_t>(oversample);
@@ -322,6 +346,44 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   return f;
 }
 
+namespace {
+
+// An outer pit's place: the phase gives it modulo the ball spacing (outer_position.h), the
+// template fit its distance from the load direction (the pulse's shape along the load zone, even
+// in the angle); where one branch alone lies within the fit's angle interval, it is the place.
+void pick_branch(LocatedDefect &l, const TemplateFit &f)
+{
+  const std::string fit = "the template fit's angle from the load " +
+                          format_number(f.angle_deg, 3) + " deg [" +
+                          format_number(f.angle_lo_deg, 3) + ", " +
+                          format_number(f.angle_hi_deg, 3) + "]";
+  if (!std::isfinite(l.position_modulo_deg) || !std::isfinite(l.position_deg)) {
+    l.position_note += "; " + fit + " (either side of the load line)";
+    return;
+  }
+  const double m = l.position_modulo_deg;
+  std::vector<int> in;
+  for (int k = -6; k <= 6; ++k) {
+    const double a = std::fabs(l.position_deg + k * m);
+    if (a >= f.angle_lo_deg && a <= f.angle_hi_deg) in.push_back(k);
+  }
+  if (in.size() != 1) {
+    l.position_note += "; " + fit + " holds " + std::to_string(in.size()) +
+                       " branches: the branch is not determined";
+    return;
+  }
+  const double k = in[0] * m;
+  l.position_deg += k;
+  l.position_lo_deg += k;
+  l.position_hi_deg += k;
+  l.position_modulo_deg = std::nan("");
+  l.position_note = "the branch of the pulses' phase (modulo the ball spacing " +
+                    format_number(m, 4) + " deg) within " + fit +
+                    ", positive in the balls' direction of travel";
+}
+
+}  // namespace
+
 FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
 {
   LocatedDefect l;
@@ -367,6 +429,7 @@ LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const 
   l.size_lo_deg = f.size_lo_deg;
   l.size_hi_deg = f.size_hi_deg;
   l.arc_m = race_arc_m(o.geometry, r.defect, f.size_deg);
+  if (std::isfinite(f.angle_deg)) pick_branch(l, f);
   return l;
 }
 
