@@ -8,6 +8,7 @@
 #include "bearing/defect_size.h"
 #include "bearing/diagnose.h"
 #include "bearing/race_sizing.h"
+#include "core/constants.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
 #include "dsp/pulses.h"
@@ -153,39 +154,34 @@ void bank_grid(const TemplateBank &b, std::vector<double> &sizes, std::vector<do
 
 namespace {
 
-// A template at a point between the bank's: the weighted sum of up to four.
-struct Mix {
+// A template's first n bins and their variance in the fit.
+struct Weighted {
   std::vector<double> y, var;
 };
 
-Mix mix(const std::vector<std::pair<const PulseTemplate *, double>> &parts, std::size_t n,
-        double jitter_bins)
+Weighted weighted(const PulseTemplate &t, std::size_t n, double jitter_bins)
 {
-  Mix m{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
-  for (const auto &[t, w] : parts) {
-    if (w == 0) continue;
-    for (std::size_t j = 0; j < n; ++j) {
-      m.y[j] += w * t->y[j];
-      m.var[j] += w * w * t->se[j] * t->se[j];
-    }
-  }
+  Weighted m{std::vector<double>(t.y.begin(), t.y.begin() + static_cast<long>(n)),
+             std::vector<double>(n, 0.0)};
   // two runs of the scene differ by more than their passes' scatter (the ring's motion is not
   // repeated to the microsecond): a relative amplitude and a timing jitter (kModelRel,
-  // kModelJitterS) per bin, so that the sharp edges and the peak, where the least of these shows, do not
-  // outweigh the rest of the pulse
+  // kModelJitterS) per bin, so that the sharp edges and the peak, where the least of these
+  // shows, do not outweigh the rest of the pulse
   for (std::size_t j = 0; j < n; ++j) {
     const double slope = 0.5 * (m.y[std::min(j + 1, n - 1)] - m.y[j > 0 ? j - 1 : 0]);
-    m.var[j] += std::pow(kModelRel * m.y[j], 2) + std::pow(jitter_bins * slope, 2);
+    m.var[j] = t.se[j] * t.se[j] + std::pow(kModelRel * m.y[j], 2) +
+               std::pow(jitter_bins * slope, 2);
   }
   return m;
 }
 
 // chi2 of the record against m over the template's first n bins, the record shifted by `shift`
 // bins (linear interpolation between its bins, circular), the best constant offset removed.
-double chi2_at(const FoldedPulse &rec, const Mix &m, std::size_t n, double shift)
+double chi2_at(const FoldedPulse &rec, const Weighted &m, std::size_t n, std::size_t entry,
+               double shift)
 {
   const std::size_t nb = rec.y.size();
-  const double base = static_cast<double>(rec.entry) - static_cast<double>(m.y.size() / 4) + shift;
+  const double base = static_cast<double>(rec.entry) - static_cast<double>(entry) + shift;
   double sw = 0, swr = 0, swr2 = 0;
   for (std::size_t j = 0; j < n; ++j) {
     const double at = static_cast<double>(j) + base;
@@ -204,18 +200,18 @@ double chi2_at(const FoldedPulse &rec, const Mix &m, std::size_t n, double shift
 }
 
 // The least chi2 over shifts within +-reach bins (every bin, then the parabola's vertex).
-std::pair<double, double> best_shift(const FoldedPulse &rec, const Mix &m, std::size_t n,
-                                     int reach)
+std::pair<double, double> best_shift(const FoldedPulse &rec, const Weighted &m, std::size_t n,
+                                     std::size_t entry, int reach)
 {
   std::vector<double> c;
-  for (int k = -reach; k <= reach; ++k) c.push_back(chi2_at(rec, m, n, k));
+  for (int k = -reach; k <= reach; ++k) c.push_back(chi2_at(rec, m, n, entry, k));
   const auto i = static_cast<std::size_t>(std::min_element(c.begin(), c.end()) - c.begin());
   double best = c[i], shift = static_cast<double>(i) - reach;
   if (i > 0 && i + 1 < c.size()) {
     const double curv = c[i - 1] - 2 * c[i] + c[i + 1];
     if (curv > 0) {
       const double s = shift + 0.5 * (c[i - 1] - c[i + 1]) / curv;
-      const double v = chi2_at(rec, m, n, s);
+      const double v = chi2_at(rec, m, n, entry, s);
       if (v < best) best = v, shift = s;
     }
   }
@@ -248,7 +244,7 @@ std::pair<double, double> range_under(const std::vector<double> &g, const std::v
 std::vector<double> without_cycle(const std::vector<double> &y, const std::vector<double> &se)
 {
   const std::size_t n = y.size();
-  const double tau = 2 * 3.14159265358979323846 / static_cast<double>(n);
+  const double tau = 2 * kPi / static_cast<double>(n);
   double m[3][4] = {};  // normal equations [A | b] of a + b cos + c sin
   for (std::size_t j = 0; j < n; ++j) {
     const double u = static_cast<double>(j) / static_cast<double>(n);
@@ -272,7 +268,8 @@ std::vector<double> without_cycle(const std::vector<double> &y, const std::vecto
   const double b = m[1][3] / m[1][1], c = m[2][3] / m[2][2];
   std::vector<double> out(y);
   for (std::size_t j = 0; j < n; ++j)
-    out[j] -= b * std::cos(tau * static_cast<double>(j)) + c * std::sin(tau * static_cast<double>(j));
+    out[j] -= b * std::cos(tau * static_cast<double>(j)) +
+              c * std::sin(tau * static_cast<double>(j));
   return out;
 }
 
@@ -309,8 +306,8 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   std::vector<double> sizes, angles;
   bank_grid(bank, sizes, angles);
   if (std::fabs(bank.bin_s / rec.bin_s - 1) > 1e-6) {
-    f.note = "not determined: the bank's fold bins (" + std::to_string(bank.bin_s) +
-             " s) are not the record's (" + std::to_string(rec.bin_s) +
+    f.note = "not determined: the bank's fold bins (" + format_number(bank.bin_s, 6) +
+             " s) are not the record's (" + format_number(rec.bin_s, 6) +
              " s): another sampling rate";
     return f;
   }
@@ -336,8 +333,9 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   std::vector<double> shift_at(sizes.size(), 0.0);
   for (std::size_t ia = 0; ia < angles.size(); ++ia)
     for (std::size_t is = 0; is < sizes.size(); ++is) {
-      const Mix m = mix({{at(ia, is), 1.0}}, len, kModelJitterS / rec.bin_s);
-      const auto [c, shift] = best_shift(own, m, n, reach);
+      const PulseTemplate &t = *at(ia, is);
+      const Weighted m = weighted(t, n, kModelJitterS / rec.bin_s);
+      const auto [c, shift] = best_shift(own, m, n, t.y.size() / 4, reach);
       if (c < prof_s[is]) prof_s[is] = c, shift_at[is] = shift;
       prof_a[ia] = std::min(prof_a[ia], c);
     }
@@ -396,10 +394,10 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   const double flat = *std::max_element(prof_s.begin(), prof_s.end()) - best;
   f.valid = true;
   f.note = "pulse template fit: " + std::to_string(rec.passes) + " passes folded at 1/" +
-           std::to_string(kTemplateOversample) + " sample, " + std::to_string(bank.templates.size()) +
-           " templates, reduced chi-square " + std::to_string(f.chi2_reduced).substr(0, 5) +
-           ", the profile rises by " + std::to_string(flat / rise).substr(0, 6) +
-           " times the interval's threshold over the bank's sizes";
+           std::to_string(kTemplateOversample) + " sample, " +
+           std::to_string(bank.templates.size()) + " templates, reduced chi-square " +
+           format_number(f.chi2_reduced, 3) + ", the profile rises by " +
+           format_number(flat / rise, 3) + " times the interval's threshold over the bank's sizes";
   return f;
 }
 

@@ -93,7 +93,8 @@ BankFile read_template_bank(const std::string &path)
     b.bank.templates.push_back(std::move(t));
   }
   if (b.bearing.empty() || b.defect.empty() || !(b.rate > 0) || !has_bin || !(b.bank.bin_s > 0))
-    bad(path, "the header must give the bearing, the defect, the sampling rate (Hz) and the bin (s)");
+    bad(path,
+        "the header must give the bearing, the defect, the sampling rate (Hz) and the bin (s)");
   if (b.defect != "inner" && b.defect != "outer") bad(path, "the defect must be inner or outer");
   std::vector<double> sizes, angles;
   try {
