@@ -386,8 +386,13 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
                       : std::nan("");
   if (angles.size() > 1) {
     const auto [alo, ahi] = range_under(angles, prof_a, best + rise, false);
-    f.angle_lo_deg = std::min(alo, f.angle_deg);
-    f.angle_hi_deg = std::max(ahi, f.angle_deg);
+    // no template lies between the bank's angles (the shape changes too much to mix them): the
+    // interval widened by half their largest step
+    double step = 0;
+    for (std::size_t i = 1; i < angles.size(); ++i)
+      step = std::max(step, angles[i] - angles[i - 1]);
+    f.angle_lo_deg = std::max(0.0, std::min(alo, f.angle_deg) - step / 2);
+    f.angle_hi_deg = std::max(ahi, f.angle_deg) + step / 2;
   }
   f.profile_size_deg = sizes;
   f.profile_chi2 = prof_s;
