@@ -61,7 +61,8 @@ def main(argv):
         cells = []
         for rate in RATES:
             k = c + (rate, "low")
-            cells.append(f"{cell(new.get(k))} ({cell(old.get(k)).split(',')[0]})" if k in new else "-")
+            today = cell(old.get(k)).split(',')[0]
+            cells.append(f"{cell(new.get(k))} ({today})" if k in new else "-")
         lines.append(f"| {c[0]} | {kind(r0)} | {c[3]:g} | " + " | ".join(cells) + " |")
     lines += ["", "Coverage of the interval (one not sized counts as not covered) and, in brackets, "
               "the cases within 15 %, low / high noise; today's in the second row of each:", "",

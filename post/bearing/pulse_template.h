@@ -5,11 +5,12 @@
 // equivalent-time sampling), with each bin's standard error from the scatter of the samples that
 // fell in it. A bank of the same folds from short simulations of the same scene at known sizes
 // (and, for an outer pit under a radial load, angles from the load direction), each passed
-// through the record's own acquisition chain, is fitted to it: shifted in time (sub-bin), offset
-// by a constant, interpolated between its sizes (and angles); the size minimises the weighted
-// squared misfit. The interval is the profile's rise of the chi-square quantile, scaled by the
-// fit's reduced chi-square when above 1 (a misfit the pass scatter does not explain), then
-// widened by the bank's own interpolation error (held-out simulated sizes).
+// through the record's own acquisition chain, is fitted to it: each template shifted in time
+// (sub-bin) and offset by a constant; the size is the vertex of the parabola through the least
+// weighted squared misfit and its neighbours (the angle likewise). The interval is the profile's
+// rise of the chi-square quantile, scaled by the fit's reduced chi-square when above 1 (a misfit
+// the pass scatter does not explain), then widened by the bank's own error (held-out simulated
+// sizes).
 //
 // Where the area saturates (a ring free to move undoes the jump within ~100 us) the shape still
 // changes with the size: the exit's strike moves, the dip after the return deepens. Where it does

@@ -134,7 +134,7 @@ void check_bank(const BankFile &b, const Signal &s, const std::string &record_pa
     throw Error(head + "for the bearing " + b.bearing + ", the record is of " + bearing);
   if (!defect.empty() && b.defect != defect)
     throw Error(head + "for an " + b.defect + " defect, the one sized is " + defect +
-                " (--assume-defect)");
+                " (identified, or --assume-defect)");
   if (!load.empty() && !b.load.empty() && b.load != load)
     throw Error(head + "under the " + b.load + " load, the record's is " + load + " (--load)");
 }
