@@ -18,6 +18,8 @@
 
 namespace ohmdem::post {
 
+struct TemplateBank;  // bearing/pulse_template.h
+
 struct DiagnoseOptions {
   BearingGeometry geometry;
   double fr = 0;            // shaft frequency (Hz)
@@ -45,6 +47,8 @@ struct DiagnoseOptions {
   // through the record's chain; where the record's width lies on it, the size is read off it
   std::vector<double> width_curve_size_deg, width_curve_s;
   double width_rel_error = 0;        // its own relative error, as curve_rel_error
+  // the model's pulse templates (bearing/pulse_template.h) for the template-fit size, or none
+  const TemplateBank *template_bank = nullptr;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
   // Mains frequencies (Hz) whose harmonic combs are masked where they stand out (the supply's

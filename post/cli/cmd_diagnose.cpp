@@ -10,10 +10,12 @@
 #include "bearing/double_impulse.h"
 #include "bearing/order_diagnose.h"
 #include "bearing/pass_energy.h"
+#include "bearing/pulse_template.h"
 #include "cli/commands.h"
 #include "cli/common.h"
 #include "cli/other_channel_input.h"
 #include "cli/shaft_angle.h"
+#include "cli/template_bank_input.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/text_scan.h"
@@ -169,7 +171,15 @@ int run_diagnose(const std::vector<std::string> &argv)
            "area (default: the electrical pulses' area), double-impulse (an accelerometer "
            "record: the delay between the ball's entry and exit events in the pit) or "
            "accel-curve (an accelerometer record: the passes' energy on the model's "
-           "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s)");
+           "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s) or template (an "
+           "electrical record: its folded pulse's shape fitted with the --template-bank)");
+  a.option("--template-bank", "FILE",
+           "the model's pulse templates for --size-method template: folds of simulations of the "
+           "same scene at known sizes (and angles from the load) through the record's chain "
+           "(studies/template_bank.py writes it)");
+  a.option("--pulse-fold-out", "FILE",
+           "write the record's pulse fold at the defect's frequency (relative to the level, per "
+           "1/4 sample: lines 'Y SE'), from which studies/template_bank.py makes a bank");
   a.option("--width-curve", "FILE",
            "the model's width curve from simulations of the same scene through the record's "
            "chain: lines 'SIZE_DEG WIDTH_S' (the pulses' entry-to-exit width, JSON "
@@ -219,9 +229,20 @@ int run_diagnose(const std::vector<std::string> &argv)
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
   const bool double_impulse = size_method == "double-impulse";
   const bool accel_curve = size_method == "accel-curve";
-  if (!double_impulse && !accel_curve && size_method != "area")
-    throw Error("diagnose: --size-method must be area, double-impulse or accel-curve, got '" +
-                size_method + "'");
+  const bool by_template = size_method == "template";
+  if (!double_impulse && !accel_curve && !by_template && size_method != "area")
+    throw Error(
+        "diagnose: --size-method must be area, double-impulse, accel-curve or template, got '" +
+        size_method + "'");
+  if (by_template != a.has("--template-bank"))
+    throw Error(by_template ? "diagnose: --size-method template needs --template-bank FILE"
+                            : "diagnose: --template-bank needs --size-method template");
+  std::optional<BankFile> bank;
+  if (by_template) {
+    bank = read_template_bank(a.get("--template-bank"));
+    check_bank(*bank, s, input_options(a).files.at(0), o.geometry.name, "", o.load);
+    o.template_bank = &bank->bank;
+  }
   if (a.has("--size-curve"))  // accel-curve: the passes' energy against size, else the area
     read_curve(a.get("--size-curve"), "--size-curve", accel_curve ? "ENERGY_V2S" : "AREA_S",
                o.curve_size_deg, o.curve_rel_area_s);
@@ -296,6 +317,10 @@ int run_diagnose(const std::vector<std::string> &argv)
     throw Error(
         "diagnose: --size-method double-impulse needs a record at constant speed and "
         "takes no --size-curve, --width-curve or --pulse-height (they belong to the area method)");
+  if (by_template && in_orders)
+    throw Error(
+        "diagnose: --size-method template needs a record at constant speed (the bank's folds "
+        "are at the scene's speed)");
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "
@@ -303,6 +328,13 @@ int run_diagnose(const std::vector<std::string> &argv)
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
   if (double_impulse && o.estimate_size) d.located = locate_by_double_impulse(s, d, o);
   if (accel_curve && o.estimate_size) d.located = locate_by_pass_energy(s, d, o);
+  if (by_template && o.estimate_size) {
+    const std::string sized = o.assume_defect.empty() ? d.defect : o.assume_defect;
+    if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", "", sized, "");
+    d.located = locate_by_template(s, d, o);
+  }
+  if (a.has("--pulse-fold-out"))
+    write_fold(a.get("--pulse-fold-out"), record_fold(s, d, o), input_options(a).files.at(0));
   name_flags(d.detection);
   d.located.method = flag_named(d.located.method);
   d.located.height_source = flag_named(d.located.height_source);

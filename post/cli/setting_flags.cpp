@@ -49,6 +49,7 @@ const SettingFlags &setting_flags()
       {"diagnose.width_curve", "--width-curve"},
       {"diagnose.width_rel_error", "--width-model-error"},
       {"diagnose.pulse_height", "--pulse-height"},
+      {"diagnose.template_bank", "--template-bank"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},
       {"geometry.dp", "--dp"},

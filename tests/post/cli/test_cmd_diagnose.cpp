@@ -219,6 +219,74 @@ TEST(Cli, DiagnoseSizesFromTheEdgesWhereTheAreaStopsGrowing)
       << alone.out;
 }
 
+// Issue 26, the template fit on a held-out simulated record where the area and the width fail:
+// a 2 deg inner pit under the `force` load (the ring tightens within 55 us; the area's curve read
+// it -83 %, the width saturates), the sizing study's run acquired at 20 kHz, 16 bits, low noise,
+// first 0.15 s. The bank is studies/template_bank.py's for that scene and chain (runs at 0.2 ...
+// 4.27 deg, 12 % apart: no 2 deg run; its own error in its header); on the full 0.3 s record the
+// study reads 2 deg within 2 % (doc/ohmdem-post.md), here within the 15 % of the issue's goal.
+TEST(Cli, DiagnoseSizesByTemplateWhereTheAreaAndWidthFail)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  const std::string bank = data + "bank_inner_force_r20000_low.txt";
+  const std::string base = "diagnose " + data + "inner_2_force_p90_20kHz.txt --column V " +
+                           "--metadata " + data + "inner_2_force_p90.json --format json " +
+                           "--assume-defect inner";
+  const CliRun r = run(base + " --size-method template --template-bank " + bank);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json j = Json::parse(r.out, "diagnose output");
+  EXPECT_NEAR(j.find("size_deg")->number(), 2.0, 0.3) << r.out;
+  const Json &iv = *j.find("size_interval_deg");
+  EXPECT_LE(iv[0].number(), 2.0);
+  EXPECT_GE(iv[1].number(), 2.0);
+  EXPECT_EQ(j.find("size_method")->string().rfind("pulse template fit", 0), 0U)
+      << j.find("size_method")->string();
+  // the option and the method go together
+  const CliRun no_bank = run(base + " --size-method template");
+  EXPECT_NE(no_bank.status, 0);
+  EXPECT_NE(no_bank.out.find("--size-method template needs --template-bank"), std::string::npos)
+      << no_bank.out;
+  const CliRun no_method = run(base + " --template-bank " + bank);
+  EXPECT_NE(no_method.status, 0);
+  EXPECT_NE(no_method.out.find("--template-bank needs --size-method template"), std::string::npos);
+  // a bank of another defect
+  const CliRun outer = run(base + " --size-method template --template-bank " + bank +
+                           " --assume-defect outer");
+  EXPECT_NE(outer.status, 0);
+  EXPECT_NE(outer.out.find("for an inner defect, the one sized is outer"), std::string::npos)
+      << outer.out;
+}
+
+TEST(Cli, DiagnoseRefusesABadTemplateBank)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  const std::string base = "diagnose " + data + "inner_2_force_p90_20kHz.txt --column V " +
+                           "--metadata " + data + "inner_2_force_p90.json --format json " +
+                           "--assume-defect inner --size-method template --template-bank ";
+  const std::string good = test::slurp(data + "bank_inner_force_r20000_low.txt");
+  auto refused = [&](const std::string &name, const std::string &text, const std::string &says) {
+    const CliRun r = run(base + test::write_temp(name, text));
+    EXPECT_NE(r.status, 0) << name;
+    EXPECT_NE(r.out.find(says), std::string::npos) << name << ": " << r.out;
+    EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  };
+  refused("bank_garbage.txt", "# bearing: machado2014\n0.5 0 3 1 2\n", "expected '# KEY: VALUE'");
+  auto replaced = [&](const std::string &from, const std::string &to) {
+    std::string t = good;
+    t.replace(t.find(from), from.size(), to);
+    return t;
+  };
+  refused("bank_rate.txt", replaced("# sampling rate (Hz): 20000", "# sampling rate (Hz): 50000"),
+          "the record is sampled at 20000 Hz");
+  refused("bank_filter.txt", replaced("cut-off 8000 Hz", "cut-off 9000 Hz"),
+          "through the anti-alias filter");
+  refused("bank_bearing.txt", replaced("# bearing: machado2014", "# bearing: 6205"),
+          "for the bearing 6205");
+  refused("bank_load.txt", replaced("# load: force", "# load: fixed"), "under the fixed load");
+  // a template at another angle (15 deg) for one size only: sizes x angles no longer a full grid
+  refused("bank_partial.txt", good + "2 15 8 0 0 0 0 0 0 0 0 1 1 1 1 1 1 1 1\n", "a full grid");
+}
+
 TEST(Cli, DiagnoseCsvAndTable)
 {
   const std::string dir = make_run_dir("run_csv", "inner");

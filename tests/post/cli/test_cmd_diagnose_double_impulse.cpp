@@ -97,7 +97,8 @@ TEST(DiagnoseDoubleImpulse, BadInput)
   const std::string rec = test::write_temp("double_impulse_bad.txt", text);
   CliRun r = run("diagnose " + rec + " --rate 50000 --rpm 1797 --bearing 6205 --size-method pulse");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("--size-method must be area, double-impulse or accel-curve, got 'pulse'"),
+  EXPECT_NE(r.out.find("--size-method must be area, double-impulse, accel-curve or template, "
+                       "got 'pulse'"),
             std::string::npos)
       << r.out;
   r = run(

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// diagnose --template-bank FILE: the model's pulse templates (bearing/pulse_template.h), read and
+// checked against the record's own acquisition chain (the header `acquire` writes).
+//
+// The file: '#' header lines 'KEY: VALUE' - bearing, defect, load, sampling rate (Hz), lowpass
+// (the chain's anti-alias filter as acquire states it), bin (s), model error - then one line per
+// template: SIZE_DEG ANGLE_DEG N Y_1 ... Y_N SE_1 ... SE_N (the fold relative to the level, its
+// standard error per bin). studies/template_bank.py writes it.
+#ifndef OHMDEM_POST_CLI_TEMPLATE_BANK_INPUT_H
+#define OHMDEM_POST_CLI_TEMPLATE_BANK_INPUT_H
+
+#include <string>
+
+#include "bearing/pulse_template.h"
+#include "core/sampled_signal.h"
+
+namespace ohmdem::post::cli {
+
+struct BankFile {
+  TemplateBank bank;
+  std::string bearing, defect, load, lowpass;
+  double rate = 0;
+};
+
+// Throws Error naming --template-bank and the expected form on any malformed line.
+BankFile read_template_bank(const std::string &path);
+
+// Refuses a bank of another rate, anti-alias filter (when `record_path`'s header states one),
+// bearing, defect or load; `defect` and `load` empty: not checked.
+void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,
+                const std::string &bearing, const std::string &defect, const std::string &load);
+
+// The lowpass line of an acquired record's header ("Butterworth order 4, cut-off 8000 Hz
+// (-3 dB)"), without the input rate's sections; empty when the header has none.
+std::string record_lowpass(const std::string &record_path);
+
+// --pulse-fold-out FILE: the record's fold, for a bank (header lines, then 'Y SE' per bin).
+void write_fold(const std::string &path, const FoldedPulse &p, const std::string &record_path);
+
+}  // namespace ohmdem::post::cli
+
+#endif
