@@ -481,15 +481,8 @@ LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const 
   }
   const FoldedPulse p = fold_pulse(s.x, s.rate, r.f);
   const TemplateFit f = fit_templates(p, *o.template_bank);
-  set_method(l, r, f.note);
-  l.passes = f.passes;
-  if (!f.valid) return l;
-  l.valid = true;
-  l.size_deg = f.size_deg;
-  l.size_lo_deg = f.size_lo_deg;
-  l.size_hi_deg = f.size_hi_deg;
-  l.arc_m = race_arc_m(o.geometry, r.defect, f.size_deg);
-  if (std::isfinite(f.angle_deg)) pick_branch(l, f);
+  l = take_size(l, r, o.geometry, f);
+  if (l.valid && std::isfinite(f.angle_deg)) pick_branch(l, f);
   return l;
 }
 
