@@ -222,17 +222,18 @@ def width_curve(out, defect, load, rate, noise):
     return path, best, err
 
 
-def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False):
+def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False, seed=1):
     """The electrical channel acquired, plus the shaft angle the deck's angle_inner holds. The
-    fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range."""
+    fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range. seed: the acquisition noise's
+    (the study's and the banks' 1; studies/template_heldout.py another)."""
     ch = detectability.CHANNELS["R"]
     lo, hi = ch["range"] if load == "radial" else (0.0, 0.2)
     tmp = dest + ".acq"
     r = common.post(["acquire", "--column", "R", "--scale", repr(ch["scale"]), "--from",
                      repr(T_FROM), "--lowpass", repr(0.4 * rate), "--order", "4", "--rate",
                      repr(rate), "--bits", "16", "--range", repr(lo), repr(hi),
-                     "--noise-density", repr(ch["noise"][noise]), "--seed", "1", "--name", "V",
-                     "--unit", "V", "--output", tmp, os.path.join(sim, "signal.txt")],
+                     "--noise-density", repr(ch["noise"][noise]), "--seed", str(seed),
+                     "--name", "V", "--unit", "V", "--output", tmp, os.path.join(sim, "signal.txt")],
                     who="sizing", allow_fail=allow_fail)
     if r.returncode != 0:
         return False
