@@ -200,6 +200,31 @@ def post_to(path, args, who="study"):
         f.write(post(args, who).stdout)
 
 
+def write_csv(path, rows, quoted=()):
+    """The study's rows (dicts with the same keys) as CSV: None empty, floats to 6 digits; the
+    `quoted` columns (free text) in double quotes, theirs turned into single ones."""
+    cols = list(rows[0].keys())
+
+    def cell(c, v):
+        if c in quoted:
+            return '"' + str(v).replace('"', "'") + '"'
+        if v is None:
+            return ""
+        return f"{v:.6g}" if isinstance(v, float) else str(v)
+
+    with open(path, "w") as f:
+        f.write(",".join(cols) + "\n")
+        for r in rows:
+            f.write(",".join(cell(c, r[c]) for c in cols) + "\n")
+
+
+def interval_text(low, high):
+    """[low, high] to 3 digits, 'open' for a missing high; '-' without an interval."""
+    if low is None:
+        return "-"
+    return f"[{low:.3g}, " + ("open" if high is None else f"{high:.3g}") + "]"
+
+
 def read_signal(path, t0=None):
     """signal.txt as {column: numpy array}, only the rows with time > t0 when given."""
     import numpy as np

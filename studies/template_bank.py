@@ -147,12 +147,7 @@ def make_bank(out, defect, load, rate, noise):
 
 
 def write_csv(out, rows):
-    cols = list(rows[0].keys())
-    with open(os.path.join(out, "template.csv"), "w") as f:
-        f.write(",".join(cols) + "\n")
-        for r in rows:
-            f.write(",".join("" if r[c] is None else f"{r[c]:.6g}" if isinstance(r[c], float)
-                             else str(r[c]) for c in cols) + "\n")
+    common.write_csv(os.path.join(out, "template.csv"), rows)
 
 
 def main(argv):
@@ -208,8 +203,7 @@ def main(argv):
              "interval | error | covers |", "|---" * 10 + "|"]
     for r in rows:
         est = "-" if r["size_deg_est"] is None else f"{r['size_deg_est']:.3g}"
-        iv = "-" if r["low"] is None else f"[{r['low']:.3g}, " + (
-            "open" if r["high"] is None else f"{r['high']:.3g}") + "]"
+        iv = common.interval_text(r["low"], r["high"])
         err = "-" if r["error_pct"] is None else f"{r['error_pct']:+.1f} %"
         lines.append(f"| {r['load']} | {r['defect']} | {r['size_deg']:g} | {r['position_deg']:g} | "
                      f"{r['rate_hz']:g} | {r['noise']} | {est} | {iv} | {err} | "

@@ -97,13 +97,7 @@ def main(argv):
             print(f"{defect} {size:g} {load} p{place:g}: {r['size_deg_est']} [{r['low']}, "
                   f"{r['high']}] covers {r['covers']} {r['note']}", flush=True)
             rows.append(r)
-    cols = list(rows[0].keys())
-    with open(os.path.join(a.out, "heldout.csv"), "w") as f:
-        f.write(",".join(cols) + "\n")
-        for r in rows:
-            f.write(",".join('"' + str(r[c]).replace('"', "'") + '"' if c in ("note", "fit")
-                             else "" if r[c] is None else f"{r[c]:.6g}"
-                             if isinstance(r[c], float) else str(r[c]) for c in cols) + "\n")
+    common.write_csv(os.path.join(a.out, "heldout.csv"), rows, quoted=("note", "fit"))
     n = len(rows)
     within = sum(r["error_pct"] is not None and abs(r["error_pct"]) <= 15 for r in rows)
     covered = sum(bool(r["covers"]) for r in rows)
@@ -117,8 +111,7 @@ def main(argv):
              "error | interval | covered | position error (deg) | note |", "|---" * 11 + "|"]
     for r in rows:
         est = "not sized" if r["size_deg_est"] is None else f"{r['size_deg_est']:.3g}"
-        iv = "-" if r["low"] is None else f"[{r['low']:.3g}, " + (
-            "open" if r["high"] is None else f"{r['high']:.3g}") + "]"
+        iv = common.interval_text(r["low"], r["high"])
         e = "-" if r["error_pct"] is None else f"{r['error_pct']:+.1f} %"
         pe = "-" if r["position_error_deg"] is None or r["load"] != "radial" else \
             f"{r['position_error_deg']:+.1f}" + (" mod" if r["position_modulo"] else "")
