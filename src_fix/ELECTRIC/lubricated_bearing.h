@@ -22,6 +22,7 @@
 #include "lubrication/race_admittance.h"
 #include "pointers.h"
 #include "support/bearing_surface.h"
+#include "support/race_contact_view.h"
 
 namespace LAMMPS_NS {
 
@@ -83,17 +84,20 @@ class LubricatedBearing : protected Pointers {
   // Collective: the last evaluation's smallest films and lambda over all processes (outputs
   // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
   void minima(LubricatedResult &out) const;
-  // This process's records of the last evaluation (two per ball, high race first).
-  const std::vector<LubricatedContact> &contacts() const { return contacts_; }
+  // This process's records of the last evaluation (two per ball, high race first), built at
+  // the first call after it.
+  const std::vector<LubricatedContact> &contacts() const;
   const LubricatedNetwork &network() const { return *network_; }
   double omega() const { return omega_; }
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // Ball i's contact with race `side` into the record `out` (fresh): the gap's capacitance to a
-  // race the ball does not press, else `loaded` and the contact's inputs into the race's batch
-  // (g_ball: the ball's dry, metallic conductance between its two races).
-  void collect(int i, int side, double g_ball, LubricatedContact &out);
+  // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
+  // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
+  // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
+  // races). Returns its index in the batch, or -1 - its index in idle_.
+  int collect(int i, int side, double g_ball, const ohmdem::RaceContactView &view, double speed);
+  void build_records() const;  // contacts_ from balls_in_, films_ and idle_
   // A pressed contact's record from its admittance.
   void fill(const ohmdem::lubrication::ContactAdmittance &c, LubricatedContact &out) const;
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
@@ -125,7 +129,16 @@ class LubricatedBearing : protected Pointers {
     ohmdem::PitView pit;
   };
   std::vector<PitFix> pit_fixes_;
-  std::vector<LubricatedContact> contacts_;
+  // Per local ball of the last evaluation: its tag and, per side, its index in films_[side]
+  // (>= 0) or -1 - its index in idle_ (a race it does not press).
+  struct BallRefs {
+    std::int64_t tag = 0;
+    int ref[2] = {0, 0};
+  };
+  std::vector<BallRefs> balls_in_;
+  std::vector<LubricatedContact> idle_;
+  mutable std::vector<LubricatedContact> contacts_;  // the records (build_records())
+  mutable bool records_ready_ = false;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;
   std::unique_ptr<LubricatedNetwork> network_;
