@@ -188,7 +188,7 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
   batch_[side].add(view.fn(), speed,
                    view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                   recess);  // other defects' recess under the contact
+                   recess);                               // other defects' recess under the contact
   return static_cast<int>(index);
 }
 
@@ -266,8 +266,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     batch_[side].clear();
   }
   const RaceMotion &m0 = motion_[0], &m1 = motion_[1];
-  const RaceLanes2 motion = {{m0.cx, m1.cx}, {m0.cy, m1.cy}, {m0.w, m1.w}, {m0.vcx, m1.vcx},
-                             {m0.vcy, m1.vcy}};
+  const RaceLanes2 motion = {
+      {m0.cx, m1.cx}, {m0.cy, m1.cy}, {m0.w, m1.w}, {m0.vcx, m1.vcx}, {m0.vcy, m1.vcy}};
   // Per ball its two contacts: per race its pressed contacts' inputs, or an idle record ...
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
@@ -281,7 +281,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
                                          v2d{view[0].point_y(), view[1].point_y()}, motion);
     BallRefs &b = balls_in_.emplace_back();
     b.tag = static_cast<std::int64_t>(atom->tag[i]);
-    for (int side = 0; side < 2; ++side) b.ref[side] = collect(i, side, g_ball, view[side], speed[side]);
+    for (int side = 0; side < 2; ++side)
+      b.ref[side] = collect(i, side, g_ball, view[side], speed[side]);
   }
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) {
