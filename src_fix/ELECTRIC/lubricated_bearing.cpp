@@ -2,6 +2,7 @@
 // compute network/resistance with a lubricant; see lubricated_bearing.h.
 #include "ELECTRIC/lubricated_bearing.h"
 
+#include <emmintrin.h>
 #include <mpi.h>
 
 #include <algorithm>
@@ -55,7 +56,7 @@ v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px,
   const v2d ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
   // The component along the unit tangent (-ny, nx)/|n|: one division.
   const v2d along = -ny * ux + nx * uy, n2 = nx * nx + ny * ny;
-  const v2d norm = {std::sqrt(n2[0]), std::sqrt(n2[1])};
+  const v2d norm = (v2d)_mm_sqrt_pd((__m128d)n2);  // correctly rounded, as std::sqrt
   const v2d magnitude = (v2d)((v2i)along & (v2i){kAbsMask, kAbsMask});  // fabs
   return magnitude / norm;
 }
@@ -165,7 +166,7 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   const FixBearingRace &race = *race_[side];
   // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
   // defects under the contact (a ball's pit) add their recess over the whole circle.
-  ohmdem::PitView pit;
+  ohmdem::PitView &pit = pit_;  // set, and read, only near a pit
   double recess = 0.0;
   const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
   if (!(view.fn() > 0.0)) {
@@ -182,13 +183,13 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
     out.lambda = out.h_min / settings_.roughness;
     return -static_cast<int>(idle_.size());
   }
-  // The few contacts near a race pit: the Hertz zone and the gap over the strip, once the batch
-  // has the contact's film (evaluate()).
-  const std::size_t index = batch_[side].size();
+  // Into the race's batch; the few contacts near a race pit also get the Hertz zone and the gap
+  // over the strip, once the batch has the contact's film (evaluate()).
+  const std::size_t index =
+      batch_[side].add(view.fn(), speed,
+                       view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+                       recess);  // other defects' recess under the contact
   if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
-  batch_[side].add(view.fn(), speed,
-                   view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                   recess);                               // other defects' recess under the contact
   return static_cast<int>(index);
 }
 
@@ -279,10 +280,9 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     const v2d speed = entrainment_speeds(atom->x[i], atom->v[i], atom->omega[i][2],
                                          v2d{view[0].point_x(), view[1].point_x()},
                                          v2d{view[0].point_y(), view[1].point_y()}, motion);
-    BallRefs &b = balls_in_.emplace_back();
-    b.tag = static_cast<std::int64_t>(atom->tag[i]);
-    for (int side = 0; side < 2; ++side)
-      b.ref[side] = collect(i, side, g_ball, view[side], speed[side]);
+    const int ref0 = collect(i, 0, g_ball, view[0], speed[0]);
+    const int ref1 = collect(i, 1, g_ball, view[1], speed[1]);
+    balls_in_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ref0, ref1}});
   }
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) {
@@ -348,14 +348,20 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   local_min_[0] = hmin[0];
   local_min_[1] = hmin[1];
   local_min_[2] = lambda_min;
-  const lub::Impedance z = lub::impedance(y_bearing, omega());
+  y_bearing_ = y_bearing;
+  current_ = context.current;
+  return out;
+}
+
+void LubricatedBearing::impedance(LubricatedResult &out) const
+{
+  const lub::Impedance z = lub::impedance(y_bearing_, omega());
   out.z_abs = z.z_abs;
   out.z_phase = z.z_phase;
   out.c_parallel = z.c_parallel;
   out.r_parallel = z.r_parallel;
-  out.v_high = y_bearing == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
-                                                           : context.current / y_bearing;
-  return out;
+  out.v_high = y_bearing_ == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
+                                                            : current_ / y_bearing_;
 }
 
 void LubricatedBearing::minima(LubricatedResult &out) const

@@ -76,14 +76,19 @@ class LubricatedBearing : protected Pointers {
   // the first evaluation of the run.
   void init(const ResistanceContext &context);
   ~LubricatedBearing() override;
-  // Collective: this step's impedance; `gather` (an export step) also gathers the records
-  // of all processes (network()) when the closed form runs. g_dry: the dry closed form's
-  // conductance of this step per local atom (NaN where it has none), or null.
+  // Collective: this step's admittance of the bearing; `gather` (an export step) also gathers
+  // the records of all processes (network()) when the closed form runs. g_dry: the dry closed
+  // form's conductance of this step per local atom (NaN where it has none), or null. The
+  // result's impedance and minima are left to impedance() and minima().
   LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
                             const double *g_dry = nullptr);
   // Collective: the last evaluation's smallest films and lambda over all processes (outputs
   // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
   void minima(LubricatedResult &out) const;
+  // The last evaluation's impedance (outputs 9-12) and the high electrode's phasor into out,
+  // from its admittance. Apart from evaluate() too: a step where nothing reads them pays
+  // nothing (one complex division, a hypot and an atan2, ~0.3k instructions).
+  void impedance(LubricatedResult &out) const;
   // This process's records of the last evaluation (two per ball, high race first), built at
   // the first call after it.
   const std::vector<LubricatedContact> &contacts() const;
@@ -116,6 +121,8 @@ class LubricatedBearing : protected Pointers {
   const FixBearingRace *race_[2] = {nullptr, nullptr};
   RaceMotion motion_[2];             // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
+  std::complex<double> y_bearing_{0.0, 0.0};  // the bearing's admittance (evaluate())
+  double current_ = 0;                        // the current of that evaluation (A)
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
   // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
@@ -129,6 +136,7 @@ class LubricatedBearing : protected Pointers {
     ohmdem::PitView pit;
   };
   std::vector<PitFix> pit_fixes_;
+  ohmdem::PitView pit_;  // collect()'s: a member, not a fresh zeroed one per contact
   // Per local ball of the last evaluation: its tag and, per side, its index in films_[side]
   // (>= 0) or -1 - its index in idle_ (a race it does not press).
   struct BallRefs {

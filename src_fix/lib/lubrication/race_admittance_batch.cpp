@@ -184,8 +184,9 @@ struct RaceLanes {
       const v4d e = -xm * xm;
       const v4i fast = bound_lanes & (e > -708.0) & (e < 709.0);  // exp_fast's range
       v4d ex = lanes::exp<kAvx2>(select<kAvx2>(fast, e, splat(0.0)));
-      for (int l = 0; l < kLanes; ++l)
-        if (bound_lanes[l] && !fast[l]) ex[l] = exp_fast(e[l]);
+      if (!lanes::all<kAvx2>(fast | ~bound_lanes))
+        for (int l = 0; l < kLanes; ++l)
+          if (bound_lanes[l] && !fast[l]) ex[l] = exp_fast(e[l]);
       const v4d bound = ex / (xm * kSqrtPi);
       negligible |= bound_lanes & (bound <= 0x1p-54) & (bound * g_dry <= 1e-17 * leak);
     }
