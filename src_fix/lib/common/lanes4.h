@@ -7,7 +7,9 @@
 // model, so a lane's result is bit for bit the scalar one: it does not depend on the lane, on
 // the other lanes or on the instruction set (+ - * / sqrt are correctly rounded; no lane is
 // mixed with another). Inputs outside a fast range are not handled here: the callers keep
-// such lanes out (a harmless value) and give them to the scalar function.
+// such lanes out (a harmless value) and give them to the scalar function. A template argument
+// kAvx2 = true (only in code compiled for AVX2) reads tables with gathers and tests and blends
+// masks in one instruction each: the same loads and choices, so the same bits.
 // tests/lib/lubrication/test_race_admittance_batch.cpp checks the bits.
 #ifndef OHMDEM_LANES4_H
 #define OHMDEM_LANES4_H

@@ -7,8 +7,8 @@
 // the wetted circle not holding the ellipse) is redone by the scalar code, alone. A last group
 // of one contact goes to the scalar code too (cheaper than four lanes); one of two or three is
 // padded with a plain contact that is computed and dropped. The body is compiled
-// twice, for SSE2 and AVX2, chosen at run time: the same bits (no FMA: the file is built
-// with -ffp-contract=off).
+// twice, for SSE2 and AVX2 (there with lanes4.h's gathers, sign masks and blends: kAvx2),
+// chosen at run time: the same bits (no FMA: the file is built with -ffp-contract=off).
 #include <cmath>
 #include <cstddef>
 
