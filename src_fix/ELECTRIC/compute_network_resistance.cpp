@@ -340,12 +340,14 @@ void ComputeNetworkResistance::evaluate()
   }
   report(r);
   const bool due = exports_->due(update->ntimestep);
-  minima_step_ = -1;
+  minima_step_ = impedance_step_ = -1;
   if (lubricated_)
     lube_result_ = lubricated_->evaluate(
         context_, due,
         last_path_ == closed_form_path_.get() ? closed_form_path_->ball_conductances() : nullptr);
-  const VtkPartFn films = lubricated_ && due && exports_->draws()
+  const bool draw_films = lubricated_ && due && exports_->draws();
+  if (draw_films) lube_impedance();
+  const VtkPartFn films = draw_films
                               ? lube_vtk_->gather(*lubricated_, context_, lube_result_.v_high)
                               : VtkPartFn();  // collective
   if (last_path_ == gathered_.get() && comm->me == 0) {
@@ -404,6 +406,14 @@ double ComputeNetworkResistance::compute_scalar()
   return scalar;
 }
 
+// The impedance of the last evaluation into lube_result_, once per step that reads it.
+void ComputeNetworkResistance::lube_impedance()
+{
+  if (impedance_step_ == update->ntimestep) return;
+  lubricated_->impedance(lube_result_);
+  impedance_step_ = update->ntimestep;
+}
+
 void ComputeNetworkResistance::compute_vector()
 {
   invoked_vector = update->ntimestep;
@@ -414,6 +424,7 @@ void ComputeNetworkResistance::compute_vector()
       lubricated_->minima(lube_result_);  // collective, as compute_vector is
       minima_step_ = update->ntimestep;
     }
+    lube_impedance();
     const LubricatedResult &l = lube_result_;
     const double extra[LubricatedResult::kSize] = {
         l.z_abs, l.z_phase, l.c_parallel, l.r_parallel, l.hmin_inner, l.hmin_outer, l.lambda_min};
@@ -436,6 +447,7 @@ void ComputeNetworkResistance::compute_local()
 {
   invoked_local = update->ntimestep;
   evaluate();
+  if (lubricated_) lube_impedance();
   size_local_rows = lubricated_ ? local_->fill(*last_path_, context_, &lubricated_->contacts(),
                                                lube_result_.v_high)
                                 : local_->fill(*last_path_, context_);

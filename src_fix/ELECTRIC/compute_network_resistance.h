@@ -83,9 +83,11 @@ class ComputeNetworkResistance : public Compute {
   LubricatedResult lube_result_;
   std::unique_ptr<LubricatedVtk> lube_vtk_;  // with a lubricant: the contacts' VTK file
   void define_lubricant_variables();
+  void lube_impedance();
 
   bigint evaluated_step_ = -1;
-  bigint minima_step_ = -1;  // step whose lube_result_ holds the reduced minima
+  bigint minima_step_ = -1;     // step whose lube_result_ holds the reduced minima
+  bigint impedance_step_ = -1;  // step whose lube_result_ holds the impedance (lube_impedance())
   double result_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
   bool had_path_ = false;           // a conducting path existed at some evaluation

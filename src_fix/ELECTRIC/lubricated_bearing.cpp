@@ -2,6 +2,7 @@
 // compute network/resistance with a lubricant; see lubricated_bearing.h.
 #include "ELECTRIC/lubricated_bearing.h"
 
+#include <emmintrin.h>
 #include <mpi.h>
 
 #include <algorithm>
@@ -26,23 +27,38 @@ namespace lub = ohmdem::lubrication;
 
 namespace {
 
+typedef double v2d __attribute__((vector_size(16)));
+typedef std::int64_t v2i __attribute__((vector_size(16)));
+constexpr std::int64_t kAbsMask = 0x7fffffffffffffff;
+
+// The two sides' RaceMotion, lane s side s's.
+struct RaceLanes2 {
+  v2d cx, cy, w, vcx, vcy;
+};
+
 // The mean entrainment speed of a ball-race contact at point p: the tangential component of
 // the mean of the two surfaces' velocities, relative to the contact point, which travels with
 // the ball's orbit about the ring centre c. Pure rolling on a fixed outer ring gives
 // (omega_i - omega_cage) R_i at the inner contact. The ring's velocity at p is
 // FixBearingRace::surface_velocity's, from its terms taken once per race and step (m).
-double entrainment_speed(const double *x, const double *v, double omega_z, double px, double py,
-                         const RaceMotion &m)
+// A ball's two contacts at once, lane s the race of side s (SSE2, two doubles per operation):
+// each lane does the same IEEE operations in the same order as the one-contact form this
+// replaced (`(|-ny ux + nx uy|) / sqrt(nx^2 + ny^2)`), so the same bits.
+v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px, v2d py,
+                       const RaceLanes2 &m)
 {
-  const double rvx = m.vcx - m.w * (py - m.cy), rvy = m.vcy + m.w * (px - m.cx);
-  const double bvx = v[0] - omega_z * (py - x[1]), bvy = v[1] + omega_z * (px - x[0]);
-  const double ox = x[0] - m.cx, oy = x[1] - m.cy;
-  const double orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
-  const double pvx = -orbit * (py - m.cy), pvy = orbit * (px - m.cx);
-  const double nx = px - x[0], ny = py - x[1];
-  const double ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
+  const v2d rvx = m.vcx - m.w * (py - m.cy), rvy = m.vcy + m.w * (px - m.cx);
+  const v2d bvx = v[0] - omega_z * (py - x[1]), bvy = v[1] + omega_z * (px - x[0]);
+  const v2d ox = x[0] - m.cx, oy = x[1] - m.cy;
+  const v2d orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
+  const v2d pvx = -orbit * (py - m.cy), pvy = orbit * (px - m.cx);
+  const v2d nx = px - x[0], ny = py - x[1];
+  const v2d ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
   // The component along the unit tangent (-ny, nx)/|n|: one division.
-  return std::fabs(-ny * ux + nx * uy) / std::sqrt(nx * nx + ny * ny);
+  const v2d along = -ny * ux + nx * uy, n2 = nx * nx + ny * ny;
+  const v2d norm = (v2d)_mm_sqrt_pd((__m128d)n2);  // correctly rounded, as std::sqrt
+  const v2d magnitude = (v2d)((v2i)along & (v2i){kAbsMask, kAbsMask});  // fabs
+  return magnitude / norm;
 }
 
 // A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
@@ -142,42 +158,67 @@ double LubricatedBearing::ball_dry_conductance(const ResistanceContext &context,
 
 // A pressed contact's inputs go to its race's batch (its metallic part is half the ball's dry
 // path: 2 g_ball, the two in series give g_ball); a race the ball does not press gets the
-// capacitance of the gap to it. Inlined into evaluate()'s loop, its only caller: the call per
-// contact cost ~23 instructions (-0.6k per step, callgrind, bench/README.md).
-__attribute__((always_inline)) inline void LubricatedBearing::collect(int i, int side,
-                                                                      double g_ball,
-                                                                      LubricatedContact &out)
+// capacitance of the gap to it, as a record of its own. Returns the contact's index in its
+// race's batch, or -1 - its index in idle_. Inlined into evaluate()'s loop, its only caller.
+__attribute__((always_inline)) inline int LubricatedBearing::collect(
+    int i, int side, double g_ball, const ohmdem::RaceContactView &view, double speed)
 {
   const FixBearingRace &race = *race_[side];
-  const ohmdem::RaceContactView view = race.contact_of(i);
-  const double *x = atom->x[i], *v = atom->v[i];
-  out.tag = static_cast<std::int64_t>(atom->tag[i]);
-  out.side = side;
   // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
   // defects under the contact (a ball's pit) add their recess over the whole circle.
-  ohmdem::PitView pit;
+  ohmdem::PitView &pit = pit_;  // set, and read, only near a pit
   double recess = 0.0;
   const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
   if (!(view.fn() > 0.0)) {
+    LubricatedContact &out = idle_.emplace_back();
+    out.tag = static_cast<std::int64_t>(atom->tag[i]);
+    out.side = side;
     // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
-    const double gap = std::max(race_gap(x, atom->radius[i], race), 0.0) + recess;
+    const double gap = std::max(race_gap(atom->x[i], atom->radius[i], race), 0.0) + recess;
     out.c = near_pit ? lub::idle_over_pit(film_[side].input(), gap, pit_strip(pit))
                      : film_[side].idle(gap);
     out.y = {0.0, omega() * out.c};
     // The gap at the contact point (with the strip's recess there).
     out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(pit_strip(pit), 0.0) : gap;
     out.lambda = out.h_min / settings_.roughness;
-    return;
+    return -static_cast<int>(idle_.size());
   }
-  out.loaded = true;
-  // The few contacts near a race pit: the Hertz zone and the gap over the strip, once the batch
-  // has the contact's film (evaluate()).
-  if (near_pit) pit_fixes_.push_back({side, batch_[side].size(), view.fn(), recess, pit});
-  batch_[side].add(
-      view.fn(),
-      entrainment_speed(x, v, atom->omega[i][2], view.point_x(), view.point_y(), motion_[side]),
-      view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-      recess);                               // other defects' recess under the contact
+  // Into the race's batch; the few contacts near a race pit also get the Hertz zone and the gap
+  // over the strip, once the batch has the contact's film (evaluate()).
+  const std::size_t index =
+      batch_[side].add(view.fn(), speed,
+                       view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+                       recess);  // other defects' recess under the contact
+  if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
+  return static_cast<int>(index);
+}
+
+// The records of the last evaluation, two per ball, from the races' admittances and the idle
+// contacts' records: built when read (contacts()), or by evaluate() when it needs them.
+void LubricatedBearing::build_records() const
+{
+  contacts_.resize(2 * balls_in_.size());
+  for (std::size_t n = 0; n < balls_in_.size(); ++n)
+    for (int side = 0; side < 2; ++side) {
+      const int ref = balls_in_[n].ref[side];
+      LubricatedContact &c = contacts_[2 * n + side];
+      if (ref < 0) {
+        c = idle_[-1 - ref];
+        continue;
+      }
+      c = LubricatedContact();
+      c.tag = balls_in_[n].tag;
+      c.side = side;
+      c.loaded = true;
+      fill(films_[side][ref], c);
+    }
+  records_ready_ = true;
+}
+
+const std::vector<LubricatedContact> &LubricatedBearing::contacts() const
+{
+  if (!records_ready_) build_records();
+  return contacts_;
 }
 
 void LubricatedBearing::fill(const lub::ContactAdmittance &c, LubricatedContact &out) const
@@ -214,22 +255,34 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 
-  contacts_.clear();
+  balls_in_.clear();
+  idle_.clear();
   balls_.clear();
   pit_fixes_.clear();
+  records_ready_ = false;
   for (int side = 0; side < 2; ++side) {
     RaceMotion &m = motion_[side];
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
     batch_[side].clear();
   }
-  // The records, and per race its pressed contacts' inputs ...
+  const RaceMotion &m0 = motion_[0], &m1 = motion_[1];
+  const RaceLanes2 motion = {
+      {m0.cx, m1.cx}, {m0.cy, m1.cy}, {m0.w, m1.w}, {m0.vcx, m1.vcx}, {m0.vcy, m1.vcy}};
+  // Per ball its two contacts: per race its pressed contacts' inputs, or an idle record ...
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
     // The closed form's conductance of this step where it has one (NaN: it has none).
     const double g_ball =
         g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
-    for (int side = 0; side < 2; ++side) collect(i, side, g_ball, contacts_.emplace_back());
+    const ohmdem::RaceContactView view[2] = {race_[0]->contact_of(i), race_[1]->contact_of(i)};
+    // Both sides' speeds (a race the ball does not press: computed, not used).
+    const v2d speed = entrainment_speeds(atom->x[i], atom->v[i], atom->omega[i][2],
+                                         v2d{view[0].point_x(), view[1].point_x()},
+                                         v2d{view[0].point_y(), view[1].point_y()}, motion);
+    const int ref0 = collect(i, 0, g_ball, view[0], speed[0]);
+    const int ref1 = collect(i, 1, g_ball, view[1], speed[1]);
+    balls_in_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ref0, ref1}});
   }
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) {
@@ -239,29 +292,39 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   for (const PitFix &f : pit_fixes_)
     lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
                           films_[f.side][f.index]);
-  // ... and the balls: each its two contacts in series.
-  std::size_t next[2] = {0, 0};  // the next pressed contact of each race
-  for (std::size_t n = 0; n < contacts_.size(); n += 2) {
-    LubricatedContact *const pair = &contacts_[n];
+  // ... and the balls: each its two contacts in series. The records only where this step
+  // needs them (breakdown changes them; the network and an export read them); else when read.
+  const bool breakdown = settings_.breakdown > 0.0;
+  if (breakdown || settings_.network || gather) build_records();
+  for (std::size_t n = 0; n < balls_in_.size(); ++n) {
+    const BallRefs &b = balls_in_[n];
+    std::complex<double> y[2];
     const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
     for (int side = 0; side < 2; ++side) {
-      LubricatedContact &c = pair[side];
-      if (!c.loaded) continue;
-      film[side] = &films_[side][next[side]++];
-      fill(*film[side], c);
+      const int ref = b.ref[side];
+      if (ref < 0) {
+        y[side] = idle_[-1 - ref].y;
+        continue;
+      }
+      const lub::ContactAdmittance &f = films_[side][ref];
+      film[side] = &f;
+      y[side] = f.y(omega());
       const int k = inner_[side];
-      hmin[k] = std::min(hmin[k], c.h_min);
-      lambda_min = std::min(lambda_min, c.lambda);
+      hmin[k] = std::min(hmin[k], f.film.minimum);
+      lambda_min = std::min(lambda_min, f.lambda);
     }
-    if (settings_.breakdown > 0.0) {
+    if (breakdown) {
       // break_down_ball reads the films of the pressed contacts only.
+      LubricatedContact *const pair = &contacts_[2 * n];
       lub::ContactAdmittance both[2];
       for (int side = 0; side < 2; ++side)
         if (film[side]) both[side] = *film[side];
       break_down(pair, both);
+      y[0] = pair[0].y;
+      y[1] = pair[1].y;
     }
-    const std::complex<double> ball = lub::series(pair[0].y, pair[1].y);
-    balls_.push_back({pair[0].tag, {ball.real(), ball.imag()}});
+    const std::complex<double> ball = lub::series(y[0], y[1]);
+    balls_.push_back({b.tag, {ball.real(), ball.imag()}});
   }
   LubricatedResult out;
   std::complex<double> y_bearing;
@@ -285,14 +348,20 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   local_min_[0] = hmin[0];
   local_min_[1] = hmin[1];
   local_min_[2] = lambda_min;
-  const lub::Impedance z = lub::impedance(y_bearing, omega());
+  y_bearing_ = y_bearing;
+  current_ = context.current;
+  return out;
+}
+
+void LubricatedBearing::impedance(LubricatedResult &out) const
+{
+  const lub::Impedance z = lub::impedance(y_bearing_, omega());
   out.z_abs = z.z_abs;
   out.z_phase = z.z_phase;
   out.c_parallel = z.c_parallel;
   out.r_parallel = z.r_parallel;
-  out.v_high = y_bearing == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
-                                                           : context.current / y_bearing;
-  return out;
+  out.v_high = y_bearing_ == std::complex<double>(0.0, 0.0) ? std::complex<double>(0.0, 0.0)
+                                                            : current_ / y_bearing_;
 }
 
 void LubricatedBearing::minima(LubricatedResult &out) const

@@ -22,6 +22,7 @@
 #include "lubrication/race_admittance.h"
 #include "pointers.h"
 #include "support/bearing_surface.h"
+#include "support/race_contact_view.h"
 
 namespace LAMMPS_NS {
 
@@ -75,25 +76,33 @@ class LubricatedBearing : protected Pointers {
   // the first evaluation of the run.
   void init(const ResistanceContext &context);
   ~LubricatedBearing() override;
-  // Collective: this step's impedance; `gather` (an export step) also gathers the records
-  // of all processes (network()) when the closed form runs. g_dry: the dry closed form's
-  // conductance of this step per local atom (NaN where it has none), or null.
+  // Collective: this step's admittance of the bearing; `gather` (an export step) also gathers
+  // the records of all processes (network()) when the closed form runs. g_dry: the dry closed
+  // form's conductance of this step per local atom (NaN where it has none), or null. The
+  // result's impedance and minima are left to impedance() and minima().
   LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
                             const double *g_dry = nullptr);
   // Collective: the last evaluation's smallest films and lambda over all processes (outputs
   // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
   void minima(LubricatedResult &out) const;
-  // This process's records of the last evaluation (two per ball, high race first).
-  const std::vector<LubricatedContact> &contacts() const { return contacts_; }
+  // The last evaluation's impedance (outputs 9-12) and the high electrode's phasor into out,
+  // from its admittance. Apart from evaluate() too: a step where nothing reads them pays
+  // nothing (one complex division, a hypot and an atan2, ~0.3k instructions).
+  void impedance(LubricatedResult &out) const;
+  // This process's records of the last evaluation (two per ball, high race first), built at
+  // the first call after it.
+  const std::vector<LubricatedContact> &contacts() const;
   const LubricatedNetwork &network() const { return *network_; }
   double omega() const { return omega_; }
 
  private:
   void set_geometry(const ResistanceContext &context);
-  // Ball i's contact with race `side` into the record `out` (fresh): the gap's capacitance to a
-  // race the ball does not press, else `loaded` and the contact's inputs into the race's batch
-  // (g_ball: the ball's dry, metallic conductance between its two races).
-  void collect(int i, int side, double g_ball, LubricatedContact &out);
+  // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
+  // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
+  // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
+  // races). Returns its index in the batch, or -1 - its index in idle_.
+  int collect(int i, int side, double g_ball, const ohmdem::RaceContactView &view, double speed);
+  void build_records() const;  // contacts_ from balls_in_, films_ and idle_
   // A pressed contact's record from its admittance.
   void fill(const ohmdem::lubrication::ContactAdmittance &c, LubricatedContact &out) const;
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
@@ -112,6 +121,8 @@ class LubricatedBearing : protected Pointers {
   const FixBearingRace *race_[2] = {nullptr, nullptr};
   RaceMotion motion_[2];             // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
+  std::complex<double> y_bearing_{0.0, 0.0};  // the bearing's admittance (evaluate())
+  double current_ = 0;                        // the current of that evaluation (A)
   ohmdem::lubrication::RaceAdmittance film_[2];
   int inner_[2] = {0, 1};
   // Scratch of evaluate(), per side: the pressed contacts' inputs and admittances, ball order.
@@ -125,7 +136,17 @@ class LubricatedBearing : protected Pointers {
     ohmdem::PitView pit;
   };
   std::vector<PitFix> pit_fixes_;
-  std::vector<LubricatedContact> contacts_;
+  ohmdem::PitView pit_;  // collect()'s: a member, not a fresh zeroed one per contact
+  // Per local ball of the last evaluation: its tag and, per side, its index in films_[side]
+  // (>= 0) or -1 - its index in idle_ (a race it does not press).
+  struct BallRefs {
+    std::int64_t tag = 0;
+    int ref[2] = {0, 0};
+  };
+  std::vector<BallRefs> balls_in_;
+  std::vector<LubricatedContact> idle_;
+  mutable std::vector<LubricatedContact> contacts_;  // the records (build_records())
+  mutable bool records_ready_ = false;
   std::vector<ohmdem::TaggedValues<2>> balls_;  // Re Y, Im Y per ball
   ohmdem::OrderedGather<2> gather_;
   std::unique_ptr<LubricatedNetwork> network_;

@@ -24,14 +24,15 @@ class ContactBatch {
  public:
   std::size_t size() const { return n_; }
   void clear() { n_ = 0; }
-  void add(double fn, double speed, double g_dry, double recess)
+  // Returns the contact's index in the batch.
+  std::size_t add(double fn, double speed, double g_dry, double recess)
   {
     if (n_ == fn_.size()) grow();
     fn_[n_] = fn;
     speed_[n_] = speed;
     g_dry_[n_] = g_dry;
     recess_[n_] = recess;
-    ++n_;
+    return n_++;
   }
   const double *fn() const { return fn_.data(); }
   const double *speed() const { return speed_.data(); }
