@@ -4,7 +4,8 @@
 // acquired at `rate` through dsp/acquire's chain (Butterworth order 4 at 0.4 x rate, 1e-6 noise).
 // With fr > 0 the height follows cos^2 of the shaft angle 2 pi fr t + position - 90 deg (an inner
 // defect under a radial load, its zone's centre at 90 deg); with decay > 0 the jump falls to
-// 40 % during the pulse with that time constant (the ring settling onto the other balls).
+// 40 % during the pulse with that time constant (the ring settling onto the other balls); `height`
+// the pulse's height over the level (an outer pit farther from the load: a lower one).
 #ifndef OHMDEM_TESTS_POST_BEARING_PULSE_RECORDS_H
 #define OHMDEM_TESTS_POST_BEARING_PULSE_RECORDS_H
 
@@ -16,9 +17,9 @@
 namespace ohmdem::post::test_records {
 
 inline Signal pulse_record(double tau, double f, double rate, double fr = 0,
-                           double position_deg = 0, double decay = 0)
+                           double position_deg = 0, double decay = 0, double height = 0.45)
 {
-  const double fs = 1e6, level = 0.05, h = 0.45, pi = ohmdem::test::kPi;
+  const double fs = 1e6, level = 0.05, h = height, pi = ohmdem::test::kPi;
   Signal in;
   in.rate = fs;
   const std::size_t n = 300000;

@@ -7,7 +7,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bearing/diagnose.h"
 #include "bearing/pulse_template.h"
+#include "bearing/template_angle.h"
 #include "pulse_records.h"
 
 namespace ohmdem::post {
@@ -113,6 +115,67 @@ TEST(PulseTemplate, ModelErrorWidensTheInterval)
   EXPECT_GE(f1.size_hi_deg - f1.size_deg, 0.195996 * f1.size_deg - 1e-6);
   EXPECT_GE(f1.size_deg - f1.size_lo_deg, 0.195996 * f1.size_deg - 1e-6);
   EXPECT_GE(f1.size_hi_deg - f1.size_lo_deg, f0.size_hi_deg - f0.size_lo_deg);
+}
+
+// An outer pit farther from the load gives a lower pulse: here its height falls linearly from
+// 0.45 of the level at 0 deg to 0.15 at 30 deg (the bank's two angles).
+double height_at(double angle_deg) { return 0.45 - 0.01 * angle_deg; }
+
+TEST(PulseTemplate, PlacesAPitBetweenTheBanksAngles)
+{
+  // a bank at 0 and 30 deg only; a record at 15 deg (and a length between the bank's): the fit
+  // mixes the neighbouring angles' templates, so the angle is read between them and its
+  // interval is the profile's, not the bank's 30 deg step
+  TemplateBank b;
+  for (double a : {0.0, 30.0})
+    for (double t : series(30, 130)) {
+      const Signal s = test_records::pulse_record(t * 1e-6, kF, 2e4, 0, 0, 0, height_at(a));
+      const FoldedPulse p = fold_pulse(s.x, s.rate, kF);
+      ASSERT_TRUE(p.valid) << p.note;
+      b.templates.push_back({t, a, p.y, p.se});
+      b.bin_s = p.bin_s;
+    }
+  b.model_error = 0.03;  // as SizesAHeldOutPulseBetweenTheBanksAtEveryRate
+  for (double a : {10.0, 15.0, 22.5}) {
+    const Signal s = test_records::pulse_record(58.5e-6, kF, 2e4, 0, 0, 0, height_at(a));
+    const TemplateFit f = fit_templates(fold_pulse(s.x, s.rate, kF), b);
+    ASSERT_TRUE(f.valid) << a << " deg: " << f.note;
+    EXPECT_NEAR(f.size_deg / 58.5, 1, 0.05) << a << " deg: " << f.note;
+    EXPECT_NEAR(f.angle_deg, a, 2) << f.note;
+    EXPECT_LE(f.angle_lo_deg, a);
+    EXPECT_GE(f.angle_hi_deg, a);
+    // narrower than the bank's step: the branches 27.7 deg apart can be told
+    EXPECT_LT(f.angle_hi_deg - f.angle_lo_deg, 10) << a << " deg: [" << f.angle_lo_deg << ", "
+                                                   << f.angle_hi_deg << "]";
+  }
+}
+
+TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
+{
+  // the phase reads 2.3 deg [1.3, 3.3] modulo 27.69 (a pit 30 deg off the load); the fit's angle
+  // 31.5 [30.6, 32.8]: the branch k = 1 (30 [29, 31]) meets it, though its point lies outside
+  LocatedDefect l;
+  l.position_deg = 2.3;
+  l.position_lo_deg = 1.3;
+  l.position_hi_deg = 3.3;
+  l.position_modulo_deg = 360.0 / 13;
+  TemplateFit f;
+  f.angle_deg = 31.5;
+  f.angle_lo_deg = 30.6;
+  f.angle_hi_deg = 32.8;
+  LocatedDefect one = l;
+  pick_branch(one, f);
+  EXPECT_NEAR(one.position_deg, 2.3 + 360.0 / 13, 1e-9) << one.position_note;
+  EXPECT_TRUE(std::isnan(one.position_modulo_deg));
+  EXPECT_NEAR(one.position_lo_deg, 1.3 + 360.0 / 13, 1e-9);
+  // a fit's interval that meets the branch at -25.4 as well: not determined
+  f.angle_lo_deg = 20;
+  f.angle_hi_deg = 40;
+  LocatedDefect two = l;
+  pick_branch(two, f);
+  EXPECT_NEAR(two.position_deg, 2.3, 1e-9);
+  EXPECT_NEAR(two.position_modulo_deg, 360.0 / 13, 1e-9);
+  EXPECT_NE(two.position_note.find("not determined"), std::string::npos) << two.position_note;
 }
 
 TEST(PulseTemplate, RefusesAnotherRateOrAPartialGrid)
