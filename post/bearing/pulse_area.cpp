@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/circular_index.h"
 #include "core/constants.h"
 #include "dsp/detect_laws.h"
 #include "dsp/pulses.h"
@@ -52,7 +53,7 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   if (peak == 0) return false;
   const auto n = static_cast<long>(bins);
   auto above = [&](long b) {
-    return std::fabs(avg[static_cast<std::size_t>(((b % n) + n) % n)] - base) >
+    return std::fabs(avg[circular_index(b, bins)] - base) >
            0.02 * std::fabs(peak);
   };
   long l = static_cast<long>(k), r = static_cast<long>(k);
@@ -66,7 +67,7 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   // the pulse's centroid (its time plus the filter's delay at 0 Hz): the pass's time
   double m0 = 0, m1 = 0;
   for (long b = l - 2; b <= r + 2; ++b) {
-    const double v = avg[static_cast<std::size_t>(((b % n) + n) % n)] - base;
+    const double v = avg[circular_index(b, bins)] - base;
     m0 += v;
     m1 += v * (static_cast<double>(b) + 0.5);
   }

@@ -9,6 +9,7 @@
 #include "bearing/diagnose.h"
 #include "bearing/race_sizing.h"
 #include "bearing/template_angle.h"
+#include "core/circular_index.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
@@ -26,112 +27,7 @@ constexpr double kModelRel = 0.02, kModelJitterS = 5e-6;
 // held-out outer pits between two of its angles reached 60 before the fundamental's removal.
 constexpr double kMaxReducedChi2 = 10;
 
-// Fewer passes leave a fine bin with a handful of samples: its scatter would not be its error.
-constexpr std::size_t kMinPasses = 32;
-
-std::size_t wrap(long i, std::size_t n)
-{
-  const long m = static_cast<long>(n);
-  return static_cast<std::size_t>(((i % m) + m) % m);
-}
-
 }  // namespace
-
-FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int oversample)
-{
-  if (!(rate > 0 && f > 0 && oversample >= 1))
-    throw std::invalid_argument("pulse fold: rate, defect frequency and oversampling must be > 0");
-  FoldedPulse p;
-  double level = 0;
-  for (double v : x) level += v;
-  level /= static_cast<double>(std::max<std::size_t>(x.size(), 1));
-  if (!(level > 0)) {
-    p.note = "the record's level is not above zero (a vibration channel?): the pulses are read "
-             "relative to it";
-    return p;
-  }
-  const double period = rate / refine_repetition(x, rate, f);  // samples
-  const auto bins = static_cast<std::size_t>(std::floor(period * oversample));
-  p.passes = static_cast<std::size_t>(static_cast<double>(x.size()) / period);
-  if (!(period >= 4) || p.passes < kMinPasses) {
-    p.note = std::to_string(p.passes) + " defect passes, fewer than " +
-             std::to_string(kMinPasses) + " (or under 4 samples per period)";
-    return p;
-  }
-  std::vector<double> sum(bins, 0.0), sum2(bins, 0.0), n(bins, 0.0);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const double u = std::fmod(static_cast<double>(i) / period, 1.0);
-    const auto b = std::min(static_cast<std::size_t>(u * static_cast<double>(bins)), bins - 1);
-    const double v = x[i] / level - 1;
-    sum[b] += v;
-    sum2[b] += v * v;
-    n[b] += 1;
-  }
-  std::vector<double> y(bins, 0.0), se(bins, 0.0);
-  std::size_t empty = 0;
-  for (std::size_t b = 0; b < bins; ++b) {
-    if (n[b] < 2) {
-      ++empty;
-      continue;
-    }
-    y[b] = sum[b] / n[b];
-    se[b] = std::sqrt(std::max(sum2[b] - n[b] * y[b] * y[b], 0.0) / (n[b] - 1) / n[b]);
-  }
-  // a period close to a whole number of samples leaves sub-sample phases no pass fell at (the
-  // 6208's BPFI at 10 kHz: 16.0 samples)
-  if (2 * empty > bins) {
-    p.note = "the passes cover under half the period's sub-sample phases (a period of a near "
-             "whole number of samples)";
-    return p;
-  }
-  // a quantised, noiseless bin would weigh without bound: no bin's error below a tenth of the
-  // median's
-  std::vector<double> sorted;
-  for (std::size_t b = 0; b < bins; ++b)
-    if (n[b] >= 2) sorted.push_back(se[b]);
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2),
-                   sorted.end());
-  const double floor_se = std::max(0.1 * sorted[sorted.size() / 2], 1e-12);
-  for (double &v : se) v = std::max(v, floor_se);
-  // an empty bin: the line between its filled neighbours, weighing nothing in a fit
-  double big = 0;
-  for (std::size_t b = 0; b < bins; ++b)
-    if (n[b] >= 2) big = std::max(big, 1e3 * se[b]);
-  for (std::size_t b = 0; b < bins; ++b) {
-    if (n[b] >= 2) continue;
-    std::size_t l = 1, r = 1;
-    while (n[(b + bins - l) % bins] < 2) ++l;
-    while (n[(b + r) % bins] < 2) ++r;
-    y[b] = (static_cast<double>(r) * y[(b + bins - l) % bins] +
-            static_cast<double>(l) * y[(b + r) % bins]) /
-           static_cast<double>(l + r);
-    se[b] = big;
-  }
-  // the entry: the largest rise over one sample of the fold smoothed over one sample (the ball's
-  // path lost: R jumps up), at the middle of that rise
-  const auto os = static_cast<std::size_t>(oversample);
-  std::vector<double> sm(bins, 0.0);
-  for (std::size_t b = 0; b < bins; ++b)
-    for (std::size_t k = 0; k < os; ++k) sm[b] += y[(b + k) % bins] / static_cast<double>(os);
-  std::size_t entry = 0;
-  double rise = -1e300;
-  for (std::size_t b = 0; b < bins; ++b) {
-    const double d = sm[(b + os) % bins] - sm[b];
-    if (d > rise) rise = d, entry = (b + os / 2 + os / 2) % bins;
-  }
-  p.entry = bins / 4;
-  p.y.resize(bins);
-  p.se.resize(bins);
-  for (std::size_t j = 0; j < bins; ++j) {
-    const std::size_t b = wrap(static_cast<long>(entry + j) - static_cast<long>(p.entry), bins);
-    p.y[j] = y[b];
-    p.se[j] = se[b];
-  }
-  p.bin_s = 1 / (rate * oversample);
-  p.period_s = period / rate;
-  p.valid = true;
-  return p;
-}
 
 void bank_grid(const TemplateBank &b, std::vector<double> &sizes, std::vector<double> &angles)
 {
@@ -188,7 +84,7 @@ double chi2_at(const FoldedPulse &rec, const Weighted &m, std::size_t n, std::si
     const double at = static_cast<double>(j) + base;
     const double fl = std::floor(at);
     const double u = at - fl;
-    const std::size_t i0 = wrap(static_cast<long>(fl), nb), i1 = (i0 + 1) % nb;
+    const std::size_t i0 = circular_index(static_cast<long>(fl), nb), i1 = (i0 + 1) % nb;
     const double yr = (1 - u) * rec.y[i0] + u * rec.y[i1];
     const double se = u < 0.5 ? rec.se[i0] : rec.se[i1];
     const double w = 1 / (se * se + m.var[j]);

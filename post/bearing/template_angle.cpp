@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bearing/diagnose.h"
+#include "core/circular_index.h"
 #include "core/sampled_signal.h"
 
 namespace ohmdem::post {
@@ -47,7 +48,7 @@ std::vector<PulseTemplate> between_angles(const std::vector<PulseTemplate> &t,
         PulseTemplate m{s, dense[i * static_cast<std::size_t>(steps) + static_cast<std::size_t>(k)],
                         a.y, a.se};
         for (long j = 0; j < na; ++j) {
-          const auto jb = static_cast<std::size_t>((((j - na / 4 + nb / 4) % nb) + nb) % nb);
+          const std::size_t jb = circular_index(j - na / 4 + nb / 4, b.y.size());
           const auto ja = static_cast<std::size_t>(j);
           m.y[ja] = (1 - u) * a.y[ja] + u * b.y[jb];
           m.se[ja] = std::hypot((1 - u) * a.se[ja], u * b.se[jb]);
