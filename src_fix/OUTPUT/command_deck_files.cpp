@@ -6,6 +6,7 @@
      deck_files copy FROM TO            a file copied (replaced whole)
      deck_files restart FILE            FILE is a whole LIGGGHTS restart file
      deck_files lock FOLDER | unlock FOLDER   the output folder's lock
+     deck_files hold FOLDER | release FOLDER  one process of the universe at a time in between
      deck_files exec PROGRAM ARG ...    a program run with these arguments
 
    LIGGGHTS' `shell` hands any line but cd/mkdir/mv/rm/rmdir/putenv to sh, so a
@@ -40,8 +41,8 @@ using namespace LAMMPS_NS;
 namespace {
 
 const char *const kUsage =
-    "deck_files: expects mkdir PATH..., copy FROM TO, restart FILE, lock FOLDER, unlock FOLDER "
-    "or exec PROGRAM ARG...";
+    "deck_files: expects mkdir PATH..., copy FROM TO, restart FILE, lock FOLDER, unlock FOLDER, "
+    "hold FOLDER, release FOLDER or exec PROGRAM ARG...";
 
 std::string host_name()
 {
@@ -91,6 +92,10 @@ void DeckFiles::command(int narg, char **arg)
       message = answer.error;
       if (!answer.note.empty()) error->warning(FLERR, ("deck_files: " + answer.note).c_str());
     }
+  } else if (what == "hold" || what == "release") {
+    if (words.size() != 1) error->all(FLERR, "deck_files hold|release: expects one folder");
+    if (root && what == "hold") message = ohmdem::hold_turn(words[0]);
+    if (root && what == "release") ohmdem::release_turn(words[0]);
   } else if (what == "exec") {
     if (words.empty()) error->all(FLERR, "deck_files exec: expects a program and its arguments");
     if (root) message = run_program(words);

@@ -11,6 +11,12 @@ lost; doc/run_status.md).
                continued from the newer whole restart file: the signal goes on, and equals
                the uninterrupted run's byte for byte (a run split by a restart gives the single
                run's bits: tests/decks/signal_tests.py restart_append)
+  error_exit   an error raised by LIGGGHTS (an unknown command, a fix's, a compute's) or by our
+               styles ends the run with exit 1 and one ERROR line, the output's last, nothing
+               after it: LIGGGHTS 3.8's error exits sometimes add a "tip of the day" read from
+               freed memory (app/liggghts_errors.cpp); the dynamic linker binds libliggghts'
+               error members to the executable's (LD_DEBUG=bindings), which is what makes it so
+               on every run, not only on the runs the tip would have come
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
 
@@ -20,6 +26,7 @@ import argparse
 import glob
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -95,15 +102,16 @@ def test_kill_resume(a, work):
         rows_full = sum(1 for l in f if not l.startswith("#"))
     check(0 < rows_killed < rows_full, f"kill_resume: the kill left {rows_killed} of {rows_full} "
           "rows (a run stopped mid-way)")
-    # The newer file; a kill while it was written leaves it cut: then the other one.
+    # The newer file; a kill while it was written leaves it cut (deck_files names it damaged,
+    # whatever part is missing): then the other one.
     for restart in files:
         r = run(deck(a, "-var", "out", killed, "-var", "start", "restart",
                      "-var", "restart_file", restart, *common[:-2]), work)
-        if r.returncode == 0 or "restart" not in r.stdout or "cut" not in r.stdout:
+        if r.returncode == 0 or "damaged or not a LIGGGHTS restart file" not in r.stdout:
             break
-        print(f"note: {restart} was cut by the kill; continuing from the other")
+        print(f"note: {restart} was damaged by the kill; continuing from the other")
     check(r.returncode == 0, f"kill_resume: continued from {os.path.basename(restart)} "
-          f"(exit {r.returncode})")
+          f"(exit {r.returncode}): {[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
     check("stale lock" in r.stdout, "kill_resume: the killed run's lock is found stale")
     check(status_of(killed) == "finished", "kill_resume: run.json finished after the resume")
     with open(os.path.join(full, "signal.txt"), "rb") as f:
@@ -120,6 +128,50 @@ def test_kill_resume(a, work):
     with open(os.path.join(plain, "signal.txt"), "rb") as f:
         check(r.returncode == 0 and f.read() == want and not newest_restarts(plain),
               "kill_resume: restart_every 0 writes no restart file and the same signal.txt")
+
+
+ERROR_MEMBERS = ["_ZN9LAMMPS_NS5Error3allEPKciS2_", "_ZN9LAMMPS_NS5Error3oneEPKciS2_",
+                 "_ZN9LAMMPS_NS5Error12universe_allEPKciS2_",
+                 "_ZN9LAMMPS_NS5Error12universe_oneEPKciS2_",
+                 "_ZN9LAMMPS_NS5Error9fix_errorEPKciPNS_3FixES2_",
+                 "_ZN9LAMMPS_NS5Error9fix_errorEPKciPNS_3FixES2_S2_",
+                 "_ZN9LAMMPS_NS5Error13compute_errorEPKciPNS_7ComputeES2_"]
+
+
+def test_error_exit(a, work):
+    box = "units si\natom_style sphere\nregion b block 0 1 0 1 0 1\ncreate_box 1 b\n"
+    decks = {"unknown command": ("units si\nbogus_command 1\n", "ERROR: Unknown command"),
+             "a fix's error": (box + "fix 1 all nve/sphere bogus\n",
+                               "ERROR: Illegal fix nve/sphere command"),
+             "a compute's error": (box + "compute 1 all erotate/sphere bogus\n",
+                                   "ERROR: Illegal compute erotate/sphere option"),
+             "our style's error": (box + "fix s all signal/table\n", "ERROR: fix signal/table")}
+    for name, (text, want) in decks.items():
+        deck_file = os.path.join(work, "in.error")
+        with open(deck_file, "w") as f:
+            f.write(text)
+        env = dict(os.environ, LD_DEBUG="bindings", LD_DEBUG_OUTPUT=os.path.join(work, "ld"))
+        r = subprocess.run([a.exe, "-in", deck_file, "-log", "none"], cwd=work, env=env,
+                           capture_output=True)
+        out = r.stdout.decode("utf-8", errors="replace")
+        lines = out.rstrip("\n").splitlines()
+        check(r.returncode == 1 and lines and lines[-1].startswith(want) and
+              out.count("ERROR") == 1 and r.stdout.isascii(),
+              f"error_exit: {name}: exit {r.returncode}, one ERROR line and nothing after it: "
+              f"{lines[-2:]}")
+        bindings = ""
+        for log in glob.glob(os.path.join(work, "ld.*")):
+            with open(log, errors="replace") as f:
+                bindings += f.read()
+            os.remove(log)
+        ours = [m for m in ERROR_MEMBERS
+                if re.search(r"binding file \S*libliggghts\S* \[0\] to \S*" +
+                             re.escape(os.path.basename(a.exe)) + r" \[0\]: normal symbol `" +
+                             re.escape(m) + "'", bindings)]
+        if name == "unknown command":
+            check(len(ours) == len(ERROR_MEMBERS),
+                  f"error_exit: libliggghts' error members bound to the executable's: "
+                  f"{len(ours)} of {len(ERROR_MEMBERS)}")
 
 
 def test_post_full(a, work):
@@ -173,6 +225,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="ohmdem_rel_") as work:
         {"full_disk": lambda: test_full_disk(a, work),
          "kill_resume": lambda: test_kill_resume(a, work),
+         "error_exit": lambda: test_error_exit(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 

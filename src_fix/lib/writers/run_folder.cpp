@@ -3,6 +3,7 @@
 #include "writers/run_folder.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 
 namespace ohmdem {
@@ -365,6 +367,42 @@ void unlock_folder(const std::string &folder, long pid, const std::string &host)
   long holder = -1;
   in >> word_pid >> holder >> word_host >> holder_host;
   if (holder == pid && holder_host == host) std::remove(file.c_str());
+}
+
+namespace {
+// The turns this process holds: folder -> the descriptor that holds the flock.
+std::map<std::string, int> &held_turns()
+{
+  static std::map<std::string, int> turns;
+  return turns;
+}
+}  // namespace
+
+std::string hold_turn(const std::string &folder)
+{
+  if (held_turns().count(folder)) return "";  // already this process's turn
+  const std::string file = folder + "/.ohmdem.turn";
+  const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) return "cannot open the turn file " + file + ": " + why(errno);
+  int rc = 0;
+  while ((rc = ::flock(fd, LOCK_EX)) != 0 && errno == EINTR) {
+  }
+  if (rc != 0) {
+    const std::string message = "cannot take the turn " + file + ": " + why(errno);
+    ::close(fd);
+    return message;
+  }
+  held_turns()[folder] = fd;
+  return "";
+}
+
+void release_turn(const std::string &folder)
+{
+  const auto it = held_turns().find(folder);
+  if (it == held_turns().end()) return;
+  ::flock(it->second, LOCK_UN);
+  ::close(it->second);
+  held_turns().erase(it);
 }
 
 }  // namespace ohmdem

@@ -49,6 +49,14 @@ std::string lock_path(const std::string &folder);
 // this process's to rewrite (a second run refused by the lock must leave it alone).
 bool locked_by_another(const std::string &folder, long pid, const std::string &host);
 
+// A turn in FOLDER: one process at a time between hold_turn and release_turn (an exclusive
+// flock on FOLDER/.ohmdem.turn). The wait blocks without polling, and the kernel ends the turn
+// of a process that dies holding it. The partitions of a sweep take turns at LIGGGHTS' `next`
+// of a universe variable, whose rename lock sleeps 100 s whenever two ask at once. Returns ""
+// or the reason the turn could not be taken; release_turn of a turn not held does nothing.
+std::string hold_turn(const std::string &folder);
+void release_turn(const std::string &folder);
+
 }  // namespace ohmdem
 
 #endif

@@ -3,8 +3,14 @@
 // parents and their length limits, the lock of an output folder, the restart file check on a
 // file built here in LIGGGHTS 3.8's write_restart layout (header flags 0..48, then -1; the atoms
 // as chunks of an int N and N doubles, each atom's values starting with their count).
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
 
 #include <climits>
 #include <cmath>
@@ -169,6 +175,62 @@ TEST(RunFolder, LockFromAnotherHostIsNeverStale)
   EXPECT_EQ(remote.note, "");
   EXPECT_TRUE(ohmdem::locked_by_another(dir, 111, "here"));
   EXPECT_FALSE(ohmdem::locked_by_another(dir, 111, "there"));
+}
+
+// Another process's view of FOLDER's turn: true when it could take it now (flock LOCK_NB in a
+// child process, which then exits: its descriptor, and any flock it took, goes with it).
+bool turn_free_for_another_process(const std::string &folder)
+{
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int fd = ::open((folder + "/.ohmdem.turn").c_str(), O_RDWR);
+    ::_exit(fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) == 0 ? 0 : 1);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+TEST(RunFolder, TurnHoldsOutOtherProcessesUntilReleased)
+{
+  const std::string dir = temp_path("turn");
+  ASSERT_EQ(ohmdem::make_folders(dir), "");
+  ohmdem::release_turn(dir);  // not held: nothing
+  ASSERT_EQ(ohmdem::hold_turn(dir), "");
+  EXPECT_EQ(ohmdem::hold_turn(dir), "");  // held already: goes on
+  EXPECT_FALSE(turn_free_for_another_process(dir));
+  ohmdem::release_turn(dir);
+  EXPECT_TRUE(turn_free_for_another_process(dir));
+  ohmdem::release_turn(dir);  // twice: nothing
+  ASSERT_EQ(ohmdem::hold_turn(dir), "");  // again, after the release
+  EXPECT_FALSE(turn_free_for_another_process(dir));
+  ohmdem::release_turn(dir);
+}
+
+// A process that dies holding the turn (a killed partition) leaves it free: the kernel drops
+// its flock with its descriptors, so hold_turn here returns instead of waiting for ever.
+TEST(RunFolder, TurnOfADeadHolderIsFree)
+{
+  const std::string dir = temp_path("turn_dead");
+  ASSERT_EQ(ohmdem::make_folders(dir), "");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const bool held = ohmdem::hold_turn(dir).empty();
+    ::raise(SIGKILL);  // dies holding it
+    ::_exit(held ? 0 : 1);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(ohmdem::hold_turn(dir), "");
+  ohmdem::release_turn(dir);
+}
+
+TEST(RunFolder, TurnInAFolderThatIsNotThereSaysWhy)
+{
+  const std::string message = ohmdem::hold_turn(temp_path("turn_missing") + "/no/such/folder");
+  EXPECT_NE(message.find("cannot open the turn file"), std::string::npos) << message;
+  EXPECT_NE(message.find(".ohmdem.turn"), std::string::npos) << message;
 }
 
 TEST(RunFolder, RestartCheckAcceptsAWholeFile)

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// LIGGGHTS' error exits without the "tip of the day".
+//
+// LIGGGHTS-PUBLIC 3.8's Error::all, one, universe_all, universe_one, fix_error and
+// compute_error add, after the ERROR line and in about one error in ten, a "tip of the day" or
+// "comment from the off" (SpecialMessages::generate_message in error_special.h). That function
+// returns the c_str() of a string it has already destroyed, so the line printed is freed memory:
+// arbitrary bytes in the log and on the screen stream (a test that reads the output as UTF-8
+// fails; valgrind reports the read). The executable defines these members itself, as it does
+// LAMMPS::post_create (app/ohmdem_styles.cpp): libliggghts calls them through the PLT, so these
+// definitions (exported with -rdynamic) are the ones used. Each does what LIGGGHTS' does, in
+// the same order and with the same messages, without the extra line.
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "compute.h"
+#include "error.h"
+#include "fix.h"
+#include "output.h"
+#include "universe.h"
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+// Messages of two characters or fewer are LIGGGHTS' "illegal command" shorthand.
+bool says_something(const char *str)
+{
+  return str && std::strlen(str) > 2;
+}
+
+}  // namespace
+
+// Called by every process of the universe: the message once, all files closed, no abort.
+void Error::universe_all(const char *file, int line, const char *str)
+{
+  MPI_Barrier(universe->uworld);
+  if (universe->me == 0) {
+    if (universe->uscreen) std::fprintf(universe->uscreen, "ERROR: %s (%s:%d)\n", str, file, line);
+    if (universe->ulogfile)
+      std::fprintf(universe->ulogfile, "ERROR: %s (%s:%d)\n", str, file, line);
+  }
+  if (output) delete output;  // LIGGGHTS owns it; its destructor closes dumps and restarts
+  if (universe->nworlds > 1) {
+    if (screen && screen != stdout) std::fclose(screen);
+    if (logfile) std::fclose(logfile);
+  }
+  if (universe->ulogfile) std::fclose(universe->ulogfile);
+  MPI_Finalize();
+  std::exit(1);
+}
+
+// Called by one process: the universe is aborted.
+void Error::universe_one(const char *file, int line, const char *str)
+{
+  if (universe->uscreen)
+    std::fprintf(universe->uscreen, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file,
+                 line);
+  MPI_Abort(universe->uworld, 1);
+}
+
+// Called by every process of one world.
+void Error::all(const char *file, int line, const char *str)
+{
+  MPI_Barrier(world);
+  int me = 0;
+  MPI_Comm_rank(world, &me);
+  if (me == 0) {
+    if (screen) std::fprintf(screen, "ERROR: %s (%s:%d)\n", str, file, line);
+    if (logfile) std::fprintf(logfile, "ERROR: %s (%s:%d)\n", str, file, line);
+  }
+  if (output) delete output;
+  if (screen && screen != stdout) std::fclose(screen);
+  if (logfile) std::fclose(logfile);
+  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
+  MPI_Finalize();
+  std::exit(1);
+}
+
+// Called by one process of a world: the world (and the universe) is aborted.
+void Error::one(const char *file, int line, const char *str)
+{
+  int me = 0;
+  MPI_Comm_rank(world, &me);
+  if (screen) std::fprintf(screen, "ERROR on proc %d: %s (%s:%d)\n", me, str, file, line);
+  if (universe->nworlds > 1 && universe->uscreen)
+    std::fprintf(universe->uscreen, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file,
+                 line);
+  MPI_Abort(world, 1);
+}
+
+// A fix's error, named by its style and id; as all() otherwise.
+void Error::fix_error(const char *file, int line, Fix *fix, const char *style, const char *str)
+{
+  MPI_Barrier(world);
+  int me = 0;
+  MPI_Comm_rank(world, &me);
+  if (me == 0) {
+    for (FILE *f : {screen, logfile}) {
+      if (!f) continue;
+      if (says_something(str))
+        std::fprintf(f, "ERROR: Fix %s (id %s): %s (%s:%d)\n", style, fix->id, str, file, line);
+      else
+        std::fprintf(f, "ERROR: Illegal fix %s (id %s) command (%s:%d)\n", style, fix->id, file,
+                     line);
+    }
+  }
+  if (output) delete output;
+  if (screen && screen != stdout) std::fclose(screen);
+  if (logfile) std::fclose(logfile);
+  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
+  MPI_Finalize();
+  std::exit(1);
+}
+
+void Error::fix_error(const char *file, int line, Fix *fix, const char *str)
+{
+  fix_error(file, line, fix, fix->style, str);
+}
+
+// A compute's error, named by its style and id; as all() otherwise.
+void Error::compute_error(const char *file, int line, Compute *compute, const char *str)
+{
+  MPI_Barrier(world);
+  int me = 0;
+  MPI_Comm_rank(world, &me);
+  if (me == 0) {
+    for (FILE *f : {screen, logfile}) {
+      if (!f) continue;
+      if (says_something(str))
+        std::fprintf(f, "ERROR: Compute %s (id %s): %s (%s:%d)\n", compute->style, compute->id,
+                     str, file, line);
+      else
+        std::fprintf(f, "ERROR: Illegal compute %s (id %s) command (%s:%d)\n", compute->style,
+                     compute->id, file, line);
+    }
+  }
+  if (output) delete output;
+  if (screen && screen != stdout) std::fclose(screen);
+  if (logfile) std::fclose(logfile);
+  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
+  MPI_Finalize();
+  std::exit(1);
+}
