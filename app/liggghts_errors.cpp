@@ -131,8 +131,8 @@ void Error::compute_error(const char *file, int line, Compute *compute, const ch
     for (FILE *f : {screen, logfile}) {
       if (!f) continue;
       if (says_something(str))
-        std::fprintf(f, "ERROR: Compute %s (id %s): %s (%s:%d)\n", compute->style, compute->id,
-                     str, file, line);
+        std::fprintf(f, "ERROR: Compute %s (id %s): %s (%s:%d)\n", compute->style, compute->id, str,
+                     file, line);
       else
         std::fprintf(f, "ERROR: Illegal compute %s (id %s) command (%s:%d)\n", compute->style,
                      compute->id, file, line);

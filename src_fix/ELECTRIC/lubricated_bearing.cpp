@@ -255,9 +255,11 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 
-  balls_in_.clear();
+  // Sized once for this process's atoms (the same from step to step: no work), written by
+  // index and cut to the balls at the end: no capacity test per ball.
+  balls_in_.resize(atom->nlocal);
+  std::size_t nballs = 0;
   idle_.clear();
-  balls_.clear();
   pit_fixes_.clear();
   records_ready_ = false;
   for (int side = 0; side < 2; ++side) {
@@ -282,13 +284,13 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
                                          v2d{view[0].point_y(), view[1].point_y()}, motion);
     const int ref0 = collect(i, 0, g_ball, view[0], speed[0]);
     const int ref1 = collect(i, 1, g_ball, view[1], speed[1]);
-    balls_in_.push_back({static_cast<std::int64_t>(atom->tag[i]), {ref0, ref1}});
+    balls_in_[nballs++] = {static_cast<std::int64_t>(atom->tag[i]), {ref0, ref1}};
   }
+  balls_in_.resize(nballs);
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
-  for (int side = 0; side < 2; ++side) {
-    films_[side].resize(batch_[side].size());
-    film_[side].contacts(batch_[side], films_[side].data());
-  }
+  for (int side = 0; side < 2; ++side) films_[side].resize(batch_[side].size());
+  lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1], batch_[1],
+                                films_[1].data());
   for (const PitFix &f : pit_fixes_)
     lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
                           films_[f.side][f.index]);
@@ -296,7 +298,9 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   // needs them (breakdown changes them; the network and an export read them); else when read.
   const bool breakdown = settings_.breakdown > 0.0;
   if (breakdown || settings_.network || gather) build_records();
-  for (std::size_t n = 0; n < balls_in_.size(); ++n) {
+  balls_.resize(nballs);
+  const lub::ContactAdmittance *const films[2] = {films_[0].data(), films_[1].data()};
+  for (std::size_t n = 0; n < nballs; ++n) {
     const BallRefs &b = balls_in_[n];
     std::complex<double> y[2];
     const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
@@ -306,7 +310,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
         y[side] = idle_[-1 - ref].y;
         continue;
       }
-      const lub::ContactAdmittance &f = films_[side][ref];
+      const lub::ContactAdmittance &f = films[side][ref];
       film[side] = &f;
       y[side] = f.y(omega());
       const int k = inner_[side];
@@ -324,7 +328,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
       y[1] = pair[1].y;
     }
     const std::complex<double> ball = lub::series(y[0], y[1]);
-    balls_.push_back({b.tag, {ball.real(), ball.imag()}});
+    balls_[n] = {b.tag, {ball.real(), ball.imag()}};
   }
   LubricatedResult out;
   std::complex<double> y_bearing;

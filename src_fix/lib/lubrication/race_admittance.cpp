@@ -115,6 +115,7 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
   inv_sigma_ = 1.0 / in.sigma;
   inv_resistivity_ = 1.0 / in.resistivity;
   scale_ = kEpsilon0 * in.eps_r * std::sqrt(in.rx * in.ry) * 2.0 * kPi;
+  splat_constants(*this);
 }
 
 void RaceAdmittance::contact(double fn, double speed, double g_dry, double recess,

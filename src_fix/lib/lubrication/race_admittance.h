@@ -27,7 +27,7 @@ class ContactBatch {
   // Returns the contact's index in the batch.
   std::size_t add(double fn, double speed, double g_dry, double recess)
   {
-    if (n_ == fn_.size()) grow();
+    if (n_ == capacity_) grow();
     fn_[n_] = fn;
     speed_[n_] = speed;
     g_dry_[n_] = g_dry;
@@ -42,11 +42,11 @@ class ContactBatch {
  private:
   void grow()
   {
-    const std::size_t size = 2 * fn_.size() + 16;
-    for (std::vector<double> *v : {&fn_, &speed_, &g_dry_, &recess_}) v->resize(size);
+    capacity_ = 2 * capacity_ + 16;
+    for (std::vector<double> *v : {&fn_, &speed_, &g_dry_, &recess_}) v->resize(capacity_);
   }
   std::vector<double> fn_, speed_, g_dry_, recess_;
-  std::size_t n_ = 0;
+  std::size_t n_ = 0, capacity_ = 0;  // capacity_: the arrays' size (one load to test)
 };
 
 // A race's constants for one run.
@@ -83,6 +83,14 @@ class RaceAdmittance {
   // unless `isa` asks for SSE2 (the tests compare both).
   enum class Isa { best, sse2 };
   void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
+  // Both races of a bearing at once: each race's contacts as contacts() gives them (the same
+  // bits), its full groups of four alone, and the two races' last contacts together in one
+  // group where they fit in it (a bearing of 13 balls: one group instead of two contacts by
+  // the scalar code). The races' oils must be the same (their permittivity in the same form);
+  // else, or where the last contacts do not fit one group, each race's as contacts().
+  static void contacts(const RaceAdmittance &a, const ContactBatch &in_a, ContactAdmittance *out_a,
+                       const RaceAdmittance &b, const ContactBatch &in_b, ContactAdmittance *out_b,
+                       Isa isa = Isa::best);
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
   const RaceInput &input() const { return in_; }
@@ -111,6 +119,12 @@ class RaceAdmittance {
   std::array<double, 9> qc_{};
   bool rational_ = false;
   double permittivity(double q0) const;
+  // The constants the batched form reads, each four times over (its vector operands: one load
+  // per use rather than a broadcast), laid out as race_admittance_batch.cpp's RaceConstants;
+  // set at the end of the constructor by splat_constants (that file).
+  static constexpr int kSplat = 4 * 56;
+  alignas(32) std::array<double, kSplat> splat_{};
+  static void splat_constants(RaceAdmittance &r);
 };
 
 }  // namespace ohmdem::lubrication

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "lubrication/contact_admittance.h"
@@ -161,4 +162,49 @@ TEST(RaceAdmittanceBatch, AnEmptyBatchWritesNothing)
   sentinel.g = 42.0;
   fast.contacts(ContactBatch{}, &sentinel);
   EXPECT_EQ(sentinel.g, 42.0);
+}
+
+// Both races at once (the bearing's call): every record is its race's scalar record bit for bit,
+// for every pair of batch sizes 0 to 9 (their last contacts sharing a group where they fit, each
+// lane with its own race's constants: two races of different geometry and oil film here), the
+// edge cases in the shared group's lanes included, in both compiled forms.
+TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
+{
+  const std::vector<Case> edge = edge_cases();
+  int shared = 0, differ = 0;
+  // eps_r: the races' own (the permittivity as one fraction), above 9.5 for both (its eight
+  // divisions), and one of each (never in one group)
+  for (const auto &eps : {std::pair{0.0, 0.0}, std::pair{12.0, 15.0}, std::pair{0.0, 12.0}})
+    for (std::size_t na = 0; na <= 9; ++na)
+      for (std::size_t nb = 0; nb <= 9; ++nb)
+        for (std::size_t shift = 0; shift < edge.size(); shift += 4) {
+          RaceInput ra = race(3, 1e-3), rb = race(4, 1e-5);  // rb: the wetted circle inside
+          if (eps.first > 0) ra.eps_r = eps.first;
+          if (eps.second > 0) rb.eps_r = eps.second;
+          const RaceAdmittance fa(ra), fb(rb);
+          ContactBatch ia, ib;
+          std::vector<Case> ca, cb;
+          for (std::size_t k = 0; k < na; ++k) ca.push_back(edge[(shift + k) % edge.size()]);
+          for (std::size_t k = 0; k < nb; ++k) cb.push_back(edge[(shift + 7 + k) % edge.size()]);
+          for (const Case &c : ca) ia.add(c.fn, c.speed, c.g_dry, c.recess);
+          for (const Case &c : cb) ib.add(c.fn, c.speed, c.g_dry, c.recess);
+          shared += na % 4 && nb % 4 && na % 4 + nb % 4 <= 4 && (eps.first > 0) == (eps.second > 0);
+          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+            std::vector<ContactAdmittance> oa(na + 1), ob(nb + 1);
+            oa[na].g = ob[nb].g = 42.0;  // one past the end: never written
+            RaceAdmittance::contacts(fa, ia, oa.data(), fb, ib, ob.data(), isa);
+            for (std::size_t k = 0; k < na; ++k) {
+              const Case &c = ca[k];
+              differ += !same_bits(oa[k], fa.contact(c.fn, c.speed, c.g_dry, c.recess));
+            }
+            for (std::size_t k = 0; k < nb; ++k) {
+              const Case &c = cb[k];
+              differ += !same_bits(ob[k], fb.contact(c.fn, c.speed, c.g_dry, c.recess));
+            }
+            EXPECT_EQ(oa[na].g, 42.0);
+            EXPECT_EQ(ob[nb].g, 42.0);
+          }
+        }
+  EXPECT_EQ(differ, 0);
+  EXPECT_GT(shared, 200);  // the shared group was exercised, in both forms
 }

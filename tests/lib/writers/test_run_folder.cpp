@@ -10,10 +10,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <csignal>
-
 #include <climits>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -201,7 +200,7 @@ TEST(RunFolder, TurnHoldsOutOtherProcessesUntilReleased)
   EXPECT_FALSE(turn_free_for_another_process(dir));
   ohmdem::release_turn(dir);
   EXPECT_TRUE(turn_free_for_another_process(dir));
-  ohmdem::release_turn(dir);  // twice: nothing
+  ohmdem::release_turn(dir);              // twice: nothing
   ASSERT_EQ(ohmdem::hold_turn(dir), "");  // again, after the release
   EXPECT_FALSE(turn_free_for_another_process(dir));
   ohmdem::release_turn(dir);
