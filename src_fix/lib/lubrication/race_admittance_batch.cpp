@@ -145,11 +145,14 @@ static_assert(sizeof(ContactAdmittance) == 9 * sizeof(double) &&
               "g_dry");
 
 // What a group of four reads: the constants, each lane's race (for the scalar code's rare
-// lanes) and each lane's record.
+// lanes) and where each lane's record goes: base[l] for one race's group (lanes null), else
+// lanes[l].
 struct Group {
   const RaceConstants *k;
   const RaceAdmittance *race[kLanes];
-  ContactAdmittance *out[kLanes];
+  ContactAdmittance *base;
+  ContactAdmittance *const *lanes;
+  ContactAdmittance &out(int l) const { return lanes ? *lanes[l] : base[l]; }
 };
 
 // Friend of RaceAdmittance: its constants.
@@ -262,17 +265,17 @@ struct RaceLanes {
       store_rows(grp, 0, central, minimum, lambda, metallic);
       store_rows(grp, 4, c_hertz, c_outer, g, gap);
 #pragma GCC unroll 4
-      for (int l = 0; l < kLanes; ++l) grp.out[l]->g_dry = g_dry[l];
+      for (int l = 0; l < kLanes; ++l) grp.out(l).g_dry = g_dry[l];
       return;
     }
     for (int l = 0; l < m; ++l) {
       const RaceAdmittance &r = *grp.race[l];
       if (odd[l]) {
-        r.contact(fn[l], speed[l], g_dry[l], recess[l], *grp.out[l]);
+        r.contact(fn[l], speed[l], g_dry[l], recess[l], grp.out(l));
         continue;
       }
       const RaceInput &ri = r.in_;
-      record(*grp.out[l], central[l], minimum[l], lambda[l], metallic[l], c_hertz[l],
+      record(grp.out(l), central[l], minimum[l], lambda[l], metallic[l], c_hertz[l],
              wet[l] ? c_outer[l]
                     : gap_capacitance(GapGeometry{h0[l], ri.rx, ri.ry, a[l], b[l], ri.r_wet},
                                       ri.eps_r),
@@ -294,7 +297,7 @@ struct RaceLanes {
                               __builtin_shuffle(ab_hi, cd_hi, v4i{2, 3, 6, 7})};
 #pragma GCC unroll 4
     for (int l = 0; l < kLanes; ++l)
-      __builtin_memcpy(reinterpret_cast<double *>(grp.out[l]) + first, &rows[l], sizeof rows[l]);
+      __builtin_memcpy(reinterpret_cast<double *>(&grp.out(l)) + first, &rows[l], sizeof rows[l]);
   }
 
   static OHMDEM_LANES_INLINE void record(ContactAdmittance &c, double central, double minimum,
@@ -318,8 +321,7 @@ struct RaceLanes {
   static OHMDEM_LANES_INLINE void group_of(const RaceAdmittance &r, const ContactBatch &in,
                                            std::size_t i, int m, ContactAdmittance *out)
   {
-    const Group grp{
-        &constants(r), {&r, &r, &r, &r}, {out + i, out + i + 1, out + i + 2, out + i + 3}};
+    const Group grp{&constants(r), {&r, &r, &r, &r}, out + i, nullptr};
     v4d fn, speed, g_dry, recess;
     if (m == kLanes) {
       __builtin_memcpy(&fn, in.fn() + i, sizeof fn);
@@ -368,13 +370,21 @@ struct RaceLanes {
     v4i from_b = splat(0.0) > 1.0;  // no lane
     for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
     // The constants lane by lane (wt and dt only for the eight divisions' form).
-    RaceConstants k;
-    const v4d *pa = &ka.a_coef, *pb = &kb.a_coef;
-    v4d *pk = &k.a_coef;
-    const int fields =
-        ra.rational_ ? static_cast<int>(&k.wt[0] - pk) : RaceAdmittance::kSplat / kLanes;
-    for (int f = 0; f < fields; ++f) pk[f] = select<kAvx2>(from_b, pb[f], pa[f]);
-    Group grp{&k, {&ra, &ra, &ra, &ra}, {}};
+    // (RaceConstants is 56 vectors in a row, static_assert above: its bytes taken 32 at a time.)
+    RaceConstants k;  // wt and dt left unset for the one-fraction form (never read there)
+    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
+    char *pk = reinterpret_cast<char *>(&k);
+    const std::size_t fields = ra.rational_ ? offsetof(RaceConstants, wt) / sizeof(v4d)
+                                            : sizeof(RaceConstants) / sizeof(v4d);
+    for (std::size_t f = 0; f < fields; ++f) {
+      v4d va, vb;
+      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
+      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
+      const v4d v = select<kAvx2>(from_b, vb, va);
+      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
+    }
+    ContactAdmittance *lanes[kLanes];
+    Group grp{&k, {&ra, &ra, &ra, &ra}, nullptr, lanes};
     v4d fn = splat(1.0), speed = splat(1.0), g_dry = splat(0.0), recess = splat(0.0);
     ContactAdmittance dropped;  // the padding lanes' records
     for (int l = 0; l < kLanes; ++l) {
@@ -383,7 +393,7 @@ struct RaceLanes {
       const ContactBatch &in = in_b ? ib : ia;
       const std::size_t at = in_b ? nb - lb + (l - la) : na - la + l;
       grp.race[l] = in_b ? &rb : &ra;
-      grp.out[l] = in_a ? oa + at : in_b ? ob + at : &dropped;
+      lanes[l] = in_a ? oa + at : in_b ? ob + at : &dropped;
       if (!in_a && !in_b) continue;
       fn[l] = in.fn()[at];
       speed[l] = in.speed()[at];
