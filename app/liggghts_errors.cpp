@@ -19,6 +19,7 @@
 #include "compute.h"
 #include "error.h"
 #include "fix.h"
+#include "lammps.h"
 #include "output.h"
 #include "universe.h"
 
@@ -30,6 +31,20 @@ namespace {
 bool says_something(const char *str)
 {
   return str && std::strlen(str) > 2;
+}
+
+// The end of an error raised by every process of one world (Error::all's, as LIGGGHTS orders
+// it): the output (dumps, restarts) closed, the world's files closed, MPI ended, exit 1; with
+// several worlds the universe is aborted instead.
+[[noreturn]] void end_world(LAMMPS *lmp)
+{
+  delete lmp->output;  // LIGGGHTS owns it; its destructor closes dumps and restarts
+  lmp->output = nullptr;
+  if (lmp->screen && lmp->screen != stdout) std::fclose(lmp->screen);
+  if (lmp->logfile) std::fclose(lmp->logfile);
+  if (lmp->universe->nworlds > 1) MPI_Abort(lmp->universe->uworld, 1);
+  MPI_Finalize();
+  std::exit(1);
 }
 
 }  // namespace
@@ -72,12 +87,7 @@ void Error::all(const char *file, int line, const char *str)
     if (screen) std::fprintf(screen, "ERROR: %s (%s:%d)\n", str, file, line);
     if (logfile) std::fprintf(logfile, "ERROR: %s (%s:%d)\n", str, file, line);
   }
-  if (output) delete output;
-  if (screen && screen != stdout) std::fclose(screen);
-  if (logfile) std::fclose(logfile);
-  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
-  MPI_Finalize();
-  std::exit(1);
+  end_world(lmp);
 }
 
 // Called by one process of a world: the world (and the universe) is aborted.
@@ -108,12 +118,7 @@ void Error::fix_error(const char *file, int line, Fix *fix, const char *style, c
                      line);
     }
   }
-  if (output) delete output;
-  if (screen && screen != stdout) std::fclose(screen);
-  if (logfile) std::fclose(logfile);
-  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
-  MPI_Finalize();
-  std::exit(1);
+  end_world(lmp);
 }
 
 void Error::fix_error(const char *file, int line, Fix *fix, const char *str)
@@ -138,10 +143,5 @@ void Error::compute_error(const char *file, int line, Compute *compute, const ch
                      compute->id, file, line);
     }
   }
-  if (output) delete output;
-  if (screen && screen != stdout) std::fclose(screen);
-  if (logfile) std::fclose(logfile);
-  if (universe->nworlds > 1) MPI_Abort(universe->uworld, 1);
-  MPI_Finalize();
-  std::exit(1);
+  end_world(lmp);
 }

@@ -263,13 +263,13 @@ struct RaceLanes {
     four<kAvx2>(grp, r.rational_, fn, speed, g_dry, recess, m);
   }
 
-  // Contacts [from, n) of one race: groups of four, a last one of one by the scalar code (its
+  // Contacts [0, n) of one race: groups of four, a last one of one by the scalar code (its
   // bits; ~600 instructions, a group ~800), of two or three padded.
   template <bool kAvx2>
   static OHMDEM_LANES_INLINE void run(const RaceAdmittance &r, const ContactBatch &in,
-                                      ContactAdmittance *out, std::size_t from, std::size_t n)
+                                      ContactAdmittance *out, std::size_t n)
   {
-    for (std::size_t i = from; i < n; i += kLanes) {
+    for (std::size_t i = 0; i < n; i += kLanes) {
       const int m = n - i < kLanes ? static_cast<int>(n - i) : kLanes;
       if (m == 1)
         r.contact(in.fn()[i], in.speed()[i], in.g_dry()[i], in.recess()[i], out[i]);
@@ -375,13 +375,13 @@ namespace {
 __attribute__((target("avx2"))) void contacts_avx2(const RaceAdmittance &r, const ContactBatch &in,
                                                    ContactAdmittance *out, std::size_t n)
 {
-  RaceLanes::run<true>(r, in, out, 0, n);
+  RaceLanes::run<true>(r, in, out, n);
 }
 
 void contacts_sse2(const RaceAdmittance &r, const ContactBatch &in, ContactAdmittance *out,
                    std::size_t n)
 {
-  RaceLanes::run<false>(r, in, out, 0, n);
+  RaceLanes::run<false>(r, in, out, n);
 }
 
 __attribute__((target("avx2"))) void mixed_avx2(const RaceAdmittance &ra, const ContactBatch &ia,
