@@ -41,21 +41,21 @@ struct RaceLanes2 {
 // the ball's orbit about the ring centre c. Pure rolling on a fixed outer ring gives
 // (omega_i - omega_cage) R_i at the inner contact. The ring's velocity at p is
 // FixBearingRace::surface_velocity's, from its terms taken once per race and step (m).
-// A ball's two contacts at once, lane s the race of side s (SSE2, two doubles per operation):
-// each lane does the same IEEE operations in the same order as the one-contact form this
-// replaced (`(|-ny ux + nx uy|) / sqrt(nx^2 + ny^2)`), so the same bits.
+// With n = p - x (ball centre to contact), the tangent t = (-n_y, n_x) (|t| = |n|) and
+// d = n . (p - c), the three velocities' tangential parts are t . ball = -n_y v_x + n_x v_y +
+// omega_z |n|^2, t . ring = -n_y vc_x + n_x vc_y + w d and t . orbit = Omega d, so
+//   |n| u = 1/2 (-n_y (v_x + vc_x) + n_x (v_y + vc_y) + omega_z |n|^2 + w d) - Omega d,
+// Omega = (o x v) / |o|^2 the orbit's rate (o = x - c). A ball's two contacts at once, lane s
+// the race of side s (SSE2, two doubles per operation).
 v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px, v2d py,
                        const RaceLanes2 &m)
 {
-  const v2d rvx = m.vcx - m.w * (py - m.cy), rvy = m.vcy + m.w * (px - m.cx);
-  const v2d bvx = v[0] - omega_z * (py - x[1]), bvy = v[1] + omega_z * (px - x[0]);
   const v2d ox = x[0] - m.cx, oy = x[1] - m.cy;
   const v2d orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
-  const v2d pvx = -orbit * (py - m.cy), pvy = orbit * (px - m.cx);
   const v2d nx = px - x[0], ny = py - x[1];
-  const v2d ux = 0.5 * (bvx + rvx) - pvx, uy = 0.5 * (bvy + rvy) - pvy;
-  // The component along the unit tangent (-ny, nx)/|n|: one division.
-  const v2d along = -ny * ux + nx * uy, n2 = nx * nx + ny * ny;
+  const v2d d = nx * (px - m.cx) + ny * (py - m.cy), n2 = nx * nx + ny * ny;
+  const v2d along =
+      0.5 * (nx * (v[1] + m.vcy) - ny * (v[0] + m.vcx) + omega_z * n2 + m.w * d) - orbit * d;
   const v2d norm = (v2d)_mm_sqrt_pd((__m128d)n2);  // correctly rounded, as std::sqrt
   const v2d magnitude = (v2d)((v2i)along & (v2i){kAbsMask, kAbsMask});  // fabs
   return magnitude / norm;

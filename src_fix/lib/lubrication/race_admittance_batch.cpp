@@ -108,15 +108,16 @@ struct RaceLanes {
                                        v4d g_dry, v4d recess, int m)
   {
     const RaceConstants &k = *grp.k;
-    v4i odd = ~((fn >= 2.3e-308) & (fn <= 1e300));  // cbrt_fast's range: the scalar code
-    const v4d cb = lanes::cbrt(select<kAvx2>(odd, splat(1.0), fn));
-    const v4d a = k.a_coef * cb, b = k.b_coef * cb;
-    // The films (fn in range is in log_fast's range too).
+    // A contact that does not roll (its cube root) or whose inputs leave log_fast's range: the
+    // scalar code.
     const v4i moving = (speed > 0.0) & (fn > 0.0);
-    odd |= moving & ~in_log_range(speed);
-    const v4i go = moving & ~odd;
+    const v4i odd = ~(moving & in_log_range(speed) & in_log_range(fn));
+    const v4i go = ~odd;
     const v4d ls = lanes::log<kAvx2>(select<kAvx2>(go, speed, splat(1.0)));
     const v4d lw = lanes::log<kAvx2>(select<kAvx2>(go, fn, splat(1.0)));
+    const v4d cb = lanes::exp<kAvx2>(lw * (1.0 / 3.0));
+    const v4d a = k.a_coef * cb, b = k.b_coef * cb;
+    // The films.
     const v4d central_power = lanes::exp<kAvx2>(0.67 * ls - 0.067 * lw);
     const v4d central = select<kAvx2>(go, k.central * central_power * k.ell_central, splat(0.0));
     const v4d z = 0.01 * ls - 0.006 * lw;
