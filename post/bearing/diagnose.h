@@ -127,6 +127,11 @@ struct LocatedDefect {
   double position_modulo_deg = std::numeric_limits<double>::quiet_NaN();
   std::string position_note;  // why not determined
   std::string depth_note;     // what the record says of the depth
+  // the template fit's distance of an outer pit from the load direction (deg, even in the
+  // angle), and its interval; NaN without a bank of several angles
+  double fit_angle_deg = std::numeric_limits<double>::quiet_NaN();
+  double fit_angle_lo_deg = std::numeric_limits<double>::quiet_NaN();
+  double fit_angle_hi_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Diagnosis {

@@ -302,6 +302,14 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
       step = std::max(step, angles[i] - angles[i - 1]);
     f.angle_lo_deg = std::max(0.0, std::min(alo, f.angle_deg) - step / 2);
     f.angle_hi_deg = std::max(ahi, f.angle_deg) + step / 2;
+    // the bank's own error on pits between its angles, combined as the size's: the fold's shape
+    // does not follow the angle smoothly between the bank's (a pit 26 deg off fitted 2-4 deg)
+    f.angle_error_deg = bank.angle_error_deg;
+    if (std::isfinite(bank.angle_error_deg)) {
+      const double ae = z * bank.angle_error_deg;
+      f.angle_lo_deg = std::max(0.0, f.angle_deg - std::hypot(f.angle_deg - f.angle_lo_deg, ae));
+      f.angle_hi_deg = f.angle_deg + std::hypot(f.angle_hi_deg - f.angle_deg, ae);
+    }
   }
   f.profile_size_deg = sizes;
   f.profile_chi2 = prof_s;
@@ -353,7 +361,12 @@ LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const 
   const FoldedPulse p = fold_pulse(s.x, s.rate, r.f);
   const TemplateFit f = fit_templates(p, *o.template_bank);
   l = take_size(l, r, o.geometry, f);
-  if (l.valid && std::isfinite(f.angle_deg)) pick_branch(l, f);
+  if (l.valid && std::isfinite(f.angle_deg)) {
+    l.fit_angle_deg = f.angle_deg;
+    l.fit_angle_lo_deg = f.angle_lo_deg;
+    l.fit_angle_hi_deg = f.angle_hi_deg;
+    pick_branch(l, f);
+  }
   return l;
 }
 

@@ -53,6 +53,9 @@ struct TemplateBank {
   std::vector<PulseTemplate> templates;
   double bin_s = 0;         // as the record's fold must have
   double model_error = 0;   // relative error of the fitted size on held-out simulated sizes
+  // A bank with several angles: the fitted angle's error (deg) on simulated pits between its
+  // angles; NaN where the bank does not state it (then the fit's angle picks no branch).
+  double angle_error_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct TemplateFit {
@@ -64,6 +67,8 @@ struct TemplateFit {
   double angle_deg = std::numeric_limits<double>::quiet_NaN();    // banks with several angles
   double angle_lo_deg = std::numeric_limits<double>::quiet_NaN();
   double angle_hi_deg = std::numeric_limits<double>::quiet_NaN();
+  // the bank's angle error (deg) in the interval above; NaN: not stated (no branch is picked)
+  double angle_error_deg = std::numeric_limits<double>::quiet_NaN();
   double chi2_reduced = std::numeric_limits<double>::quiet_NaN();  // at the best fit
   double shift_s = 0;           // record minus template, at the best fit
   std::size_t passes = 0;

@@ -64,9 +64,18 @@ void pick_branch(LocatedDefect &l, const TemplateFit &f)
   const std::string fit = "the template fit's angle from the load " +
                           format_number(f.angle_deg, 3) + " deg [" +
                           format_number(f.angle_lo_deg, 3) + ", " +
-                          format_number(f.angle_hi_deg, 3) + "]";
+                          format_number(f.angle_hi_deg, 3) + "]" +
+                          (std::isfinite(f.angle_error_deg)
+                               ? " (the bank's angle error " + format_number(f.angle_error_deg, 3) +
+                                     " deg included)"
+                               : "");
   if (!std::isfinite(l.position_modulo_deg) || !std::isfinite(l.position_deg)) {
     l.position_note += "; " + fit + " (either side of the load line)";
+    return;
+  }
+  if (!std::isfinite(f.angle_error_deg)) {
+    l.position_note += "; " + fit + ": the bank states no angle error (its '# angle error (deg)'"
+                       " line), so the branch is not picked";
     return;
   }
   const double m = l.position_modulo_deg;

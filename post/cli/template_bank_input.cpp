@@ -14,7 +14,7 @@ namespace {
 
 const char *const kForm =
     "'# KEY: VALUE' header lines (bearing, defect, load, sampling rate (Hz), lowpass, bin (s), "
-    "model error), then lines 'SIZE_DEG ANGLE_DEG N Y_1..Y_N SE_1..SE_N' (studies/"
+    "model error, and for a bank with several angles angle error (deg)), then lines 'SIZE_DEG ANGLE_DEG N Y_1..Y_N SE_1..SE_N' (studies/"
     "template_bank.py writes it)";
 
 [[noreturn]] void bad(const std::string &path, const std::string &what)
@@ -71,6 +71,11 @@ BankFile read_template_bank(const std::string &path)
         b.bank.model_error = number(path, key, v);
         if (!(b.bank.model_error >= 0 && b.bank.model_error < 1))
           bad(path, "the model error must lie in [0, 1)");
+      }
+      if (key == "angle error (deg)") {
+        b.bank.angle_error_deg = number(path, key, v);
+        if (!(b.bank.angle_error_deg >= 0 && b.bank.angle_error_deg < 180))
+          bad(path, "the angle error must lie in [0, 180) deg");
       }
       continue;
     }

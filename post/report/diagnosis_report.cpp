@@ -136,6 +136,10 @@ void located_json(Json &j, const Diagnosis &d)
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));
   if (std::isfinite(l.position_modulo_deg)) j.set("position_modulo_deg", l.position_modulo_deg);
   if (!l.position_note.empty()) j.set("position_note", l.position_note);
+  if (std::isfinite(l.fit_angle_deg)) {
+    j.set("template_angle_deg", l.fit_angle_deg);
+    j.set("template_angle_interval_deg", pair_or_null(l.fit_angle_lo_deg, l.fit_angle_hi_deg));
+  }
   if (!l.depth_note.empty()) j.set("depth", l.depth_note);
 }
 

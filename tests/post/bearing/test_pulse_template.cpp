@@ -147,6 +147,18 @@ TEST(PulseTemplate, PlacesAPitBetweenTheBanksAngles)
     // narrower than the bank's step: the branches 27.7 deg apart can be told
     EXPECT_LT(f.angle_hi_deg - f.angle_lo_deg, 10) << a << " deg: [" << f.angle_lo_deg << ", "
                                                    << f.angle_hi_deg << "]";
+    // the bank's angle error measured between its angles widens the interval in quadrature:
+    // each half at least 1.96 times it (the size's model error likewise)
+    TemplateBank e = b;
+    e.angle_error_deg = 6;
+    const TemplateFit w = fit_templates(fold_pulse(s.x, s.rate, kF), e);
+    ASSERT_TRUE(w.valid) << w.note;
+    EXPECT_EQ(w.angle_deg, f.angle_deg);
+    EXPECT_GE(w.angle_hi_deg - w.angle_deg, 1.96 * 6) << a << " deg";
+    EXPECT_GE(w.angle_deg - w.angle_lo_deg, std::min(w.angle_deg, 1.96 * 6)) << a << " deg";
+    EXPECT_LE(w.angle_hi_deg - w.angle_deg,
+              std::hypot(f.angle_hi_deg - f.angle_deg, 1.96 * 6) + 1e-9);
+    EXPECT_GE(w.angle_lo_deg, 0.0);
   }
 }
 
@@ -163,6 +175,7 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
   f.angle_deg = 31.5;
   f.angle_lo_deg = 30.6;
   f.angle_hi_deg = 32.8;
+  f.angle_error_deg = 0.5;  // the bank's, included in the interval above
   LocatedDefect one = l;
   pick_branch(one, f);
   EXPECT_NEAR(one.position_deg, 2.3 + 360.0 / 13, 1e-9) << one.position_note;
@@ -176,6 +189,16 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
   EXPECT_NEAR(two.position_deg, 2.3, 1e-9);
   EXPECT_NEAR(two.position_modulo_deg, 360.0 / 13, 1e-9);
   EXPECT_NE(two.position_note.find("not determined"), std::string::npos) << two.position_note;
+  // a bank that states no angle error (an older bank file): the fit's angle picks no branch
+  f.angle_lo_deg = 30.6;
+  f.angle_hi_deg = 32.8;
+  f.angle_error_deg = std::nan("");
+  LocatedDefect none = l;
+  pick_branch(none, f);
+  EXPECT_NEAR(none.position_deg, 2.3, 1e-9);
+  EXPECT_NEAR(none.position_modulo_deg, 360.0 / 13, 1e-9);
+  EXPECT_NE(none.position_note.find("states no angle error"), std::string::npos)
+      << none.position_note;
 }
 
 TEST(PulseTemplate, RefusesAnotherRateOrAPartialGrid)

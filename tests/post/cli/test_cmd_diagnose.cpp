@@ -283,6 +283,9 @@ TEST(Cli, DiagnoseRefusesABadTemplateBank)
   refused("bank_bearing.txt", replaced("# bearing: machado2014", "# bearing: 6205"),
           "for the bearing 6205");
   refused("bank_load.txt", replaced("# load: force", "# load: fixed"), "under the fixed load");
+  refused("bank_angle_error.txt",
+          replaced("# load: force", "# load: force\n# angle error (deg): -3"),
+          "the angle error must lie in [0, 180) deg");
   // a template at another angle (15 deg) for one size only: sizes x angles no longer a full grid
   refused("bank_partial.txt", good + "2 15 8 0 0 0 0 0 0 0 0 1 1 1 1 1 1 1 1\n", "a full grid");
 }
