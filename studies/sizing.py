@@ -237,13 +237,16 @@ def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False, seed=1):
                     who="sizing", allow_fail=allow_fail)
     if r.returncode != 0:
         return False
-    with open(tmp) as f, open(dest, "w") as g:
+    # written whole, then renamed: a run stopped halfway leaves no short record in the cache
+    part = dest + ".part"
+    with open(tmp) as f, open(part, "w") as g:
         for line in f:
             if line.startswith("#"):
                 g.write(line if not line.startswith("# time") else "# time V angle_inner\n")
             else:
                 t, v = line.split()
                 g.write(f"{t} {v} {OMEGA * float(t)!r}\n")
+    os.replace(part, dest)
     os.remove(tmp)
     return True
 

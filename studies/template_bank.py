@@ -8,9 +8,13 @@ fitting the bank to their fold, at 10, 20, 50 kHz, low and high noise.
 
   studies/template_bank.py [--rates 1e4,2e4,5e4] [--noise low,high] [--kinds inner:force,...] OUT
 
-The bank's sizes: 28 from 0.2 to 4.27 deg, 12 % apart (the radial outer pit: 14, 25 % apart, at 5
-angles); its own error (the relative RMS of the fitted size of held-out runs at 0.25, 0.6, 1.2,
-2.2, 3.5 deg, x t(0.975, runs) / 1.96) is written in its header and widens the interval. Writes
+The bank's sizes: 28 from 0.2 to 4.27 deg, 12 % apart (the radial outer pit: 14, 25 % apart, at 25
+angles 2.5 deg apart); its own error (the relative RMS of the fitted size of held-out runs at 0.25, 0.6, 1.2,
+2.2, 3.5 deg, x t(0.975, runs) / 1.96) is written in its header and widens the interval; the
+radial outer bank's runs lie at 0 deg and halfway between its angles across the zone (6.25,
+18.75, 31.25, 43.75, 56.25 deg), and the
+RMS error of their fitted angle from the load (the same factor) is its '# angle error (deg)',
+which widens the fit's angle interval before a branch of the phase is picked. Writes
 OUT/bank_<defect>_<load>_r<rate>_<noise>.txt, OUT/template.csv (one row per case and instrument,
 the columns of sizing.csv, written as it goes) and OUT/template.md.
 """
@@ -24,14 +28,19 @@ import sizing
 
 # the bank's sizes: 12 % apart from 0.2 deg (the fit reads between them on the parabola of the
 # misfits; on the sizing study's ~30 % steps held-out `force` inner pits of 1.2 and 2.2 deg read
-# +25 and -18 %). Fewer for the radial outer pit (25 % apart), which has 5 angles too. Neither
+# +25 and -18 %). Fewer for the radial outer pit (25 % apart), which has 25 angles too. Neither
 # holds a case's or an error run's size.
 BANK_SIZES = [round(0.2 * 1.12 ** k, 3) for k in range(28)]
 BANK_SIZES_ANGLES = [round(0.22 * 1.25 ** k, 3) for k in range(14)]
 ERROR_SIZES = sizing.ERROR_SIZES
-ANGLES = [0.0, 15.0, 30.0, 45.0, 60.0]  # outer pit under the radial load: deg from the load
-# held-out runs between the bank's angles too (no template there: the fit refuses them)
-ERROR_ANGLES = [0.0, 22.5]
+# The outer pit under the radial load: deg from the load, 2.5 apart. The fold's shape does not
+# follow the angle smoothly between angles 15 or 7.5 deg apart (it changes with where the other
+# balls are as one crosses the pit, which repeats every 27.7 deg): on a 15 deg grid held-out
+# pits 11-41 deg off fitted angles up to 24 deg wrong, and on a 7.5 deg grid as well.
+ANGLES = [2.5 * k for k in range(25)]
+# held-out runs at the load line and halfway between two of the bank's angles across the zone:
+# the size's error and the fitted angle's
+ERROR_ANGLES = [0.0, 6.25, 18.75, 31.25, 43.75, 56.25]
 TEND = sizing.T_FROM + 0.3  # as the cases: ~130 passes, ~30 samples per fine bin
 KINDS = [(d, l) for l in ("force", "radial", "fixed") for d in ("inner", "outer")]
 
@@ -83,7 +92,7 @@ def fold(out, defect, size, load, angle, rate, noise):
     return head.get("lowpass", ""), head["bin (s)"], y, se
 
 
-def write_bank(path, defect, load, rate, noise, rows, error):
+def write_bank(path, defect, load, rate, noise, rows, error, angle_error=None):
     lowpass, bin_s = rows[0][2][0], rows[0][2][1]
     with open(path, "w") as f:
         sizes = sizing.sizes_text(sorted({r[0] for r in rows}))
@@ -93,6 +102,8 @@ def write_bank(path, defect, load, rate, noise, rows, error):
         f.write(f"# defect: {defect}\n# load: {load}\n# sampling rate (Hz): {rate:g}\n")
         f.write(f"# lowpass: {lowpass}\n# bin (s): {bin_s}\n")
         f.write(f"# model error: {error:.4f}\n")
+        if angle_error is not None:
+            f.write(f"# angle error (deg): {angle_error:.3f}\n")
         f.write("# SIZE_DEG ANGLE_DEG N Y_1..Y_N SE_1..SE_N\n")
         for size, angle, (_, _, y, se) in rows:
             f.write(f"{size:g} {angle:g} {len(y)} {' '.join(y)} {' '.join(se)}\n")
@@ -126,8 +137,9 @@ def make_bank(out, defect, load, rate, noise):
     rows = [r for r in rows if r[0] in common_sizes]
     path = os.path.join(out, f"bank_{defect}_{load}_r{rate:g}_{noise}.txt")
     write_bank(path, defect, load, rate, noise, rows, 0.0)
-    dev = []
-    angles = ERROR_ANGLES if len(angles_of(defect, load)) > 1 else [0.0]
+    dev, adev = [], []
+    several = len(angles_of(defect, load)) > 1
+    angles = ERROR_ANGLES if several else [0.0]
     for angle in angles:
         for size in ERROR_SIZES:
             if not min(common_sizes) <= size <= max(common_sizes):
@@ -138,12 +150,17 @@ def make_bank(out, defect, load, rate, noise):
             d = diagnose(out, sim, acq, defect, path)
             if d.get("size_deg") is not None and d.get("size_interval_deg"):
                 dev.append(d["size_deg"] / size - 1)
-    err = 0.0
-    if dev:
-        n = min(len(dev), 5)
-        err = (sum(x * x for x in dev) / len(dev)) ** 0.5 * sizing.T975[n] / 1.96
-    write_bank(path, defect, load, rate, noise, rows, err)
-    return path, err
+            if d.get("template_angle_deg") is not None:
+                adev.append(d["template_angle_deg"] - abs(angle))  # the fit's is |angle|
+
+    def rms(x):  # times t(0.975) / 1.96 for the few runs (capped at 5)
+        return (sum(v * v for v in x) / len(x)) ** 0.5 * sizing.T975[min(len(x), 5)] / 1.96 \
+            if x else 0.0
+    err = rms(dev)
+    # the bank's angle error (a bank with several angles); 180 (no branch picked) without runs
+    angle_err = (rms(adev) if adev else 179.0) if several else None
+    write_bank(path, defect, load, rate, noise, rows, err, angle_err)
+    return path, err, angle_err
 
 
 def write_csv(out, rows):
@@ -198,7 +215,9 @@ def main(argv):
              f"{sizing.sizes_text(BANK_SIZES_ANGLES)} deg at {sizing.sizes_text(ANGLES)} deg "
              "from the load), 0.3 s runs; own error from "
              f"{sizing.sizes_text(ERROR_SIZES)} deg: " + "; ".join(
-                 f"{d} {l} {r:g} Hz {n}: {e[1]:.3f}" for (d, l, r, n), e in sorted(errors.items())),
+                 f"{d} {l} {r:g} Hz {n}: {e[1]:.3f}" +
+                 (f" (angle {e[2]:.1f} deg)" if e[2] is not None else "")
+                 for (d, l, r, n), e in sorted(errors.items())),
              "", "| load | defect | size (deg) | place (deg) | rate (Hz) | noise | estimate | "
              "interval | error | covers |", "|---" * 10 + "|"]
     for r in rows:
