@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "lubrication/contact_admittance.h"
@@ -125,6 +126,18 @@ class RaceAdmittance {
   static constexpr int kSplat = 4 * 56;
   alignas(32) std::array<double, kSplat> splat_{};
   static void splat_constants(RaceAdmittance &r);
+  // This race's constants, numbered per construction (a copy keeps the number: the same
+  // constants); 0 for a default one.
+  std::uint64_t serial_ = 0;
+  // contacts(a, ..., b, ...)'s shared group: its constants blended lane by lane (la lanes of
+  // a, then b's), kept by race a for its last partner and rebuilt only when b, la or lb change
+  // (~-180 instructions a step). Mutable: one caller at a time per race a.
+  struct Blended {
+    std::uint64_t partner = 0;
+    std::size_t la = 0, lb = 0;  // la = 0: none yet
+    alignas(32) std::array<double, kSplat> splat{};
+  };
+  mutable Blended blended_;
 };
 
 }  // namespace ohmdem::lubrication

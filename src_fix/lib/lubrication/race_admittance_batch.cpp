@@ -289,23 +289,14 @@ struct RaceLanes {
                                         ContactAdmittance *ob, std::size_t lb)
   {
     const std::size_t na = ia.size(), nb = ib.size();
-    const RaceConstants &ka = constants(ra), &kb = constants(rb);
-    v4i from_b = splat(0.0) > 1.0;  // no lane
-    for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
-    // The constants lane by lane (wt and dt only for the eight divisions' form).
-    // (RaceConstants is 56 vectors in a row, static_assert above: its bytes taken 32 at a time.)
-    RaceConstants k;  // wt and dt left unset for the one-fraction form (never read there)
-    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
-    char *pk = reinterpret_cast<char *>(&k);
-    const std::size_t fields = ra.rational_ ? offsetof(RaceConstants, wt) / sizeof(v4d)
-                                            : sizeof(RaceConstants) / sizeof(v4d);
-    for (std::size_t f = 0; f < fields; ++f) {
-      v4d va, vb;
-      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
-      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
-      const v4d v = select<kAvx2>(from_b, vb, va);
-      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
+    RaceAdmittance::Blended &blended = ra.blended_;
+    if (blended.partner != rb.serial_ || blended.la != la || blended.lb != lb) {
+      blend(constants(ra), constants(rb), ra.rational_, la, lb, blended.splat.data());
+      blended.partner = rb.serial_;
+      blended.la = la;
+      blended.lb = lb;
     }
+    const RaceConstants &k = *reinterpret_cast<const RaceConstants *>(blended.splat.data());
     ContactAdmittance *lanes[kLanes];
     Group grp{&k, {&ra, &ra, &ra, &ra}, nullptr, lanes};
     v4d fn = splat(1.0), speed = splat(1.0), g_dry = splat(0.0), recess = splat(0.0);
@@ -324,6 +315,28 @@ struct RaceLanes {
       recess[l] = in.recess()[at];
     }
     four<kAvx2>(grp, ra.rational_, fn, speed, g_dry, recess, static_cast<int>(la + lb));
+  }
+
+  // The constants of a group of la lanes of race a, then lb of race b, lane by lane into `to`
+  // (RaceConstants' layout; wt and dt only for the eight divisions' form: never read in the
+  // one-fraction form). RaceConstants is 56 vectors in a row (static_assert above): its bytes
+  // taken 32 at a time. Plain code (either instruction set's caller): rarely run.
+  static void blend(const RaceConstants &ka, const RaceConstants &kb, bool rational,
+                    std::size_t la, std::size_t lb, double *to)
+  {
+    v4i from_b = splat(0.0) > 1.0;  // no lane
+    for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
+    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
+    char *pk = reinterpret_cast<char *>(to);
+    const std::size_t fields =
+        rational ? offsetof(RaceConstants, wt) / sizeof(v4d) : sizeof(RaceConstants) / sizeof(v4d);
+    for (std::size_t f = 0; f < fields; ++f) {
+      v4d va, vb;
+      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
+      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
+      const v4d v = select(from_b, vb, va);
+      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
+    }
   }
 
   // Whether two races' last contacts go in one group: both have some, they fit, and the races'
