@@ -289,8 +289,14 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   balls_in_.resize(nballs);
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) films_[side].resize(batch_[side].size());
-  lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1], batch_[1],
-                                films_[1].data());
+  // (with each race's smallest films: a race pit's correction below leaves them as they are)
+  const auto minima = lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(),
+                                                    film_[1], batch_[1], films_[1].data());
+  for (int side = 0; side < 2; ++side) {
+    const int k = inner_[side];
+    hmin[k] = std::min(hmin[k], minima[side].minimum);
+    lambda_min = std::min(lambda_min, minima[side].lambda);
+  }
   for (const PitFix &f : pit_fixes_)
     lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
                           films_[f.side][f.index]);
@@ -313,9 +319,6 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
       const lub::ContactAdmittance &f = films[side][ref];
       film[side] = &f;
       y[side] = f.y(omega());
-      const int k = inner_[side];
-      hmin[k] = std::min(hmin[k], f.film.minimum);
-      lambda_min = std::min(lambda_min, f.lambda);
     }
     if (breakdown) {
       // break_down_ball reads the films of the pressed contacts only.

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "lubrication/contact_admittance.h"
@@ -84,14 +85,24 @@ class RaceAdmittance {
   // unless `isa` asks for SSE2 (the tests compare both).
   enum class Isa { best, sse2 };
   void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
+  // The smallest film.minimum and lambda of a race's records (infinity: no record), taken
+  // four wide where the records are (the caller's loop need not visit them). min is exact and
+  // the records hold no -0 (films >= +0), so the order of the comparisons does not matter; a
+  // NaN is passed over, as std::min(smallest, x) passes it.
+  struct Minima {
+    double minimum = std::numeric_limits<double>::infinity();
+    double lambda = std::numeric_limits<double>::infinity();
+  };
   // Both races of a bearing at once: each race's contacts as contacts() gives them (the same
   // bits), its full groups of four alone, and the two races' last contacts together in one
   // group where they fit in it (a bearing of 13 balls: one group instead of two contacts by
   // the scalar code). The races' oils must be the same (their permittivity in the same form);
   // else, or where the last contacts do not fit one group, each race's as contacts().
-  static void contacts(const RaceAdmittance &a, const ContactBatch &in_a, ContactAdmittance *out_a,
-                       const RaceAdmittance &b, const ContactBatch &in_b, ContactAdmittance *out_b,
-                       Isa isa = Isa::best);
+  // Returns each race's Minima (a's, then b's).
+  static std::array<Minima, 2> contacts(const RaceAdmittance &a, const ContactBatch &in_a,
+                                        ContactAdmittance *out_a, const RaceAdmittance &b,
+                                        const ContactBatch &in_b, ContactAdmittance *out_b,
+                                        Isa isa = Isa::best);
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
   const RaceInput &input() const { return in_; }
