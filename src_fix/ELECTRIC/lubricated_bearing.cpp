@@ -61,6 +61,23 @@ v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px,
   return magnitude / norm;
 }
 
+// lub::series(y1, y2) with y = {G, B} two doubles per operation: each lane the scalar form's
+// operations, so the same bits. x - y is x + (-y) and (-x) y is -(x y) exactly, so its
+// (pr sr - pi (-si), pr (-si) + pi sr) is (pr sr + pi si, pi sr + (-(pr si))).
+v2d series_lanes(v2d y1, v2d y2)
+{
+  const v2d s = y1 + y2;  // sr, si
+  if (_mm_movemask_pd(_mm_cmpeq_pd((__m128d)s, _mm_setzero_pd())) == 3) return v2d{0.0, 0.0};
+  const v2d neg_lo = (v2d)(v2i){std::int64_t(0x8000000000000000ull), 0};  // -x in lane 0
+  // pr = r1 r2 - i1 i2, pi = r1 i2 + i1 r2
+  const v2d p = v2d{y1[0], y1[0]} * y2 + (v2d)((v2i)(v2d{y1[1], y1[1]} * v2d{y2[1], y2[0]}) ^
+                                              (v2i)neg_lo);
+  const v2d sq = s * s;
+  const double n = sq[0] + sq[1];
+  const v2d q = v2d{p[1], p[0]} * (v2d)((v2i)v2d{s[1], s[1]} ^ (v2i)(v2d{0.0, -0.0}));
+  return (p * v2d{s[0], s[0]} + q) / v2d{n, n};
+}
+
 // A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
 // the pit's centre is at -offset.
 lub::PitStrip pit_strip(const ohmdem::PitView &p)
@@ -306,19 +323,23 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   if (breakdown || settings_.network || gather) build_records();
   balls_.resize(nballs);
   const lub::ContactAdmittance *const films[2] = {films_[0].data(), films_[1].data()};
+  const BallRefs *const refs = balls_in_.data();
+  ohmdem::TaggedValues<2> *const balls = balls_.data();
+  const double omega = omega_;
   for (std::size_t n = 0; n < nballs; ++n) {
-    const BallRefs &b = balls_in_[n];
-    std::complex<double> y[2];
+    const BallRefs &b = refs[n];
+    v2d y[2];  // f.y(omega) as {G, omega C}
     const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
     for (int side = 0; side < 2; ++side) {
       const int ref = b.ref[side];
       if (ref < 0) {
-        y[side] = idle_[-1 - ref].y;
+        const std::complex<double> &idle = idle_[-1 - ref].y;
+        y[side] = v2d{idle.real(), idle.imag()};
         continue;
       }
       const lub::ContactAdmittance &f = films[side][ref];
       film[side] = &f;
-      y[side] = f.y(omega());
+      y[side] = v2d{f.g, omega * f.capacitance()};
     }
     if (breakdown) {
       // break_down_ball reads the films of the pressed contacts only.
@@ -327,11 +348,11 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
       for (int side = 0; side < 2; ++side)
         if (film[side]) both[side] = *film[side];
       break_down(pair, both);
-      y[0] = pair[0].y;
-      y[1] = pair[1].y;
+      for (int side = 0; side < 2; ++side) y[side] = v2d{pair[side].y.real(), pair[side].y.imag()};
     }
-    const std::complex<double> ball = lub::series(y[0], y[1]);
-    balls_[n] = {b.tag, {ball.real(), ball.imag()}};
+    const v2d ball = series_lanes(y[0], y[1]);
+    balls[n].tag = b.tag;
+    balls[n].v = {ball[0], ball[1]};
   }
   LubricatedResult out;
   std::complex<double> y_bearing;
