@@ -11,6 +11,7 @@
 #include <exception>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_set.h"
@@ -70,8 +71,8 @@ v2d series_lanes(v2d y1, v2d y2)
   if (_mm_movemask_pd(_mm_cmpeq_pd((__m128d)s, _mm_setzero_pd())) == 3) return v2d{0.0, 0.0};
   const v2d neg_lo = (v2d)(v2i){std::int64_t(0x8000000000000000ull), 0};  // -x in lane 0
   // pr = r1 r2 - i1 i2, pi = r1 i2 + i1 r2
-  const v2d p = v2d{y1[0], y1[0]} * y2 + (v2d)((v2i)(v2d{y1[1], y1[1]} * v2d{y2[1], y2[0]}) ^
-                                              (v2i)neg_lo);
+  const v2d p =
+      v2d{y1[0], y1[0]} * y2 + (v2d)((v2i)(v2d{y1[1], y1[1]} * v2d{y2[1], y2[0]}) ^ (v2i)neg_lo);
   const v2d sq = s * s;
   const double n = sq[0] + sq[1];
   const v2d q = v2d{p[1], p[0]} * (v2d)((v2i)v2d{s[1], s[1]} ^ (v2i)(v2d{0.0, -0.0}));
@@ -184,8 +185,13 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
   // defects under the contact (a ball's pit) add their recess over the whole circle.
   ohmdem::PitView &pit = pit_;  // set, and read, only near a pit
-  double recess = 0.0;
-  const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
+  double recess = 0.0;  // kept in a register: pit_near writes through a pointer, when called
+  bool near_pit = false;
+  if (race.has_defects()) {
+    double rest;
+    near_pit = race.pit_near(i, settings_.wetted, pit, rest);
+    recess = rest;
+  }
   if (!(view.fn() > 0.0)) {
     LubricatedContact &out = idle_.emplace_back();
     out.tag = static_cast<std::int64_t>(atom->tag[i]);
@@ -307,8 +313,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) films_[side].resize(batch_[side].size());
   // (with each race's smallest films: a race pit's correction below leaves them as they are)
-  const auto minima = lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(),
-                                                    film_[1], batch_[1], films_[1].data());
+  const auto minima = lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1],
+                                                    batch_[1], films_[1].data());
   for (int side = 0; side < 2; ++side) {
     const int k = inner_[side];
     hmin[k] = std::min(hmin[k], minima[side].minimum);
@@ -326,34 +332,42 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   const BallRefs *const refs = balls_in_.data();
   ohmdem::TaggedValues<2> *const balls = balls_.data();
   const double omega = omega_;
-  for (std::size_t n = 0; n < nballs; ++n) {
-    const BallRefs &b = refs[n];
-    v2d y[2];  // f.y(omega) as {G, omega C}
-    const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
-    for (int side = 0; side < 2; ++side) {
-      const int ref = b.ref[side];
-      if (ref < 0) {
-        const std::complex<double> &idle = idle_[-1 - ref].y;
-        y[side] = v2d{idle.real(), idle.imag()};
-        continue;
+  // (the breakdown test once: the loop's body twice, with and without it)
+  const auto each_ball = [&](auto with_breakdown) {
+    for (std::size_t n = 0; n < nballs; ++n) {
+      const BallRefs &b = refs[n];
+      v2d y[2];  // f.y(omega) as {G, omega C}
+      const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
+      for (int side = 0; side < 2; ++side) {
+        const int ref = b.ref[side];
+        if (ref < 0) {
+          const std::complex<double> &idle = idle_[-1 - ref].y;
+          y[side] = v2d{idle.real(), idle.imag()};
+          continue;
+        }
+        const lub::ContactAdmittance &f = films[side][ref];
+        film[side] = &f;
+        y[side] = v2d{f.g, omega * f.capacitance()};
       }
-      const lub::ContactAdmittance &f = films[side][ref];
-      film[side] = &f;
-      y[side] = v2d{f.g, omega * f.capacitance()};
+      if constexpr (decltype(with_breakdown)::value) {
+        // break_down_ball reads the films of the pressed contacts only.
+        LubricatedContact *const pair = &contacts_[2 * n];
+        lub::ContactAdmittance both[2];
+        for (int side = 0; side < 2; ++side)
+          if (film[side]) both[side] = *film[side];
+        break_down(pair, both);
+        for (int side = 0; side < 2; ++side)
+          y[side] = v2d{pair[side].y.real(), pair[side].y.imag()};
+      }
+      const v2d ball = series_lanes(y[0], y[1]);
+      balls[n].tag = b.tag;
+      balls[n].v = {ball[0], ball[1]};
     }
-    if (breakdown) {
-      // break_down_ball reads the films of the pressed contacts only.
-      LubricatedContact *const pair = &contacts_[2 * n];
-      lub::ContactAdmittance both[2];
-      for (int side = 0; side < 2; ++side)
-        if (film[side]) both[side] = *film[side];
-      break_down(pair, both);
-      for (int side = 0; side < 2; ++side) y[side] = v2d{pair[side].y.real(), pair[side].y.imag()};
-    }
-    const v2d ball = series_lanes(y[0], y[1]);
-    balls[n].tag = b.tag;
-    balls[n].v = {ball[0], ball[1]};
-  }
+  };
+  if (breakdown)
+    each_ball(std::true_type());
+  else
+    each_ball(std::false_type());
   LubricatedResult out;
   std::complex<double> y_bearing;
   if (settings_.network || gather) network_->gather(contacts_, world);
