@@ -209,7 +209,7 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   // Into the race's batch; the few contacts near a race pit also get the Hertz zone and the gap
   // over the strip, once the batch has the contact's film (evaluate()).
   const std::size_t index =
-      batch_[side].add(view.fn(), speed,
+      batch_[side].add_reserved(view.fn(), speed,
                        view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
                        recess);  // other defects' recess under the contact
   if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
@@ -290,6 +290,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
     batch_[side].clear();
+    batch_[side].reserve(atom->nlocal);  // one contact per ball at most (collect())
   }
   const RaceMotion &m0 = motion_[0], &m1 = motion_[1];
   const RaceLanes2 motion = {

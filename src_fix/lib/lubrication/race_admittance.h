@@ -30,6 +30,16 @@ class ContactBatch {
   std::size_t add(double fn, double speed, double g_dry, double recess)
   {
     if (n_ == capacity_) grow();
+    return add_reserved(fn, speed, g_dry, recess);
+  }
+  // Room for n contacts in all; add_reserved() then has no capacity test (the bearing's loop:
+  // at most one contact per ball and race, reserved for every local atom).
+  void reserve(std::size_t n)
+  {
+    while (capacity_ < n) grow();
+  }
+  std::size_t add_reserved(double fn, double speed, double g_dry, double recess)
+  {
     fn_[n_] = fn;
     speed_[n_] = speed;
     g_dry_[n_] = g_dry;
