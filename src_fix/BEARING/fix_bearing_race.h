@@ -67,6 +67,7 @@ class FixBearingRace : public FixBearingBody {
     rest = 0.0;
     return !defects_.empty() && defect_pit(i, reach, pit, rest);  // inline: most runs have none
   }
+  bool has_defects() const { return !defects_.empty(); }
   const ohmdem::RaceContactModel &contact_model() const { return *model_; }
   bool is_inner() const { return settings_.inner; }
   double groove() const { return settings_.groove; }  // groove radius (m)

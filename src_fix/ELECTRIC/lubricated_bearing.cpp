@@ -11,6 +11,7 @@
 #include <exception>
 #include <limits>
 #include <string>
+#include <type_traits>
 
 #include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_set.h"
@@ -59,6 +60,23 @@ v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px,
   const v2d norm = (v2d)_mm_sqrt_pd((__m128d)n2);  // correctly rounded, as std::sqrt
   const v2d magnitude = (v2d)((v2i)along & (v2i){kAbsMask, kAbsMask});  // fabs
   return magnitude / norm;
+}
+
+// lub::series(y1, y2) with y = {G, B} two doubles per operation: each lane the scalar form's
+// operations, so the same bits. x - y is x + (-y) and (-x) y is -(x y) exactly, so its
+// (pr sr - pi (-si), pr (-si) + pi sr) is (pr sr + pi si, pi sr + (-(pr si))).
+v2d series_lanes(v2d y1, v2d y2)
+{
+  const v2d s = y1 + y2;  // sr, si
+  if (_mm_movemask_pd(_mm_cmpeq_pd((__m128d)s, _mm_setzero_pd())) == 3) return v2d{0.0, 0.0};
+  const v2d neg_lo = (v2d)(v2i){std::int64_t(0x8000000000000000ull), 0};  // -x in lane 0
+  // pr = r1 r2 - i1 i2, pi = r1 i2 + i1 r2
+  const v2d p =
+      v2d{y1[0], y1[0]} * y2 + (v2d)((v2i)(v2d{y1[1], y1[1]} * v2d{y2[1], y2[0]}) ^ (v2i)neg_lo);
+  const v2d sq = s * s;
+  const double n = sq[0] + sq[1];
+  const v2d q = v2d{p[1], p[0]} * (v2d)((v2i)v2d{s[1], s[1]} ^ (v2i)(v2d{0.0, -0.0}));
+  return (p * v2d{s[0], s[0]} + q) / v2d{n, n};
 }
 
 // A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
@@ -167,8 +185,13 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   // A race pit within the wetted circle is a strip across the raceway (pit_strip); other
   // defects under the contact (a ball's pit) add their recess over the whole circle.
   ohmdem::PitView &pit = pit_;  // set, and read, only near a pit
-  double recess = 0.0;
-  const bool near_pit = race.pit_near(i, settings_.wetted, pit, recess);
+  double recess = 0.0;  // kept in a register: pit_near writes through a pointer, when called
+  bool near_pit = false;
+  if (race.has_defects()) {
+    double rest;
+    near_pit = race.pit_near(i, settings_.wetted, pit, rest);
+    recess = rest;
+  }
   if (!(view.fn() > 0.0)) {
     LubricatedContact &out = idle_.emplace_back();
     out.tag = static_cast<std::int64_t>(atom->tag[i]);
@@ -186,7 +209,7 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   // Into the race's batch; the few contacts near a race pit also get the Hertz zone and the gap
   // over the strip, once the batch has the contact's film (evaluate()).
   const std::size_t index =
-      batch_[side].add(view.fn(), speed,
+      batch_[side].add_reserved(view.fn(), speed,
                        view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
                        recess);  // other defects' recess under the contact
   if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
@@ -267,6 +290,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
     batch_[side].clear();
+    batch_[side].reserve(atom->nlocal);  // one contact per ball at most (collect())
   }
   const RaceMotion &m0 = motion_[0], &m1 = motion_[1];
   const RaceLanes2 motion = {
@@ -289,8 +313,14 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   balls_in_.resize(nballs);
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) films_[side].resize(batch_[side].size());
-  lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1], batch_[1],
-                                films_[1].data());
+  // (with each race's smallest films: a race pit's correction below leaves them as they are)
+  const auto minima = lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1],
+                                                    batch_[1], films_[1].data());
+  for (int side = 0; side < 2; ++side) {
+    const int k = inner_[side];
+    hmin[k] = std::min(hmin[k], minima[side].minimum);
+    lambda_min = std::min(lambda_min, minima[side].lambda);
+  }
   for (const PitFix &f : pit_fixes_)
     lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
                           films_[f.side][f.index]);
@@ -300,36 +330,45 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   if (breakdown || settings_.network || gather) build_records();
   balls_.resize(nballs);
   const lub::ContactAdmittance *const films[2] = {films_[0].data(), films_[1].data()};
-  for (std::size_t n = 0; n < nballs; ++n) {
-    const BallRefs &b = balls_in_[n];
-    std::complex<double> y[2];
-    const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
-    for (int side = 0; side < 2; ++side) {
-      const int ref = b.ref[side];
-      if (ref < 0) {
-        y[side] = idle_[-1 - ref].y;
-        continue;
+  const BallRefs *const refs = balls_in_.data();
+  ohmdem::TaggedValues<2> *const balls = balls_.data();
+  const double omega = omega_;
+  // (the breakdown test once: the loop's body twice, with and without it)
+  const auto each_ball = [&](auto with_breakdown) {
+    for (std::size_t n = 0; n < nballs; ++n) {
+      const BallRefs &b = refs[n];
+      v2d y[2];  // f.y(omega) as {G, omega C}
+      const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
+      for (int side = 0; side < 2; ++side) {
+        const int ref = b.ref[side];
+        if (ref < 0) {
+          const std::complex<double> &idle = idle_[-1 - ref].y;
+          y[side] = v2d{idle.real(), idle.imag()};
+          continue;
+        }
+        const lub::ContactAdmittance &f = films[side][ref];
+        film[side] = &f;
+        y[side] = v2d{f.g, omega * f.capacitance()};
       }
-      const lub::ContactAdmittance &f = films[side][ref];
-      film[side] = &f;
-      y[side] = f.y(omega());
-      const int k = inner_[side];
-      hmin[k] = std::min(hmin[k], f.film.minimum);
-      lambda_min = std::min(lambda_min, f.lambda);
+      if constexpr (decltype(with_breakdown)::value) {
+        // break_down_ball reads the films of the pressed contacts only.
+        LubricatedContact *const pair = &contacts_[2 * n];
+        lub::ContactAdmittance both[2];
+        for (int side = 0; side < 2; ++side)
+          if (film[side]) both[side] = *film[side];
+        break_down(pair, both);
+        for (int side = 0; side < 2; ++side)
+          y[side] = v2d{pair[side].y.real(), pair[side].y.imag()};
+      }
+      const v2d ball = series_lanes(y[0], y[1]);
+      balls[n].tag = b.tag;
+      balls[n].v = {ball[0], ball[1]};
     }
-    if (breakdown) {
-      // break_down_ball reads the films of the pressed contacts only.
-      LubricatedContact *const pair = &contacts_[2 * n];
-      lub::ContactAdmittance both[2];
-      for (int side = 0; side < 2; ++side)
-        if (film[side]) both[side] = *film[side];
-      break_down(pair, both);
-      y[0] = pair[0].y;
-      y[1] = pair[1].y;
-    }
-    const std::complex<double> ball = lub::series(y[0], y[1]);
-    balls_[n] = {b.tag, {ball.real(), ball.imag()}};
-  }
+  };
+  if (breakdown)
+    each_ball(std::true_type());
+  else
+    each_ball(std::false_type());
   LubricatedResult out;
   std::complex<double> y_bearing;
   if (settings_.network || gather) network_->gather(contacts_, world);

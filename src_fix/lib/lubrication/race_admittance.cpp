@@ -3,6 +3,7 @@
 #include "lubrication/race_admittance.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -116,6 +117,8 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
   inv_resistivity_ = 1.0 / in.resistivity;
   scale_ = kEpsilon0 * in.eps_r * std::sqrt(in.rx * in.ry) * 2.0 * kPi;
   splat_constants(*this);
+  static std::atomic<std::uint64_t> races{0};
+  serial_ = ++races;
 }
 
 void RaceAdmittance::contact(double fn, double speed, double g_dry, double recess,

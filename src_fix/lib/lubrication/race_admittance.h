@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "lubrication/contact_admittance.h"
@@ -28,6 +30,16 @@ class ContactBatch {
   std::size_t add(double fn, double speed, double g_dry, double recess)
   {
     if (n_ == capacity_) grow();
+    return add_reserved(fn, speed, g_dry, recess);
+  }
+  // Room for n contacts in all; add_reserved() then has no capacity test (the bearing's loop:
+  // at most one contact per ball and race, reserved for every local atom).
+  void reserve(std::size_t n)
+  {
+    while (capacity_ < n) grow();
+  }
+  std::size_t add_reserved(double fn, double speed, double g_dry, double recess)
+  {
     fn_[n_] = fn;
     speed_[n_] = speed;
     g_dry_[n_] = g_dry;
@@ -83,14 +95,24 @@ class RaceAdmittance {
   // unless `isa` asks for SSE2 (the tests compare both).
   enum class Isa { best, sse2 };
   void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
+  // The smallest film.minimum and lambda of a race's records (infinity: no record), taken
+  // four wide where the records are (the caller's loop need not visit them). min is exact and
+  // the records hold no -0 (films >= +0), so the order of the comparisons does not matter; a
+  // NaN is passed over, as std::min(smallest, x) passes it.
+  struct Minima {
+    double minimum = std::numeric_limits<double>::infinity();
+    double lambda = std::numeric_limits<double>::infinity();
+  };
   // Both races of a bearing at once: each race's contacts as contacts() gives them (the same
   // bits), its full groups of four alone, and the two races' last contacts together in one
   // group where they fit in it (a bearing of 13 balls: one group instead of two contacts by
   // the scalar code). The races' oils must be the same (their permittivity in the same form);
   // else, or where the last contacts do not fit one group, each race's as contacts().
-  static void contacts(const RaceAdmittance &a, const ContactBatch &in_a, ContactAdmittance *out_a,
-                       const RaceAdmittance &b, const ContactBatch &in_b, ContactAdmittance *out_b,
-                       Isa isa = Isa::best);
+  // Returns each race's Minima (a's, then b's).
+  static std::array<Minima, 2> contacts(const RaceAdmittance &a, const ContactBatch &in_a,
+                                        ContactAdmittance *out_a, const RaceAdmittance &b,
+                                        const ContactBatch &in_b, ContactAdmittance *out_b,
+                                        Isa isa = Isa::best);
   // idle_gap_capacitance(gap, rx, ry, r_wet, eps_r, sigma).
   double idle(double gap) const;
   const RaceInput &input() const { return in_; }
@@ -125,6 +147,18 @@ class RaceAdmittance {
   static constexpr int kSplat = 4 * 56;
   alignas(32) std::array<double, kSplat> splat_{};
   static void splat_constants(RaceAdmittance &r);
+  // This race's constants, numbered per construction (a copy keeps the number: the same
+  // constants); 0 for a default one.
+  std::uint64_t serial_ = 0;
+  // contacts(a, ..., b, ...)'s shared group: its constants blended lane by lane (la lanes of
+  // a, then b's), kept by race a for its last partner and rebuilt only when b, la or lb change
+  // (~-180 instructions a step). Mutable: one caller at a time per race a.
+  struct Blended {
+    std::uint64_t partner = 0;
+    std::size_t la = 0, lb = 0;  // la = 0: none yet
+    alignas(32) std::array<double, kSplat> splat{};
+  };
+  mutable Blended blended_;
 };
 
 }  // namespace ohmdem::lubrication

@@ -11,8 +11,10 @@
 // four-lane operands kept by RaceAdmittance (one load per use instead of a broadcast). The body is
 // compiled twice, for SSE2 and AVX2 (there with lanes4.h's gathers, sign masks and blends: kAvx2),
 // chosen at run time: the same bits (no FMA: the file is built with -ffp-contract=off).
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "common/constants.h"
 #include "common/fast_exp_log.h"
@@ -88,6 +90,22 @@ struct RaceLanes {
     return *reinterpret_cast<const RaceConstants *>(r.splat_.data());
   }
 
+  // A race's smallest film.minimum: over its full groups lane by lane (folded into one at the
+  // race's end), and over the records written one by one. Its lambda is minimum / sigma, each
+  // record's film.minimum * inv_sigma_ (contact() and four()): rounding is monotonic, so the
+  // smallest lambda is the smallest film's, bit for bit (RaceAdmittance::contacts, at the end).
+  static OHMDEM_LANES_INLINE void fold(double &minimum, const ContactAdmittance &c)
+  {
+    minimum = std::min(minimum, c.film.minimum);
+  }
+  template <bool kAvx2>
+  static OHMDEM_LANES_INLINE double fold(double minimum, v4d lanes)
+  {
+    const v4d pairs = lanes::min<kAvx2>(lanes, __builtin_shuffle(lanes, v4i{2, 3, 0, 1}));
+    const v4d all = lanes::min<kAvx2>(pairs, __builtin_shuffle(pairs, v4i{1, 0, 3, 2}));
+    return std::min(minimum, all[0]);
+  }
+
   static OHMDEM_LANES_INLINE v4d permittivity(bool rational, const RaceConstants &k, v4d q0)
   {
     if (rational) {
@@ -102,10 +120,12 @@ struct RaceLanes {
   }
 
   // Lanes [0, m) of fn ... into the group's records; the comments are RaceAdmittance::contact's
-  // steps. `rational`: the races' permittivity form (the same for every lane).
+  // steps. `rational`: the races' permittivity form (the same for every lane). Returns whether
+  // the group's films went into `minima` (one race's full group, stored four wide); else the
+  // caller takes them from the records.
   template <bool kAvx2>
-  static OHMDEM_LANES_INLINE void four(const Group &grp, bool rational, v4d fn, v4d speed,
-                                       v4d g_dry, v4d recess, int m)
+  static OHMDEM_LANES_INLINE bool four(const Group &grp, bool rational, v4d fn, v4d speed,
+                                       v4d g_dry, v4d recess, int m, v4d *minima)
   {
     const RaceConstants &k = *grp.k;
     // A contact that does not roll (its cube root) or whose inputs leave log_fast's range: the
@@ -189,7 +209,9 @@ struct RaceLanes {
       store_rows(grp, 4, c_hertz, c_outer, g, gap);
 #pragma GCC unroll 4
       for (int l = 0; l < kLanes; ++l) grp.out(l).g_dry = g_dry[l];
-      return;
+      if (!minima) return false;
+      *minima = lanes::min<kAvx2>(*minima, minimum);
+      return true;
     }
     for (int l = 0; l < m; ++l) {
       const RaceAdmittance &r = *grp.race[l];
@@ -204,6 +226,7 @@ struct RaceLanes {
                                       ri.eps_r),
              g[l], gap[l], g_dry[l]);
     }
+    return false;
   }
 
   // Lane l of (a, b, c, d) into the four doubles of record l from its field `first`.
@@ -242,7 +265,8 @@ struct RaceLanes {
   // whose record is dropped.
   template <bool kAvx2>
   static OHMDEM_LANES_INLINE void group_of(const RaceAdmittance &r, const ContactBatch &in,
-                                           std::size_t i, int m, ContactAdmittance *out)
+                                           std::size_t i, int m, ContactAdmittance *out,
+                                           v4d &lanes, double &records)
   {
     const Group grp{&constants(r), {&r, &r, &r, &r}, out + i, nullptr};
     v4d fn, speed, g_dry, recess;
@@ -261,51 +285,50 @@ struct RaceLanes {
         recess[l] = in.recess()[i + l];
       }
     }
-    four<kAvx2>(grp, r.rational_, fn, speed, g_dry, recess, m);
+    if (!four<kAvx2>(grp, r.rational_, fn, speed, g_dry, recess, m, &lanes))
+      for (int l = 0; l < m; ++l) fold(records, out[i + l]);
   }
 
   // Contacts [0, n) of one race: groups of four, a last one of one by the scalar code (its
   // bits; ~600 instructions, a group ~800), of two or three padded.
   template <bool kAvx2>
-  static OHMDEM_LANES_INLINE void run(const RaceAdmittance &r, const ContactBatch &in,
-                                      ContactAdmittance *out, std::size_t n)
+  static OHMDEM_LANES_INLINE double run(const RaceAdmittance &r, const ContactBatch &in,
+                                        ContactAdmittance *out, std::size_t n)
   {
+    v4d lanes = splat(std::numeric_limits<double>::infinity());
+    double minimum = lanes[0];
     for (std::size_t i = 0; i < n; i += kLanes) {
       const int m = n - i < kLanes ? static_cast<int>(n - i) : kLanes;
-      if (m == 1)
+      if (m == 1) {
         r.contact(in.fn()[i], in.speed()[i], in.g_dry()[i], in.recess()[i], out[i]);
-      else
-        group_of<kAvx2>(r, in, i, m, out);
+        fold(minimum, out[i]);
+      } else {
+        group_of<kAvx2>(r, in, i, m, out, lanes, minimum);
+      }
     }
+    return fold<kAvx2>(minimum, lanes);
   }
 
   // The last contacts of two races in one group: la of race a (from its contact na - la), then
   // lb of race b, each lane with its race's constants (la, lb >= 1, la + lb <= 4, the same
-  // permittivity form); padding as race a's.
+  // permittivity form); padding as race a's. Each race's films into its minima, from the
+  // records.
   template <bool kAvx2>
   static OHMDEM_LANES_INLINE void mixed(const RaceAdmittance &ra, const ContactBatch &ia,
                                         ContactAdmittance *oa, std::size_t la,
                                         const RaceAdmittance &rb, const ContactBatch &ib,
-                                        ContactAdmittance *ob, std::size_t lb)
+                                        ContactAdmittance *ob, std::size_t lb, double &ma,
+                                        double &mb)
   {
     const std::size_t na = ia.size(), nb = ib.size();
-    const RaceConstants &ka = constants(ra), &kb = constants(rb);
-    v4i from_b = splat(0.0) > 1.0;  // no lane
-    for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
-    // The constants lane by lane (wt and dt only for the eight divisions' form).
-    // (RaceConstants is 56 vectors in a row, static_assert above: its bytes taken 32 at a time.)
-    RaceConstants k;  // wt and dt left unset for the one-fraction form (never read there)
-    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
-    char *pk = reinterpret_cast<char *>(&k);
-    const std::size_t fields = ra.rational_ ? offsetof(RaceConstants, wt) / sizeof(v4d)
-                                            : sizeof(RaceConstants) / sizeof(v4d);
-    for (std::size_t f = 0; f < fields; ++f) {
-      v4d va, vb;
-      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
-      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
-      const v4d v = select<kAvx2>(from_b, vb, va);
-      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
+    RaceAdmittance::Blended &blended = ra.blended_;
+    if (blended.partner != rb.serial_ || blended.la != la || blended.lb != lb) {
+      blend(constants(ra), constants(rb), ra.rational_, la, lb, blended.splat.data());
+      blended.partner = rb.serial_;
+      blended.la = la;
+      blended.lb = lb;
     }
+    const RaceConstants &k = *reinterpret_cast<const RaceConstants *>(blended.splat.data());
     ContactAdmittance *lanes[kLanes];
     Group grp{&k, {&ra, &ra, &ra, &ra}, nullptr, lanes};
     v4d fn = splat(1.0), speed = splat(1.0), g_dry = splat(0.0), recess = splat(0.0);
@@ -323,7 +346,31 @@ struct RaceLanes {
       g_dry[l] = in.g_dry()[at];
       recess[l] = in.recess()[at];
     }
-    four<kAvx2>(grp, ra.rational_, fn, speed, g_dry, recess, static_cast<int>(la + lb));
+    four<kAvx2>(grp, ra.rational_, fn, speed, g_dry, recess, static_cast<int>(la + lb), nullptr);
+    for (std::size_t l = 0; l < la; ++l) fold(ma, oa[na - la + l]);
+    for (std::size_t l = 0; l < lb; ++l) fold(mb, ob[nb - lb + l]);
+  }
+
+  // The constants of a group of la lanes of race a, then lb of race b, lane by lane into `to`
+  // (RaceConstants' layout; wt and dt only for the eight divisions' form: never read in the
+  // one-fraction form). RaceConstants is 56 vectors in a row (static_assert above): its bytes
+  // taken 32 at a time. Plain code (either instruction set's caller): rarely run.
+  static void blend(const RaceConstants &ka, const RaceConstants &kb, bool rational,
+                    std::size_t la, std::size_t lb, double *to)
+  {
+    v4i from_b = splat(0.0) > 1.0;  // no lane
+    for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
+    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
+    char *pk = reinterpret_cast<char *>(to);
+    const std::size_t fields =
+        rational ? offsetof(RaceConstants, wt) / sizeof(v4d) : sizeof(RaceConstants) / sizeof(v4d);
+    for (std::size_t f = 0; f < fields; ++f) {
+      v4d va, vb;
+      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
+      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
+      const v4d v = select(from_b, vb, va);
+      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
+    }
   }
 
   // Whether two races' last contacts go in one group: both have some, they fit, and the races'
@@ -373,31 +420,34 @@ void RaceAdmittance::splat_constants(RaceAdmittance &r)
 namespace {
 
 // One copy of the kernel per use and instruction set (it is inlined where it is used).
-__attribute__((target("avx2"))) void contacts_avx2(const RaceAdmittance &r, const ContactBatch &in,
-                                                   ContactAdmittance *out, std::size_t n)
+// Each returns its races' smallest film.minimum (RaceLanes::fold).
+__attribute__((target("avx2"))) double contacts_avx2(const RaceAdmittance &r,
+                                                     const ContactBatch &in,
+                                                     ContactAdmittance *out, std::size_t n)
 {
-  RaceLanes::run<true>(r, in, out, n);
+  return RaceLanes::run<true>(r, in, out, n);
 }
 
-void contacts_sse2(const RaceAdmittance &r, const ContactBatch &in, ContactAdmittance *out,
-                   std::size_t n)
+double contacts_sse2(const RaceAdmittance &r, const ContactBatch &in, ContactAdmittance *out,
+                     std::size_t n)
 {
-  RaceLanes::run<false>(r, in, out, n);
+  return RaceLanes::run<false>(r, in, out, n);
 }
 
 __attribute__((target("avx2"))) void mixed_avx2(const RaceAdmittance &ra, const ContactBatch &ia,
                                                 ContactAdmittance *oa, std::size_t la,
                                                 const RaceAdmittance &rb, const ContactBatch &ib,
-                                                ContactAdmittance *ob, std::size_t lb)
+                                                ContactAdmittance *ob, std::size_t lb,
+                                                double &ma, double &mb)
 {
-  RaceLanes::mixed<true>(ra, ia, oa, la, rb, ib, ob, lb);
+  RaceLanes::mixed<true>(ra, ia, oa, la, rb, ib, ob, lb, ma, mb);
 }
 
 void mixed_sse2(const RaceAdmittance &ra, const ContactBatch &ia, ContactAdmittance *oa,
                 std::size_t la, const RaceAdmittance &rb, const ContactBatch &ib,
-                ContactAdmittance *ob, std::size_t lb)
+                ContactAdmittance *ob, std::size_t lb, double &ma, double &mb)
 {
-  RaceLanes::mixed<false>(ra, ia, oa, la, rb, ib, ob, lb);
+  RaceLanes::mixed<false>(ra, ia, oa, la, rb, ib, ob, lb, ma, mb);
 }
 
 bool use_avx2(RaceAdmittance::Isa isa)
@@ -413,22 +463,25 @@ void RaceAdmittance::contacts(const ContactBatch &in, ContactAdmittance *out, Is
   (use_avx2(isa) ? contacts_avx2 : contacts_sse2)(*this, in, out, in.size());
 }
 
-void RaceAdmittance::contacts(const RaceAdmittance &a, const ContactBatch &in_a,
-                              ContactAdmittance *out_a, const RaceAdmittance &b,
-                              const ContactBatch &in_b, ContactAdmittance *out_b, Isa isa)
+std::array<RaceAdmittance::Minima, 2> RaceAdmittance::contacts(
+    const RaceAdmittance &a, const ContactBatch &in_a, ContactAdmittance *out_a,
+    const RaceAdmittance &b, const ContactBatch &in_b, ContactAdmittance *out_b, Isa isa)
 {
   const bool avx2 = use_avx2(isa);
   const auto each = avx2 ? contacts_avx2 : contacts_sse2;
   const std::size_t na = in_a.size(), nb = in_b.size();
   const std::size_t la = na % kLanes, lb = nb % kLanes;
+  double ma, mb;
   if (!RaceLanes::mixes(a, la, b, lb)) {
-    each(a, in_a, out_a, na);
-    each(b, in_b, out_b, nb);
-    return;
+    ma = each(a, in_a, out_a, na);
+    mb = each(b, in_b, out_b, nb);
+  } else {
+    ma = each(a, in_a, out_a, na - la);
+    mb = each(b, in_b, out_b, nb - lb);
+    (avx2 ? mixed_avx2 : mixed_sse2)(a, in_a, out_a, la, b, in_b, out_b, lb, ma, mb);
   }
-  each(a, in_a, out_a, na - la);
-  each(b, in_b, out_b, nb - lb);
-  (avx2 ? mixed_avx2 : mixed_sse2)(a, in_a, out_a, la, b, in_b, out_b, lb);
+  // The smallest lambda is the smallest film's (RaceLanes::fold).
+  return {Minima{ma, ma * a.inv_sigma_}, Minima{mb, mb * b.inv_sigma_}};
 }
 
 }  // namespace ohmdem::lubrication

@@ -8,6 +8,7 @@
 // reference.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -90,9 +91,23 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
     }
     for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
       const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
+      // The bearing's call (this race, no other) also gives the records' smallest films.
+      ContactBatch in;
+      for (const Case &c : cases) in.add(c.fn, c.speed, c.g_dry, c.recess);
+      std::vector<ContactAdmittance> both(cases.size());
+      const RaceAdmittance::Minima minima =
+          RaceAdmittance::contacts(fast, in, both.data(), fast, ContactBatch{}, nullptr, isa)[0];
+      RaceAdmittance::Minima want;
+      for (const ContactAdmittance &a : out) {
+        want.minimum = std::min(want.minimum, a.film.minimum);
+        want.lambda = std::min(want.lambda, a.lambda);
+      }
+      differ += std::memcmp(&minima.minimum, &want.minimum, sizeof(double)) != 0;
+      differ += std::memcmp(&minima.lambda, &want.lambda, sizeof(double)) != 0;
       for (std::size_t k = 0; k < cases.size(); ++k) {
         const Case &c = cases[k];
         differ += !same_bits(out[k], fast.contact(c.fn, c.speed, c.g_dry, c.recess));
+        differ += !same_bits(both[k], out[k]);
         if (isa == RaceAdmittance::Isa::sse2) continue;
         ++contacts;
         const ContactAdmittance &a = out[k];
@@ -192,14 +207,23 @@ TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
           for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
             std::vector<ContactAdmittance> oa(na + 1), ob(nb + 1);
             oa[na].g = ob[nb].g = 42.0;  // one past the end: never written
-            RaceAdmittance::contacts(fa, ia, oa.data(), fb, ib, ob.data(), isa);
+            const auto minima = RaceAdmittance::contacts(fa, ia, oa.data(), fb, ib, ob.data(), isa);
+            RaceAdmittance::Minima want[2];  // the records' smallest films, in their order
             for (std::size_t k = 0; k < na; ++k) {
               const Case &c = ca[k];
               differ += !same_bits(oa[k], fa.contact(c.fn, c.speed, c.g_dry, c.recess));
+              want[0].minimum = std::min(want[0].minimum, oa[k].film.minimum);
+              want[0].lambda = std::min(want[0].lambda, oa[k].lambda);
             }
             for (std::size_t k = 0; k < nb; ++k) {
               const Case &c = cb[k];
               differ += !same_bits(ob[k], fb.contact(c.fn, c.speed, c.g_dry, c.recess));
+              want[1].minimum = std::min(want[1].minimum, ob[k].film.minimum);
+              want[1].lambda = std::min(want[1].lambda, ob[k].lambda);
+            }
+            for (int r = 0; r < 2; ++r) {
+              differ += std::memcmp(&minima[r].minimum, &want[r].minimum, sizeof(double)) != 0;
+              differ += std::memcmp(&minima[r].lambda, &want[r].lambda, sizeof(double)) != 0;
             }
             EXPECT_EQ(oa[na].g, 42.0);
             EXPECT_EQ(ob[nb].g, 42.0);
