@@ -8,13 +8,13 @@ fitting the bank to their fold, at 10, 20, 50 kHz, low and high noise.
 
   studies/template_bank.py [--rates 1e4,2e4,5e4] [--noise low,high] [--kinds inner:force,...] OUT
 
-The bank's sizes: 28 from 0.2 to 4.27 deg, 12 % apart (the radial outer pit: 14, 25 % apart, at 25
-angles 2.5 deg apart); its own error (the relative RMS of the fitted size of held-out runs at 0.25, 0.6, 1.2,
-2.2, 3.5 deg, x t(0.975, runs) / 1.96) is written in its header and widens the interval; the
-radial outer bank's runs lie at 0 deg and halfway between its angles across the zone (6.25,
-18.75, 31.25, 43.75, 56.25 deg), and the
-RMS error of their fitted angle from the load (the same factor) is its '# angle error (deg)',
-which widens the fit's angle interval before a branch of the phase is picked. Writes
+The bank's sizes: 28 from 0.2 to 4.27 deg, 12 % apart (the radial outer pit: 14, 25 % apart, at
+25 angles 2.5 deg apart); its own error (the relative RMS of the fitted size of held-out runs at
+0.25, 0.6, 1.2, 2.2, 3.5 deg, x t(0.975, runs) / 1.96) is written in its header and widens the
+interval. The radial outer bank's runs lie at 0 deg and halfway between its angles across the
+zone (6.25, 18.75, 31.25, 43.75, 56.25 deg), and the RMS error of their fitted angle from the
+load (the same factor) is its '# angle error (deg)', which widens the fit's angle interval
+before a branch of the phase is picked (no line where no run gave an angle: no branch). Writes
 OUT/bank_<defect>_<load>_r<rate>_<noise>.txt, OUT/template.csv (one row per case and instrument,
 the columns of sizing.csv, written as it goes) and OUT/template.md.
 """
@@ -157,8 +157,9 @@ def make_bank(out, defect, load, rate, noise):
         return (sum(v * v for v in x) / len(x)) ** 0.5 * sizing.T975[min(len(x), 5)] / 1.96 \
             if x else 0.0
     err = rms(dev)
-    # the bank's angle error (a bank with several angles); 180 (no branch picked) without runs
-    angle_err = (rms(adev) if adev else 179.0) if several else None
+    # the bank's angle error (a bank with several angles); no line where no run gave an angle,
+    # and diagnose then picks no branch
+    angle_err = rms(adev) if several and adev else None
     write_bank(path, defect, load, rate, noise, rows, err, angle_err)
     return path, err, angle_err
 

@@ -14,8 +14,8 @@ namespace {
 
 const char *const kForm =
     "'# KEY: VALUE' header lines (bearing, defect, load, sampling rate (Hz), lowpass, bin (s), "
-    "model error, and for a bank with several angles angle error (deg)), then lines 'SIZE_DEG ANGLE_DEG N Y_1..Y_N SE_1..SE_N' (studies/"
-    "template_bank.py writes it)";
+    "model error, and for a bank with several angles angle error (deg)), then lines 'SIZE_DEG "
+    "ANGLE_DEG N Y_1..Y_N SE_1..SE_N' (studies/template_bank.py writes it)";
 
 [[noreturn]] void bad(const std::string &path, const std::string &what)
 {

@@ -210,8 +210,8 @@ __attribute__((always_inline)) inline int LubricatedBearing::collect(
   // over the strip, once the batch has the contact's film (evaluate()).
   const std::size_t index =
       batch_[side].add_reserved(view.fn(), speed,
-                       view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
-                       recess);  // other defects' recess under the contact
+                                view.conducts() ? 2.0 * g_ball : 0.0,  // a defect zone: no metal
+                                recess);  // other defects' recess under the contact
   if (near_pit) pit_fixes_.push_back({side, index, view.fn(), recess, pit});
   return static_cast<int>(index);
 }
