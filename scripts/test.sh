@@ -8,6 +8,10 @@ scripts/install-deps.sh
 # Open MPI refuses to run as root unless told; CI runs as root. 2 cores: oversubscribe.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# A run started without mpirun (most deck tests) does not start Open MPI's orted daemon: 0.2 s
+# less per run (0.35 s instead of 0.55 s for a 2-step deck), the same numbers; the runs under
+# mpirun are not singletons and do not read it.
+export OMPI_MCA_ess_singleton_isolated=1
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2
 ctest --test-dir build --output-on-failure -j2 -LE build

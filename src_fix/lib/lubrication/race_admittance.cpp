@@ -9,9 +9,11 @@
 #include <cstring>
 
 #include "common/constants.h"
+#include "common/estrin.h"
 #include "common/fast_cbrt.h"
 #include "common/fast_erfc.h"
 #include "common/fast_exp_log.h"
+#include "lubrication/exp_small.h"
 #include "lubrication/gap_forms.h"
 
 namespace ohmdem::lubrication {
@@ -29,16 +31,6 @@ double pow2_neg(int k)
   return x;
 }
 const double kSqrtHalf = std::sqrt(0.5), kSqrtPi = std::sqrt(kPi);
-// e^z for |z| < 0.25 by its Taylor series to z^13 (z^14/14! < 1e-19): no range reduction.
-double exp_small(double z)
-{
-  double p = 1.0 / 6227020800.0;
-  for (const double c :
-       {1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
-        1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0})
-    p = c + z * p;
-  return p;
-}
 }  // namespace
 
 RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
@@ -75,7 +67,8 @@ RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
   eps_pole_ = al - be * ga / de;
   // The same sum as one fraction P(q)/Q(q), Q = prod(ga + dt_i q), P = sum wt_i prod_(j != i):
   // one division instead of eight. With de >= 0 (eps_r <= 9.5) every coefficient is positive and
-  // q >= 0, so Horner's rule adds positive terms only (a few ulp); else the eight divisions.
+  // q >= 0, so the sums (Estrin's form, common/estrin.h) add positive terms only (a few ulp);
+  // else the eight divisions.
   rational_ = de >= 0.0;
   // The coefficients (constant term first) of the product of (ga + dt_j q) over j != skip.
   const auto product = [&](int skip) {
@@ -193,9 +186,8 @@ void RaceAdmittance::contact(double fn, double speed, double g_dry, double reces
 double RaceAdmittance::permittivity(double q0) const
 {
   if (rational_) {
-    double num = pc_[7], den = qc_[8];
-    for (int k = 6; k >= 0; --k) num = num * q0 + pc_[k];
-    for (int k = 7; k >= 0; --k) den = den * q0 + qc_[k];
+    const double num = estrin::polynomial<8>(pc_.data(), q0),
+                 den = estrin::polynomial<9>(qc_.data(), q0);
     return eps_const_ + eps_pole_ * (num / den);
   }
   double sum = 0.0;

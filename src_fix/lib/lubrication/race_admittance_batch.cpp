@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "common/constants.h"
+#include "common/estrin.h"
 #include "common/fast_exp_log.h"
 #include "common/lanes4.h"
 #include "lubrication/race_admittance.h"
@@ -109,9 +110,7 @@ struct RaceLanes {
   static OHMDEM_LANES_INLINE v4d permittivity(bool rational, const RaceConstants &k, v4d q0)
   {
     if (rational) {
-      v4d num = k.pc[7], den = k.qc[8];
-      for (int i = 6; i >= 0; --i) num = num * q0 + k.pc[i];
-      for (int i = 7; i >= 0; --i) den = den * q0 + k.qc[i];
+      const v4d num = estrin::polynomial<8>(k.pc, q0), den = estrin::polynomial<9>(k.qc, q0);
       return k.eps_const + k.eps_pole * (num / den);
     }
     v4d sum = splat(0.0);

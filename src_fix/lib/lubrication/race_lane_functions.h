@@ -7,9 +7,11 @@
 #ifndef OHMDEM_LUBRICATION_RACE_LANE_FUNCTIONS_H
 #define OHMDEM_LUBRICATION_RACE_LANE_FUNCTIONS_H
 
+#include "common/estrin.h"
 #include "common/fast_erfc.h"
 #include "common/fast_exp_log.h"
 #include "common/lanes4.h"
+#include "lubrication/exp_small.h"
 #include "lubrication/gap_forms.h"
 
 namespace ohmdem::lubrication::race_lanes {
@@ -25,15 +27,18 @@ OHMDEM_LANES_INLINE v4i in_log_range(v4d x)
   return (x >= 2.3e-308) & (x <= 1.7e308);  // log_fast's
 }
 
-// race_admittance.cpp's exp_small.
+// exp_small.h's exp_small, its coefficients as four-lane operands.
+struct ExpSmallLanes {
+  v4d c[14];
+};
+inline const ExpSmallLanes kExpSmallLanes = [] {
+  ExpSmallLanes t{};
+  for (int n = 0; n < 14; ++n) t.c[n] = splat(kExpSmall[n]);
+  return t;
+}();
 OHMDEM_LANES_INLINE v4d exp_small(v4d z)
 {
-  v4d p = splat(1.0 / 6227020800.0);
-  for (const double c :
-       {1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0, 1.0 / 362880.0, 1.0 / 40320.0,
-        1.0 / 5040.0, 1.0 / 720.0, 1.0 / 120.0, 1.0 / 24.0, 1.0 / 6.0, 0.5, 1.0, 1.0})
-    p = c + z * p;
-  return p;
+  return 1.0 + z * estrin::polynomial<13>(kExpSmallLanes.c + 1, z);
 }
 
 // gap_forms::form_mean.
@@ -92,10 +97,7 @@ OHMDEM_LANES_INLINE v4d erfc_where(v4i use, v4d xm)
   if (lanes::any<kAvx2>(fast)) {
     const v4d x = select<kAvx2>(fast, xm, splat(1.0));
     const v4d t = 2.0 / (2.0 + x), s = 2.0 * t - 1.0;
-    v4d g = kErfcLanes.g[21];
-    // Unrolled: two instructions a term.
-#pragma GCC unroll 21
-    for (int k = 20; k >= 0; --k) g = g * s + kErfcLanes.g[k];
+    const v4d g = estrin::polynomial<22>(kErfcLanes.g, s);
     f = select<kAvx2>(fast, t * lanes::exp<kAvx2>(g - x * x), f);
   }
   if (!lanes::all<kAvx2>(fast | ~use))

@@ -2,13 +2,17 @@
 // erfc_fast (src_fix/lib/common/fast_erfc.h) against glibc's std::erfc, the reference (within
 // a few ulp by glibc's manual, "Errors in Math Functions"). The header promises 3e-14 relative
 // up to x = 6 and 2e-13 up to 26 (its Chebyshev series' dropped terms add to 1.8e-15; the
-// rounding of x^2 in the exponential's argument grows with x^2).
+// rounding of x^2 in the exponential's argument grows with x^2). Also the Estrin form that
+// sums its series (common/estrin.h) and exp_small (lubrication/exp_small.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <utility>
 
+#include "common/estrin.h"
 #include "common/fast_erfc.h"
+#include "lubrication/exp_small.h"
 
 TEST(FastErfc, WithinItsBoundOverTheMetallicFractionsRange)
 {
@@ -49,4 +53,53 @@ TEST(FastErfc, ExactWhereTheDryLimitNeedsIt)
   EXPECT_EQ(ohmdem::erfc_fast(-1.0), std::erfc(-1.0));
   EXPECT_EQ(ohmdem::erfc_fast(30.0), std::erfc(30.0));
   EXPECT_TRUE(std::isnan(ohmdem::erfc_fast(NAN)));
+}
+
+// common/estrin.h, which sums erfc_fast's series (and the lubricated contact's other
+// polynomials): against Horner's rule in long double (64-bit mantissa, the reference), for
+// every length up to erfc's 22 terms. A sum of N terms in double is within ~N ulp of
+// sum |c_k x^k| (the bound of any order of summation); the lane form gives the scalar's bits.
+template <int N>
+static void check_estrin(std::mt19937_64 &rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  typedef double v4d __attribute__((vector_size(32)));
+  for (int trial = 0; trial < 200; ++trial) {
+    double c[N];
+    v4d cv[N];
+    for (int k = 0; k < N; ++k) c[k] = u(rng), cv[k] = v4d{c[k], c[k], c[k], c[k]};
+    const v4d xs = {u(rng), u(rng), 2.0 * u(rng), 0.0};
+    const v4d lanes = ohmdem::estrin::polynomial<N>(cv, xs);
+    for (int l = 0; l < 4; ++l) {
+      const double x = xs[l], got = ohmdem::estrin::polynomial<N>(c, x);
+      long double want = c[N - 1], scale = 0.0L;
+      for (int k = N - 2; k >= 0; --k) want = want * x + c[k];
+      for (int k = 0; k < N; ++k) scale += std::fabs(c[k]) * std::pow(std::fabs(x), k);
+      ASSERT_LE(std::fabs(static_cast<long double>(got) - want), 2.0L * N * 0x1p-53L * scale)
+          << "N = " << N << ", x = " << x;
+      ASSERT_EQ(lanes[l], got) << "N = " << N << ", lane " << l;  // the same bits
+    }
+  }
+}
+
+template <int... N>
+static void check_estrin_lengths(std::mt19937_64 &rng, std::integer_sequence<int, N...>)
+{
+  (check_estrin<N + 1>(rng), ...);
+}
+
+TEST(Estrin, WithinRoundingOfHornerInLongDoubleForEveryLength)
+{
+  std::mt19937_64 rng(5);
+  check_estrin_lengths(rng, std::make_integer_sequence<int, 22>{});
+}
+
+TEST(Estrin, ExpSmallWithinAnUlpOfGlibc)
+{
+  // exp_small (lubrication/exp_small.h): e^z for |z| < 0.25, the Taylor series to z^13.
+  double worst = 0.0;
+  for (double z = -0.25; z < 0.25; z += 1e-5)
+    worst = std::fmax(worst, std::fabs(ohmdem::lubrication::exp_small(z) / std::exp(z) - 1.0));
+  std::printf("exp_small: worst relative difference %.2e\n", worst);
+  EXPECT_LE(worst, 3.4e-16);  // 1.5 ulp above 1 (the reference's own ~0.5 included)
 }
