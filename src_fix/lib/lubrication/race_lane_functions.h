@@ -27,15 +27,22 @@ OHMDEM_LANES_INLINE v4i in_log_range(v4d x)
   return (x >= 2.3e-308) & (x <= 1.7e308);  // log_fast's
 }
 
-// exp_small.h's exp_small, its coefficients as four-lane operands.
-struct ExpSmallLanes {
-  v4d c[14];
+// A polynomial's coefficients, each in four lanes: a vector operand of each operation (no
+// broadcast per term; the same values, so the same bits).
+template <int N>
+struct LaneCoefficients {
+  v4d c[N];
 };
-inline const ExpSmallLanes kExpSmallLanes = [] {
-  ExpSmallLanes t{};
-  for (int n = 0; n < 14; ++n) t.c[n] = splat(kExpSmall[n]);
+template <int N>
+LaneCoefficients<N> in_lanes(const double (&c)[N])
+{
+  LaneCoefficients<N> t{};
+  for (int k = 0; k < N; ++k) t.c[k] = splat(c[k]);
   return t;
-}();
+}
+
+// exp_small.h's exp_small.
+inline const LaneCoefficients<14> kExpSmallLanes = in_lanes(kExpSmall);
 OHMDEM_LANES_INLINE v4d exp_small(v4d z)
 {
   return 1.0 + z * estrin::polynomial<13>(kExpSmallLanes.c + 1, z);
@@ -77,16 +84,8 @@ OHMDEM_LANES_INLINE v4d aliasing(v4i use, v4d y)
   return select<kAvx2>(small, series, log_where<kAvx2>(use & ~small, y) / gap_forms::kQuarter);
 }
 
-// erfc_fast's coefficients g_k, each in four lanes: a vector operand of the addition (no
-// broadcast per term; the same values, so the same bits).
-struct ErfcLanes {
-  v4d g[22];
-};
-inline const ErfcLanes kErfcLanes = [] {
-  ErfcLanes t{};
-  for (int k = 0; k < 22; ++k) t.g[k] = splat(kErfcG[k]);
-  return t;
-}();
+// erfc_fast's coefficients g_k.
+inline const LaneCoefficients<22> kErfcLanes = in_lanes(kErfcG);
 
 // erfc_fast where `use`; 0 elsewhere.
 template <bool kAvx2>
@@ -97,7 +96,7 @@ OHMDEM_LANES_INLINE v4d erfc_where(v4i use, v4d xm)
   if (lanes::any<kAvx2>(fast)) {
     const v4d x = select<kAvx2>(fast, xm, splat(1.0));
     const v4d t = 2.0 / (2.0 + x), s = 2.0 * t - 1.0;
-    const v4d g = estrin::polynomial<22>(kErfcLanes.g, s);
+    const v4d g = estrin::polynomial<22>(kErfcLanes.c, s);
     f = select<kAvx2>(fast, t * lanes::exp<kAvx2>(g - x * x), f);
   }
   if (!lanes::all<kAvx2>(fast | ~use))
