@@ -23,7 +23,12 @@ pulse's scatter in standard errors: several, the branches part in principle; abo
 they do not. Also the chi2 with the fit's allowance for two runs' differences (2 % of the
 pulse, 5 us of timing per bin) and with a free scale of the other fold.
 
-  studies/branch_check.py [--cases 30:0.5,30:1.5,...] [--seed 7] OUT
+--near OFFSETS: the record against the same place OFFSETS deg off instead (OUT/near.md). --blind:
+a second stage's prototype: from `diagnose`'s template fit on the record (angle, size) only, the
+same search around the fit's angle and every branch fit + k 27.69 deg within 63 deg of the load
+line, either side; the branch whose best run fits best, and by how much (OUT/blind.md).
+
+  studies/branch_check.py [--cases 30:0.5,30:1.5,...] [--seed 7] [--near OFFSETS | --blind] OUT
 
 Writes OUT/branch.csv, OUT/branch.md and OUT/profile_<theta>_<size>.txt (the two folds and the
 standard error per bin); runs and acquisitions are cached under OUT.
@@ -207,6 +212,50 @@ def folded_later(out, size, angle, seed):
     return read_fold(path)
 
 
+def search(out, rec, bin_s, start, sizes0, seed, runs):
+    """The run nearest the record around a place: the least misfit, searched in turn along the
+    size (runs 8 % apart) and the angle (0.5 deg apart, within 3 deg) from `start` deg and each
+    of sizes0 (the misfit has several minima in the size for long pits), then a run at the
+    vertex of the parabola through the best size and its neighbours. runs: (angle, size) ->
+    chi2, filled. Returns (chi2, size, angle) of the best run."""
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+
+    def run(ang, sz):
+        key = (round(ang, 2), round(sz, 3))
+        if key not in runs:
+            runs[key] = chi2_noise(rec, prep(folded(out, key[1], key[0], seed + 1)), bin_s)
+        return runs[key]
+
+    def line(f, step_of, limit):
+        """Runs along one coordinate (k steps from the middle) until the least lies between
+        two: the best k."""
+        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
+        while True:
+            order = sorted(tried)
+            i = int(np.argmin([tried[k] for k in order]))
+            if 0 < i < len(order) - 1 or len(tried) >= limit:
+                return order[i]
+            k = order[0] - 1 if i == 0 else order[-1] + 1
+            tried[k] = f(step_of(k))
+
+    def descend(sz):
+        ang = start
+        for _ in range(3):
+            k = line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)
+            sz = round(sz * 1.08 ** k, 3)
+            ka = line(lambda x: run(x, sz), lambda k: ang + 0.5 * k, 13)
+            if ka == 0:
+                break
+            ang = round(ang + 0.5 * ka, 2)
+        line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)  # the size at the final angle
+        sizes = sorted(x for (a_, x) in runs if a_ == round(ang, 2))
+        v, _ = log_vertex(sizes, [runs[(round(ang, 2), x)] for x in sizes])
+        run(ang, v)
+        return min((runs[(round(ang, 2), x)], x, ang) for (a_, x) in runs if a_ == round(ang, 2))
+
+    return min(descend(s) for s in sizes0)
+
+
 def case(out, bank, bin_s, angle, size, seed):
     """One case's numbers, and the fold profiles (t us, record, other place, se)."""
     other = round(angle - SPACING, 2)
@@ -217,45 +266,7 @@ def case(out, bank, bin_s, angle, size, seed):
     ctl = prep(folded(out, round(size * 1.04, 3), angle, seed + 1))
     s0 = bank_best_size(bank, bin_s, rec, other)
     runs = {}  # (angle, size) -> chi2
-
-    def run(ang, sz):
-        key = (round(ang, 2), round(sz, 3))
-        if key not in runs:
-            runs[key] = chi2_noise(rec, prep(folded(out, key[1], key[0], seed + 1)), bin_s)
-        return runs[key]
-
-    def line(f, step_of, limit):
-        """Runs along one coordinate (k steps from the middle) until the least lies between
-        two: (the best k, the ks and chi2s tried)."""
-        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
-        while True:
-            order = sorted(tried)
-            i = int(np.argmin([tried[k] for k in order]))
-            if 0 < i < len(order) - 1 or len(tried) >= limit:
-                return order[i], order, [tried[k] for k in order]
-            k = order[0] - 1 if i == 0 else order[-1] + 1
-            tried[k] = f(step_of(k))
-
-    # the other place's size and angle: the least misfit, searched in turn along the size
-    # (runs 8 % apart) and the angle (0.5 deg apart, within 3 deg), from the bank's best size
-    # and from the record's own size (the misfit has several minima in the size for long
-    # pits), then a run at the vertex of the parabola through the best size and its neighbours
-    def descend(sz):
-        ang = other
-        for _ in range(3):
-            k, _, _ = line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)
-            sz = round(sz * 1.08 ** k, 3)
-            ka, _, _ = line(lambda x: run(x, sz), lambda k: ang + 0.5 * k, 13)
-            if ka == 0:
-                break
-            ang = round(ang + 0.5 * ka, 2)
-        line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)  # the size at the final angle
-        sizes = sorted(x for (a_, x) in runs if a_ == round(ang, 2))
-        v, _ = log_vertex(sizes, [runs[(round(ang, 2), x)] for x in sizes])
-        run(ang, v)
-        return min((runs[(round(ang, 2), x)], x, ang) for (a_, x) in runs if a_ == round(ang, 2))
-
-    best_chi2, alt_size, ang = min(descend(s0), descend(size))
+    best_chi2, alt_size, ang = search(out, rec, bin_s, other, [s0, size], seed, runs)
     best_size = alt_size
     alt = prep(folded(out, alt_size, ang, seed + 1))
     other_runs = " ".join(f"{a_:g}/{x:g}" for a_, x in sorted(runs))
@@ -302,6 +313,50 @@ def near(a, bin_s):
         f.write("\n".join(lines) + "\n")
 
 
+def blind(a, bank, bin_s):
+    """For each case's record: diagnose's fit (angle, size), then search() at the fit's angle
+    and one ball spacing either side (within the zone); the branches' best chi2."""
+    import re
+    import template_bank
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+    lines = [f"`studies/branch_check.py --blind --cases {a.cases} --seed {a.seed} OUT`: from "
+             "`diagnose`'s template fit (angle, size) only, the best run around the fit's angle "
+             "and every branch fit + k 27.69 deg within 63 deg of the load line, either side "
+             f"(chi2 against the record; acquisition seed {a.seed}, the runs {a.seed + 1})", "",
+             "| pit (deg from load, size) | fit (deg, size) | candidates: start -> best (deg, "
+             "size) chi2 | picked | margin |", "|---" * 5 + "|"]
+    for c in a.cases.split(","):
+        angle, size = (float(v) for v in c.split(":"))
+        place = round(90.0 + angle, 3)
+        rec = prep(folded(a.out, size, angle, a.seed))
+        sim = os.path.join(a.out, "sim", f"outer_{size:g}_radial_p{place:g}")
+        acq = os.path.join(a.out, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_"
+                           f"s{a.seed}.txt")
+        d = template_bank.diagnose(a.out, sim, acq, "outer", a.bank)
+        m = re.search(r"template fit's angle from the load ([0-9.]+) deg", d.get("position_note", ""))
+        fit, fit_size = float(m.group(1)), float(d["size_deg"])
+        found = []
+        # every branch within the zone, either side of the load line (the phase's branches
+        # theta + k 27.69, signed; the fit's angle stands in for theta)
+        for start in (fit + k * SPACING for k in (-2, -1, 0, 1, 2)):
+            if not -63 <= start <= 63:
+                continue
+            start = round(start, 2)
+            runs = {}
+            chi2, sz, ang = search(a.out, rec, bin_s, start, [round(fit_size, 3),
+                                   round(bank_best_size(bank, bin_s, rec, start), 3)], a.seed, runs)
+            found.append((chi2, start, ang, sz, len(runs)))
+        found.sort()
+        margin = found[1][0] - found[0][0] if len(found) > 1 else float("nan")
+        text = "; ".join(f"{st:g} -> {an:g}, {sz:g}: {ch:.0f} ({nr} runs)"
+                         for ch, st, an, sz, nr in sorted(found, key=lambda f: f[1]))
+        lines.append(f"| {angle:g}, {size:g} | {fit:g}, {fit_size:.3g} | {text} | "
+                     f"{found[0][2]:g} | {margin:.0f} |")
+        print(lines[-1], flush=True)
+    with open(os.path.join(a.out, "blind.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", default=",".join(f"{a:g}:{s:g}" for a, s in CASES),
@@ -311,11 +366,18 @@ def main(argv):
     ap.add_argument("--near", default="",
                     help="OFFSETS (deg, e.g. -1.25,-0.5,0.5,1.25): also the same place that far "
                     "off, same size (OUT/near.md): how fast the fold changes on the true branch")
+    ap.add_argument("--blind", action="store_true",
+                    help="a second stage's prototype: from `diagnose`'s fit angle and size only, "
+                    "the search around it and one spacing either side; the branch whose best "
+                    "run fits best (OUT/blind.md)")
     ap.add_argument("out")
     a = ap.parse_args(argv)
     bank, bin_s = read_bank(a.bank)
     if a.near:
         near(a, bin_s)
+        return
+    if a.blind:
+        blind(a, bank, bin_s)
         return
     cases = [tuple(float(v) for v in c.split(":")) for c in a.cases.split(",")]
     rows = []
