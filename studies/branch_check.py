@@ -1,0 +1,424 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Is the branch of an outer pit's angle identifiable (issue 26)? Under the radial load the
+template fit (`diagnose --size-method template`) knows an outer pit's angle from the load
+direction only modulo the ball spacing (360/Nb = 27.7 deg on the 6208): a pit at theta and one at
+theta - 27.7 deg (nearer the load line, of another size) see the other balls in the same places
+as one crosses the pit, and may fold alike. This study simulates both and compares their folds
+as the fit does.
+
+For each case (theta, size): the record at theta (a run as studies/template_bank.py's, acquired
+through the study's chain, 20 kHz, 16 bits, low noise, acquisition seed 7) and runs one ball
+spacing nearer the load line at sizes 8 % apart around the size the committed bank fits best
+there, until the least misfit lies between two of them (seed 8); each folded by `diagnose
+--pulse-fold-out`, less the load zone's first two harmonics (as the fit), aligned (the best
+shift within two samples, sub-bin) and a constant removed; chi2 over the fit's bins in units of
+both folds' standard errors (the averaged pulse's), its least over the other place's sizes (the
+parabola in log size). Baselines: the same run acquired with another noise seed (the
+instrument's noise alone: the fold's standard error is mostly the passes' own scatter, which a
+second acquisition repeats), the same scene's next 0.3 s (an independent realization of that
+scatter: chi2 ~ the number of bins when the standard errors hold), and the same place at the
+size 4 % larger. d' = sqrt(chi2 other - chi2 next 0.3 s) is the difference beyond the averaged
+pulse's scatter in standard errors: several, the branches part in principle; about 1 or less,
+they do not. Also the chi2 with the fit's allowance for two runs' differences (2 % of the
+pulse, 5 us of timing per bin) and with a free scale of the other fold.
+
+--near OFFSETS: the record against the same place OFFSETS deg off instead (OUT/near.md). --blind:
+a second stage's prototype: from `diagnose`'s template fit on the record (angle, size) only, the
+same search around the fit's angle and every branch fit + k 27.69 deg within 63 deg of the load
+line, either side; the branch whose best run fits best, and by how much (OUT/blind.md).
+
+  studies/branch_check.py [--cases 30:0.5,30:1.5,...] [--seed 7] [--near OFFSETS | --blind] OUT
+
+Writes OUT/branch.csv, OUT/branch.md and OUT/profile_<theta>_<size>.txt (the two folds and the
+standard error per bin); runs and acquisitions are cached under OUT.
+"""
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+
+import common
+import sizing
+import template_bank
+
+BANK = os.path.join(common.BASE, "doc", "report", "sizing", "template",
+                    "bank_outer_radial_r20000_low.txt")
+RATE, NOISE, SEED = 2e4, "low", 7
+NB = 13
+SPACING = 360.0 / NB
+CASES = [(30.0, 0.5), (30.0, 1.5), (30.0, 3.0), (45.0, 0.5), (45.0, 1.5), (45.0, 3.0)]
+OVERSAMPLE = 4
+MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
+
+
+def read_bank(path):
+    bank, bin_s = {}, None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# bin (s):"):
+                bin_s = float(line.split(":")[1])
+            if line.startswith("#"):
+                continue
+            v = line.split()
+            n = int(v[2])
+            bank[(float(v[0]), float(v[1]))] = (np.array(v[3:3 + n], float),
+                                                np.array(v[3 + n:3 + 2 * n], float))
+    return bank, bin_s
+
+
+def read_fold(path):
+    y, se = [], []
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                a, b = line.split()
+                y.append(float(a))
+                se.append(float(b))
+    return np.array(y), np.array(se)
+
+
+def without_cycle(y, se, harmonics=2, before=0.15):
+    """pulse_template.cpp's without_cycle: the cycle's first harmonics fitted away from the
+    pulse (from 0.45 of the period after the entry to `before` before it) and removed."""
+    n = len(y)
+    j = np.arange(n)
+    u = j / n
+    cols = [np.ones(n)]
+    for h in range(1, harmonics + 1):
+        cols += [np.cos(2 * math.pi * h * j / n), np.sin(2 * math.pi * h * j / n)]
+    a = np.array(cols).T
+    keep = ~((u >= 0.25 - before) & (u < 0.7))
+    w = 1 / se[keep] ** 2
+    coef = np.linalg.solve(a[keep].T @ (w[:, None] * a[keep]), a[keep].T @ (w * y[keep]))
+    return y - a[:, 1:] @ coef[1:]
+
+
+def shifted(y, base):
+    """y read at j + base (linear interpolation, circular), for j = 0..len-1."""
+    n = len(y)
+    at = np.arange(n) + base
+    fl = np.floor(at)
+    u = at - fl
+    i0 = fl.astype(int) % n
+    return (1 - u) * y[i0] + u * y[(i0 + 1) % n], u
+
+
+def misfit(rec, tmpl, n, shift, bin_s, model, scale_free):
+    """chi2 of rec (shifted) against tmpl over n bins, a constant (and with scale_free a scale
+    of tmpl) fitted; returns chi2, the residual, the weights, the scale."""
+    yr, u = shifted(rec[0], shift)
+    ser, _ = shifted(rec[1], shift)
+    yt, st = tmpl[0][:n], tmpl[1][:n]
+    yr, ser = yr[:n], ser[:n]
+    var = ser ** 2 + st ** 2
+    if model:
+        slope = 0.5 * (np.r_[yt[1:], yt[-1]] - np.r_[yt[0], yt[:-1]])
+        var = var + (MODEL_REL * yt) ** 2 + (MODEL_JITTER_S / bin_s * slope) ** 2
+    w = 1 / var
+    a = np.c_[np.ones(n), yt] if scale_free else np.ones((n, 1))
+    target = yr if scale_free else yr - yt
+    coef = np.linalg.solve(a.T @ (w[:, None] * a), a.T @ (w * target))
+    r = target - a @ coef
+    return float(np.sum(w * r * r)), r, w, (coef[1] if scale_free else 1.0)
+
+
+def compare(rec, tmpl, bin_s, model=False, scale_free=False):
+    """The least misfit over shifts within two samples (every bin, then the parabola)."""
+    n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
+    reach = 2 * OVERSAMPLE
+    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free)[0] for k in range(-reach, reach + 1)]
+    i = int(np.argmin(c))
+    s = float(i - reach)
+    if 0 < i < len(c) - 1:
+        curv = c[i - 1] - 2 * c[i] + c[i + 1]
+        if curv > 0:
+            s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv
+            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free)[0] < c[i]:
+                s = s2
+    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free)
+    z = r * np.sqrt(w)
+    k = int(np.argmax(np.abs(z)))
+    return {"dprime": math.sqrt(chi2), "n": n, "max": float(abs(z[k])),
+            "max_at_us": (k - len(rec[0]) / 4) * bin_s * 1e6, "shift_us": s * bin_s * 1e6,
+            "scale": scale}
+
+
+def chi2_noise(rec, tmpl, bin_s):
+    """compare()'s chi2 (the standard errors alone)."""
+    return compare(rec, tmpl, bin_s)["dprime"] ** 2
+
+
+def log_vertex(sizes, chi2):
+    """The least chi2 over log size: the parabola's vertex through the smallest and its two
+    neighbours (kept between them), else the smallest point."""
+    i = int(np.argmin(chi2))
+    if i == 0 or i == len(chi2) - 1:
+        return sizes[i], chi2[i]
+    x = np.log(sizes[i - 1:i + 2])
+    c = np.polyfit(x, chi2[i - 1:i + 2], 2)
+    if c[0] <= 0:
+        return sizes[i], chi2[i]
+    v = min(max(-c[1] / (2 * c[0]), x[0]), x[2])
+    return math.exp(v), max(float(np.polyval(c, v)), 0.0)
+
+
+def bank_best_size(bank, bin_s, rec, angle):
+    """The bank's size (at its angle nearest `angle`) that fits the record best, between its
+    sizes on the parabola."""
+    sizes = sorted({k[0] for k in bank})
+    near = min({k[1] for k in bank}, key=lambda a: abs(a - angle))
+    c = [chi2_noise(rec, (without_cycle(*bank[(s, near)]), bank[(s, near)][1]), bin_s)
+         for s in sizes]
+    return log_vertex(sizes, c)[0]
+
+
+def folded(out, size, angle, seed):
+    """The run (pit `angle` deg from the load), acquired (seed) and folded: (y, se), the path."""
+    place = round(90.0 + angle, 3)
+    sim = sizing.simulate(out, ("outer", size, "radial", place), template_bank.TEND)
+    os.makedirs(os.path.join(out, "acq"), exist_ok=True)
+    acq = os.path.join(out, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_s{seed}.txt")
+    if not os.path.exists(acq):
+        sizing.acquire_with_angle(sim, "radial", RATE, NOISE, acq, seed=seed)
+    path = acq[:-4] + ".fold"
+    if not os.path.exists(path):
+        common.post(["diagnose", "--no-size", "--format", "json", "--column", "V", "--metadata",
+                     os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM),
+                     "--assume-defect", "outer", "--pulse-fold-out", path, acq],
+                    who="branch_check")
+    return read_fold(path)
+
+
+def folded_later(out, size, angle, seed):
+    """The same scene's next 0.3 s (a run to T_FROM + 0.6 s, folded from T_FROM + 0.3 s): an
+    independent realization of the passes' scatter, where the record's own run acquired again
+    repeats it."""
+    place = round(90.0 + angle, 3)
+    later = os.path.join(out, "later")
+    sim = sizing.simulate(later, ("outer", size, "radial", place), template_bank.TEND + 0.3)
+    os.makedirs(os.path.join(later, "acq"), exist_ok=True)
+    acq = os.path.join(later, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_s{seed}.txt")
+    if not os.path.exists(acq):
+        sizing.acquire_with_angle(sim, "radial", RATE, NOISE, acq, seed=seed)
+    path = acq[:-4] + ".fold"
+    if not os.path.exists(path):
+        common.post(["diagnose", "--no-size", "--format", "json", "--column", "V", "--metadata",
+                     os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM + 0.3),
+                     "--assume-defect", "outer", "--pulse-fold-out", path, acq],
+                    who="branch_check")
+    return read_fold(path)
+
+
+def search(out, rec, bin_s, start, sizes0, seed, runs):
+    """The run nearest the record around a place: the least misfit, searched in turn along the
+    size (runs 8 % apart) and the angle (0.5 deg apart, within 3 deg) from `start` deg and each
+    of sizes0 (the misfit has several minima in the size for long pits), then a run at the
+    vertex of the parabola through the best size and its neighbours. runs: (angle, size) ->
+    chi2, filled. Returns (chi2, size, angle) of the best run."""
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+
+    def run(ang, sz):
+        key = (round(ang, 2), round(sz, 3))
+        if key not in runs:
+            runs[key] = chi2_noise(rec, prep(folded(out, key[1], key[0], seed + 1)), bin_s)
+        return runs[key]
+
+    def line(f, step_of, limit):
+        """Runs along one coordinate (k steps from the middle) until the least lies between
+        two: the best k."""
+        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
+        while True:
+            order = sorted(tried)
+            i = int(np.argmin([tried[k] for k in order]))
+            if 0 < i < len(order) - 1 or len(tried) >= limit:
+                return order[i]
+            k = order[0] - 1 if i == 0 else order[-1] + 1
+            tried[k] = f(step_of(k))
+
+    def descend(sz):
+        ang = start
+        for _ in range(3):
+            k = line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)
+            sz = round(sz * 1.08 ** k, 3)
+            ka = line(lambda x: run(x, sz), lambda k: ang + 0.5 * k, 13)
+            if ka == 0:
+                break
+            ang = round(ang + 0.5 * ka, 2)
+        line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)  # the size at the final angle
+        sizes = sorted(x for (a_, x) in runs if a_ == round(ang, 2))
+        v, _ = log_vertex(sizes, [runs[(round(ang, 2), x)] for x in sizes])
+        run(ang, v)
+        return min((runs[(round(ang, 2), x)], x, ang) for (a_, x) in runs if a_ == round(ang, 2))
+
+    return min(descend(s) for s in sizes0)
+
+
+def case(out, bank, bin_s, angle, size, seed):
+    """One case's numbers, and the fold profiles (t us, record, other place, se)."""
+    other = round(angle - SPACING, 2)
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+    rec = prep(folded(out, size, angle, seed))
+    noise = prep(folded(out, size, angle, seed + 1))  # the same run, other acquisition noise
+    indep = prep(folded_later(out, size, angle, seed + 1))  # the same scene, the next 0.3 s
+    ctl = prep(folded(out, round(size * 1.04, 3), angle, seed + 1))
+    s0 = bank_best_size(bank, bin_s, rec, other)
+    runs = {}  # (angle, size) -> chi2
+    best_chi2, alt_size, ang = search(out, rec, bin_s, other, [s0, size], seed, runs)
+    best_size = alt_size
+    alt = prep(folded(out, alt_size, ang, seed + 1))
+    other_runs = " ".join(f"{a_:g}/{x:g}" for a_, x in sorted(runs))
+    d = compare(rec, alt, bin_s)
+    n = d["n"]
+    c_acq = chi2_noise(rec, noise, bin_s)
+    c_noise = chi2_noise(rec, indep, bin_s)
+    row = {"angle_deg": angle, "size_deg": size, "other_angle_deg": ang,
+           "other_size_deg": round(best_size, 3), "runs_other": other_runs,
+           "chi2_at_spacing": min(v for (a_, x), v in runs.items() if a_ == round(other, 2)),
+           "peak": float(np.max(rec[0])), "se_median": float(np.median(rec[1])), "bins": n,
+           "chi2_acquisition": c_acq, "chi2_noise": c_noise, "chi2_other": best_chi2,
+           "dprime_other": math.sqrt(max(best_chi2 - c_noise, 0.0)),
+           "chi2_control": chi2_noise(rec, ctl, bin_s),
+           "chi2_other_fit": compare(rec, alt, bin_s, model=True)["dprime"] ** 2,
+           "chi2_other_free": compare(rec, alt, bin_s, scale_free=True)["dprime"] ** 2,
+           "free_scale": compare(rec, alt, bin_s, scale_free=True)["scale"],
+           "max_z": d["max"], "max_at_us": d["max_at_us"], "shift_us": d["shift_us"],
+           "nearest_run_size": alt_size}
+    # the profiles, the other place's aligned as compare() did
+    yr, _ = shifted(rec[0], d["shift_us"] / (bin_s * 1e6))
+    sr, _ = shifted(rec[1], d["shift_us"] / (bin_s * 1e6))
+    prof = [((j - len(rec[0]) / 4) * bin_s * 1e6, yr[j], alt[0][j], math.hypot(sr[j], alt[1][j]))
+            for j in range(n)]
+    return row, prof
+
+
+def near(a, bin_s):
+    """chi2 of each case's record against the same place `offset` deg off, same size."""
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+    offsets = [float(v) for v in a.near.split(",")]
+    lines = [f"`studies/branch_check.py --near {a.near} --cases {a.cases} --seed {a.seed} OUT`: "
+             "chi2 of the record against the same place that far off (same size, seed "
+             f"{a.seed + 1})", "", "| pit (deg from load, size) | " +
+             " | ".join(f"{o:+g} deg" for o in offsets) + " |", "|---" * (len(offsets) + 1) + "|"]
+    for c in a.cases.split(","):
+        angle, size = (float(v) for v in c.split(":"))
+        rec = prep(folded(a.out, size, angle, a.seed))
+        cs = [chi2_noise(rec, prep(folded(a.out, size, angle + o, a.seed + 1)), bin_s)
+              for o in offsets]
+        lines.append(f"| {angle:g}, {size:g} | " + " | ".join(f"{v:.0f}" for v in cs) + " |")
+        print(lines[-1], flush=True)
+    with open(os.path.join(a.out, "near.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def blind(a, bank, bin_s):
+    """For each case's record: diagnose's fit (angle, size), then search() at the fit's angle
+    and one ball spacing either side (within the zone); the branches' best chi2."""
+    import re
+    import template_bank
+    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
+    lines = [f"`studies/branch_check.py --blind --cases {a.cases} --seed {a.seed} OUT`: from "
+             "`diagnose`'s template fit (angle, size) only, the best run around the fit's angle "
+             "and every branch fit + k 27.69 deg within 63 deg of the load line, either side "
+             f"(chi2 against the record; acquisition seed {a.seed}, the runs {a.seed + 1})", "",
+             "| pit (deg from load, size) | fit (deg, size) | candidates: start -> best (deg, "
+             "size) chi2 | picked | margin |", "|---" * 5 + "|"]
+    for c in a.cases.split(","):
+        angle, size = (float(v) for v in c.split(":"))
+        place = round(90.0 + angle, 3)
+        rec = prep(folded(a.out, size, angle, a.seed))
+        sim = os.path.join(a.out, "sim", f"outer_{size:g}_radial_p{place:g}")
+        acq = os.path.join(a.out, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_"
+                           f"s{a.seed}.txt")
+        d = template_bank.diagnose(a.out, sim, acq, "outer", a.bank)
+        m = re.search(r"template fit's angle from the load ([0-9.]+) deg", d.get("position_note", ""))
+        fit, fit_size = float(m.group(1)), float(d["size_deg"])
+        found = []
+        # every branch within the zone, either side of the load line (the phase's branches
+        # theta + k 27.69, signed; the fit's angle stands in for theta)
+        for start in (fit + k * SPACING for k in (-2, -1, 0, 1, 2)):
+            if not -63 <= start <= 63:
+                continue
+            start = round(start, 2)
+            runs = {}
+            chi2, sz, ang = search(a.out, rec, bin_s, start, [round(fit_size, 3),
+                                   round(bank_best_size(bank, bin_s, rec, start), 3)], a.seed, runs)
+            found.append((chi2, start, ang, sz, len(runs)))
+        found.sort()
+        margin = found[1][0] - found[0][0] if len(found) > 1 else float("nan")
+        text = "; ".join(f"{st:g} -> {an:g}, {sz:g}: {ch:.0f} ({nr} runs)"
+                         for ch, st, an, sz, nr in sorted(found, key=lambda f: f[1]))
+        lines.append(f"| {angle:g}, {size:g} | {fit:g}, {fit_size:.3g} | {text} | "
+                     f"{found[0][2]:g} | {margin:.0f} |")
+        print(lines[-1], flush=True)
+    with open(os.path.join(a.out, "blind.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--cases", default=",".join(f"{a:g}:{s:g}" for a, s in CASES),
+                    help="ANGLE:SIZE pairs (deg from the load, deg)")
+    ap.add_argument("--seed", type=int, default=SEED)
+    ap.add_argument("--bank", default=BANK)
+    ap.add_argument("--near", default="",
+                    help="OFFSETS (deg, e.g. -1.25,-0.5,0.5,1.25): also the same place that far "
+                    "off, same size (OUT/near.md): how fast the fold changes on the true branch")
+    ap.add_argument("--blind", action="store_true",
+                    help="a second stage's prototype: from `diagnose`'s fit angle and size only, "
+                    "the search around it and one spacing either side; the branch whose best "
+                    "run fits best (OUT/blind.md)")
+    ap.add_argument("out")
+    a = ap.parse_args(argv)
+    bank, bin_s = read_bank(a.bank)
+    if a.near:
+        near(a, bin_s)
+        return
+    if a.blind:
+        blind(a, bank, bin_s)
+        return
+    cases = [tuple(float(v) for v in c.split(":")) for c in a.cases.split(",")]
+    rows = []
+    for angle, size in cases:
+        row, prof = case(a.out, bank, bin_s, angle, size, a.seed)
+        with open(os.path.join(a.out, f"profile_{angle:g}_{size:g}.txt"), "w") as f:
+            f.write(f"# t_us record other({row['other_angle_deg']:g} deg, "
+                    f"{row['nearest_run_size']:g} deg) se  (cycle removed, aligned)\n")
+            for p in prof:
+                f.write(" ".join(f"{v:.6g}" for v in p) + "\n")
+        print(" ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}"
+                       for k, v in row.items()), flush=True)
+        rows.append(row)
+    common.write_csv(os.path.join(a.out, "branch.csv"), rows)
+    lines = ["# The outer pit's branch: one ball spacing apart", "",
+             f"Regenerated by `studies/branch_check.py --cases {a.cases} --seed {a.seed} OUT` "
+             f"(20 kHz, 16 bits, low noise; the record at acquisition seed {a.seed}, the other "
+             f"runs at {a.seed + 1}). chi2 over the fit's bins, in units of the folds' standard "
+             "errors (the averaged pulse's); d' = sqrt(chi2 other - chi2 next 0.3 s): the "
+             "difference beyond the scatter of the averaged pulse, in standard errors.", "",
+             "| pit (deg from load, size) | other branch: best (deg, size; runs) | peak | median "
+             "se | bins | chi2: same run, other acquisition noise | chi2: same scene, next 0.3 s "
+             "| chi2: size +4 % | chi2: other branch at 27.7 deg nearer | chi2: other branch, "
+             "best | d' | (chi2 other - next) / sqrt(2 bins) "
+             "| chi2 other, fit's allowance | chi2 other, free scale | largest bin (se, us from "
+             "entry) |", "|---" * 15 + "|"]
+    for r in rows:
+        lines.append(
+            f"| {r['angle_deg']:g}, {r['size_deg']:g} | {r['other_angle_deg']:g}, "
+            f"{r['other_size_deg']:g}; {len(r['runs_other'].split())} | {r['peak']:.3g} | "
+            f"{r['se_median']:.2g} | {r['bins']} | {r['chi2_acquisition']:.2g} | "
+            f"{r['chi2_noise']:.0f} | {r['chi2_control']:.0f} | {r['chi2_at_spacing']:.0f} | "
+            f"{r['chi2_other']:.0f} | "
+            f"{r['dprime_other']:.1f} | "
+            f"{(r['chi2_other'] - r['chi2_noise']) / math.sqrt(2 * r['bins']):+.1f} | "
+            f"{r['chi2_other_fit']:.0f} | {r['chi2_other_free']:.0f} ({r['free_scale']:.3f}) | "
+            f"{r['max_z']:.1f} ({r['max_at_us']:+.0f}) |")
+    with open(os.path.join(a.out, "branch.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
