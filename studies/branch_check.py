@@ -175,10 +175,15 @@ def bank_best_size(bank, bin_s, rec, angle):
     return log_vertex(sizes, c)[0]
 
 
-def folded(out, size, angle, seed):
-    """The run (pit `angle` deg from the load), acquired (seed) and folded: (y, se), the path."""
+def folded(out, size, angle, seed, later=0.0):
+    """The run (pit `angle` deg from the load), acquired (seed) and folded: (y, se), the path.
+    later = 0.3: the same scene's next 0.3 s (a run to T_FROM + 0.6 s, folded from T_FROM +
+    0.3 s, under out/later): an independent realization of the passes' scatter, where the
+    record's own run acquired again repeats it."""
     place = round(90.0 + angle, 3)
-    sim = sizing.simulate(out, ("outer", size, "radial", place), template_bank.TEND)
+    if later:
+        out = os.path.join(out, "later")
+    sim = sizing.simulate(out, ("outer", size, "radial", place), template_bank.TEND + later)
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)
     acq = os.path.join(out, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_s{seed}.txt")
     if not os.path.exists(acq):
@@ -186,27 +191,7 @@ def folded(out, size, angle, seed):
     path = acq[:-4] + ".fold"
     if not os.path.exists(path):
         common.post(["diagnose", "--no-size", "--format", "json", "--column", "V", "--metadata",
-                     os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM),
-                     "--assume-defect", "outer", "--pulse-fold-out", path, acq],
-                    who="branch_check")
-    return read_fold(path)
-
-
-def folded_later(out, size, angle, seed):
-    """The same scene's next 0.3 s (a run to T_FROM + 0.6 s, folded from T_FROM + 0.3 s): an
-    independent realization of the passes' scatter, where the record's own run acquired again
-    repeats it."""
-    place = round(90.0 + angle, 3)
-    later = os.path.join(out, "later")
-    sim = sizing.simulate(later, ("outer", size, "radial", place), template_bank.TEND + 0.3)
-    os.makedirs(os.path.join(later, "acq"), exist_ok=True)
-    acq = os.path.join(later, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_s{seed}.txt")
-    if not os.path.exists(acq):
-        sizing.acquire_with_angle(sim, "radial", RATE, NOISE, acq, seed=seed)
-    path = acq[:-4] + ".fold"
-    if not os.path.exists(path):
-        common.post(["diagnose", "--no-size", "--format", "json", "--column", "V", "--metadata",
-                     os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM + 0.3),
+                     os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM + later),
                      "--assume-defect", "outer", "--pulse-fold-out", path, acq],
                     who="branch_check")
     return read_fold(path)
@@ -262,7 +247,7 @@ def case(out, bank, bin_s, angle, size, seed):
     prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
     rec = prep(folded(out, size, angle, seed))
     noise = prep(folded(out, size, angle, seed + 1))  # the same run, other acquisition noise
-    indep = prep(folded_later(out, size, angle, seed + 1))  # the same scene, the next 0.3 s
+    indep = prep(folded(out, size, angle, seed + 1, later=0.3))  # the same scene, the next 0.3 s
     ctl = prep(folded(out, round(size * 1.04, 3), angle, seed + 1))
     s0 = bank_best_size(bank, bin_s, rec, other)
     runs = {}  # (angle, size) -> chi2
