@@ -41,138 +41,17 @@ import sys
 import numpy as np
 
 import common
+import fold_compare
 import sizing
 import template_bank
+from fold_compare import bank_best_size, chi2_noise, compare, read_bank, read_fold, shifted
 
-BANK = os.path.join(common.BASE, "doc", "report", "sizing", "template",
+BANK = os.path.join(common.DOC, "report", "sizing", "template",
                     "bank_outer_radial_r20000_low.txt")
 RATE, NOISE, SEED = 2e4, "low", 7
 NB = 13
 SPACING = 360.0 / NB
 CASES = [(30.0, 0.5), (30.0, 1.5), (30.0, 3.0), (45.0, 0.5), (45.0, 1.5), (45.0, 3.0)]
-OVERSAMPLE = 4
-MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
-
-
-def read_bank(path):
-    bank, bin_s = {}, None
-    with open(path) as f:
-        for line in f:
-            if line.startswith("# bin (s):"):
-                bin_s = float(line.split(":")[1])
-            if line.startswith("#"):
-                continue
-            v = line.split()
-            n = int(v[2])
-            bank[(float(v[0]), float(v[1]))] = (np.array(v[3:3 + n], float),
-                                                np.array(v[3 + n:3 + 2 * n], float))
-    return bank, bin_s
-
-
-def read_fold(path):
-    y, se = [], []
-    with open(path) as f:
-        for line in f:
-            if not line.startswith("#"):
-                a, b = line.split()
-                y.append(float(a))
-                se.append(float(b))
-    return np.array(y), np.array(se)
-
-
-def without_cycle(y, se, harmonics=2, before=0.15):
-    """pulse_template.cpp's without_cycle: the cycle's first harmonics fitted away from the
-    pulse (from 0.45 of the period after the entry to `before` before it) and removed."""
-    n = len(y)
-    j = np.arange(n)
-    u = j / n
-    cols = [np.ones(n)]
-    for h in range(1, harmonics + 1):
-        cols += [np.cos(2 * math.pi * h * j / n), np.sin(2 * math.pi * h * j / n)]
-    a = np.array(cols).T
-    keep = ~((u >= 0.25 - before) & (u < 0.7))
-    w = 1 / se[keep] ** 2
-    coef = np.linalg.solve(a[keep].T @ (w[:, None] * a[keep]), a[keep].T @ (w * y[keep]))
-    return y - a[:, 1:] @ coef[1:]
-
-
-def shifted(y, base):
-    """y read at j + base (linear interpolation, circular), for j = 0..len-1."""
-    n = len(y)
-    at = np.arange(n) + base
-    fl = np.floor(at)
-    u = at - fl
-    i0 = fl.astype(int) % n
-    return (1 - u) * y[i0] + u * y[(i0 + 1) % n], u
-
-
-def misfit(rec, tmpl, n, shift, bin_s, model, scale_free):
-    """chi2 of rec (shifted) against tmpl over n bins, a constant (and with scale_free a scale
-    of tmpl) fitted; returns chi2, the residual, the weights, the scale."""
-    yr, u = shifted(rec[0], shift)
-    ser, _ = shifted(rec[1], shift)
-    yt, st = tmpl[0][:n], tmpl[1][:n]
-    yr, ser = yr[:n], ser[:n]
-    var = ser ** 2 + st ** 2
-    if model:
-        slope = 0.5 * (np.r_[yt[1:], yt[-1]] - np.r_[yt[0], yt[:-1]])
-        var = var + (MODEL_REL * yt) ** 2 + (MODEL_JITTER_S / bin_s * slope) ** 2
-    w = 1 / var
-    a = np.c_[np.ones(n), yt] if scale_free else np.ones((n, 1))
-    target = yr if scale_free else yr - yt
-    coef = np.linalg.solve(a.T @ (w[:, None] * a), a.T @ (w * target))
-    r = target - a @ coef
-    return float(np.sum(w * r * r)), r, w, (coef[1] if scale_free else 1.0)
-
-
-def compare(rec, tmpl, bin_s, model=False, scale_free=False):
-    """The least misfit over shifts within two samples (every bin, then the parabola)."""
-    n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
-    reach = 2 * OVERSAMPLE
-    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free)[0] for k in range(-reach, reach + 1)]
-    i = int(np.argmin(c))
-    s = float(i - reach)
-    if 0 < i < len(c) - 1:
-        curv = c[i - 1] - 2 * c[i] + c[i + 1]
-        if curv > 0:
-            s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv
-            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free)[0] < c[i]:
-                s = s2
-    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free)
-    z = r * np.sqrt(w)
-    k = int(np.argmax(np.abs(z)))
-    return {"dprime": math.sqrt(chi2), "n": n, "max": float(abs(z[k])),
-            "max_at_us": (k - len(rec[0]) / 4) * bin_s * 1e6, "shift_us": s * bin_s * 1e6,
-            "scale": scale}
-
-
-def chi2_noise(rec, tmpl, bin_s):
-    """compare()'s chi2 (the standard errors alone)."""
-    return compare(rec, tmpl, bin_s)["dprime"] ** 2
-
-
-def log_vertex(sizes, chi2):
-    """The least chi2 over log size: the parabola's vertex through the smallest and its two
-    neighbours (kept between them), else the smallest point."""
-    i = int(np.argmin(chi2))
-    if i == 0 or i == len(chi2) - 1:
-        return sizes[i], chi2[i]
-    x = np.log(sizes[i - 1:i + 2])
-    c = np.polyfit(x, chi2[i - 1:i + 2], 2)
-    if c[0] <= 0:
-        return sizes[i], chi2[i]
-    v = min(max(-c[1] / (2 * c[0]), x[0]), x[2])
-    return math.exp(v), max(float(np.polyval(c, v)), 0.0)
-
-
-def bank_best_size(bank, bin_s, rec, angle):
-    """The bank's size (at its angle nearest `angle`) that fits the record best, between its
-    sizes on the parabola."""
-    sizes = sorted({k[0] for k in bank})
-    near = min({k[1] for k in bank}, key=lambda a: abs(a - angle))
-    c = [chi2_noise(rec, (without_cycle(*bank[(s, near)]), bank[(s, near)][1]), bin_s)
-         for s in sizes]
-    return log_vertex(sizes, c)[0]
 
 
 def folded(out, size, angle, seed, later=0.0):
@@ -197,54 +76,19 @@ def folded(out, size, angle, seed, later=0.0):
     return read_fold(path)
 
 
+prep = fold_compare.prepared
+
+
 def search(out, rec, bin_s, start, sizes0, seed, runs):
-    """The run nearest the record around a place: the least misfit, searched in turn along the
-    size (runs 8 % apart) and the angle (0.5 deg apart, within 3 deg) from `start` deg and each
-    of sizes0 (the misfit has several minima in the size for long pits), then a run at the
-    vertex of the parabola through the best size and its neighbours. runs: (angle, size) ->
-    chi2, filled. Returns (chi2, size, angle) of the best run."""
-    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
-
-    def run(ang, sz):
-        key = (round(ang, 2), round(sz, 3))
-        if key not in runs:
-            runs[key] = chi2_noise(rec, prep(folded(out, key[1], key[0], seed + 1)), bin_s)
-        return runs[key]
-
-    def line(f, step_of, limit):
-        """Runs along one coordinate (k steps from the middle) until the least lies between
-        two: the best k."""
-        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
-        while True:
-            order = sorted(tried)
-            i = int(np.argmin([tried[k] for k in order]))
-            if 0 < i < len(order) - 1 or len(tried) >= limit:
-                return order[i]
-            k = order[0] - 1 if i == 0 else order[-1] + 1
-            tried[k] = f(step_of(k))
-
-    def descend(sz):
-        ang = start
-        for _ in range(3):
-            k = line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)
-            sz = round(sz * 1.08 ** k, 3)
-            ka = line(lambda x: run(x, sz), lambda k: ang + 0.5 * k, 13)
-            if ka == 0:
-                break
-            ang = round(ang + 0.5 * ka, 2)
-        line(lambda x: run(ang, x), lambda k: sz * 1.08 ** k, 6)  # the size at the final angle
-        sizes = sorted(x for (a_, x) in runs if a_ == round(ang, 2))
-        v, _ = log_vertex(sizes, [runs[(round(ang, 2), x)] for x in sizes])
-        run(ang, v)
-        return min((runs[(round(ang, 2), x)], x, ang) for (a_, x) in runs if a_ == round(ang, 2))
-
-    return min(descend(s) for s in sizes0)
+    """fold_compare.search() over this study's runs (acquisition seed + 1)."""
+    return fold_compare.search(
+        lambda ang, sz: chi2_noise(rec, prep(folded(out, sz, ang, seed + 1)), bin_s),
+        start, sizes0, runs)
 
 
 def case(out, bank, bin_s, angle, size, seed):
     """One case's numbers, and the fold profiles (t us, record, other place, se)."""
     other = round(angle - SPACING, 2)
-    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
     rec = prep(folded(out, size, angle, seed))
     noise = prep(folded(out, size, angle, seed + 1))  # the same run, other acquisition noise
     indep = prep(folded(out, size, angle, seed + 1, later=0.3))  # the same scene, the next 0.3 s
@@ -281,7 +125,6 @@ def case(out, bank, bin_s, angle, size, seed):
 
 def near(a, bin_s):
     """chi2 of each case's record against the same place `offset` deg off, same size."""
-    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
     offsets = [float(v) for v in a.near.split(",")]
     lines = [f"`studies/branch_check.py --near {a.near} --cases {a.cases} --seed {a.seed} OUT`: "
              "chi2 of the record against the same place that far off (same size, seed "
@@ -303,7 +146,6 @@ def blind(a, bank, bin_s):
     and one ball spacing either side (within the zone); the branches' best chi2."""
     import re
     import template_bank
-    prep = lambda f: (without_cycle(*f), f[1])  # noqa: E731
     lines = [f"`studies/branch_check.py --blind --cases {a.cases} --seed {a.seed} OUT`: from "
              "`diagnose`'s template fit (angle, size) only, the best run around the fit's angle "
              "and every branch fit + k 27.69 deg within 63 deg of the load line, either side "

@@ -31,6 +31,8 @@ CASES_SCRIPT = os.path.join(INPUTS, "cluster", "cases.py")
 INSTALLED = os.path.basename(BASE) == "ohmdem" and os.path.basename(
     os.path.dirname(BASE)) == "share"
 PREFIX_BIN = os.path.join(os.path.dirname(os.path.dirname(BASE)), "bin") if INSTALLED else None
+# doc/ (the committed reports and template banks): PREFIX/share/doc/ohmdem in an install
+DOC = os.path.join(os.path.dirname(BASE), "doc", "ohmdem") if INSTALLED else os.path.join(BASE, "doc")
 CATALOG = os.environ.get("OHMDEM_CATALOG", os.path.join(INPUTS, "bearings"))
 # in.bearing finds the catalog through OHMDEM_CATALOG when run from another folder.
 os.environ.setdefault("OHMDEM_CATALOG", CATALOG)

@@ -38,7 +38,7 @@ import common
 import sizing
 import template_bank
 
-BANKS = os.path.join(common.BASE, "doc", "report", "sizing", "template")
+BANKS = os.path.join(common.DOC, "report", "sizing", "template")
 RATE, NOISE = 2e4, "low"
 SIZES = [0.37, 0.74, 1.45, 2.3]
 SEED = 7

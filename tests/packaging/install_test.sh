@@ -77,9 +77,13 @@ grep -q "catalog $(realpath "$share/bearings")" post_err.txt ||
 #    PREFIX/bin/ohmdem-post and the installed decks and catalog by itself (the run-up study:
 #    the quickest, one run of 0.35 s simulated)
 studies=$prefix/share/ohmdem/studies
-for f in common.py defects.py detectability.py load_speed.py runup.py README.md; do
+for f in common.py defects.py detectability.py load_speed.py runup.py locate_outer.py README.md; do
   [ -e "$studies/$f" ] || { echo "ERROR: studies/$f not installed"; exit 1; }
 done
+# the committed template bank locate_outer.py starts from, found through common.DOC in an install
+/usr/bin/python3 -c "import os, sys; sys.path.insert(0, '$studies'); import common; \
+sys.exit(0 if os.path.isfile(os.path.join(common.DOC, 'report', 'sizing', 'template', \
+'bank_outer_radial_r20000_low.txt')) else 'ERROR: ' + common.DOC + ' holds no template bank')" || exit 1
 settings=$(env -u OHMDEM -u POST -u OHMDEM_CATALOG /usr/bin/python3 "$studies/common.py" --shell)
 for want in "OHMDEM=$prefix/bin/ohmdem" "POST=$prefix/bin/ohmdem-post" \
             "OHMDEM_CATALOG=$share/bearings"; do

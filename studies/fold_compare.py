@@ -1,0 +1,247 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Folded pulses compared as the template fit compares them (issue 26): a record's fold
+(`diagnose --pulse-fold-out`: 'Y SE' per quarter sample, the entry at a quarter of the period)
+against a run's, the load zone's first two harmonics removed (pulse_template.cpp's
+without_cycle), aligned within two samples (sub-bin) and a constant fitted; chi2 in units of both
+folds' standard errors (the averaged pulse's). And the search of the runs of one place nearest a
+record, along the size and the angle. Used by studies/branch_check.py (is the branch in the
+record?) and studies/locate_outer.py (the outer pit's branch, the second stage after diagnose).
+"""
+import math
+
+import numpy as np
+
+OVERSAMPLE = 4  # fold bins per sample
+# the fit's allowance for two runs' differences (compare(model=True)): 2 % of the pulse, 5 us of
+# timing per bin
+MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
+# the search's steps: sizes 8 % apart, angles 0.5 deg apart (within 3 deg of the start)
+SIZE_STEP, ANGLE_STEP = 1.08, 0.5
+
+
+def read_bank(path):
+    bank, bin_s = {}, None
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# bin (s):"):
+                bin_s = float(line.split(":")[1])
+            if line.startswith("#"):
+                continue
+            v = line.split()
+            n = int(v[2])
+            bank[(float(v[0]), float(v[1]))] = (np.array(v[3:3 + n], float),
+                                                np.array(v[3 + n:3 + 2 * n], float))
+    return bank, bin_s
+
+
+def read_fold(path):
+    y, se = [], []
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                a, b = line.split()
+                y.append(float(a))
+                se.append(float(b))
+    return np.array(y), np.array(se)
+
+
+def without_cycle(y, se, harmonics=2, before=0.15):
+    """pulse_template.cpp's without_cycle: the cycle's first harmonics fitted away from the
+    pulse (from 0.45 of the period after the entry to `before` before it) and removed."""
+    n = len(y)
+    j = np.arange(n)
+    u = j / n
+    cols = [np.ones(n)]
+    for h in range(1, harmonics + 1):
+        cols += [np.cos(2 * math.pi * h * j / n), np.sin(2 * math.pi * h * j / n)]
+    a = np.array(cols).T
+    keep = ~((u >= 0.25 - before) & (u < 0.7))
+    w = 1 / se[keep] ** 2
+    coef = np.linalg.solve(a[keep].T @ (w[:, None] * a[keep]), a[keep].T @ (w * y[keep]))
+    return y - a[:, 1:] @ coef[1:]
+
+
+def shifted(y, base):
+    """y read at j + base (linear interpolation, circular), for j = 0..len-1."""
+    n = len(y)
+    at = np.arange(n) + base
+    fl = np.floor(at)
+    u = at - fl
+    i0 = fl.astype(int) % n
+    return (1 - u) * y[i0] + u * y[(i0 + 1) % n], u
+
+
+def misfit(rec, tmpl, n, shift, bin_s, model, scale_free):
+    """chi2 of rec (shifted) against tmpl over n bins, a constant (and with scale_free a scale
+    of tmpl) fitted; returns chi2, the residual, the weights, the scale."""
+    yr, u = shifted(rec[0], shift)
+    ser, _ = shifted(rec[1], shift)
+    yt, st = tmpl[0][:n], tmpl[1][:n]
+    yr, ser = yr[:n], ser[:n]
+    var = ser ** 2 + st ** 2
+    if model:
+        slope = 0.5 * (np.r_[yt[1:], yt[-1]] - np.r_[yt[0], yt[:-1]])
+        var = var + (MODEL_REL * yt) ** 2 + (MODEL_JITTER_S / bin_s * slope) ** 2
+    w = 1 / var
+    a = np.c_[np.ones(n), yt] if scale_free else np.ones((n, 1))
+    target = yr if scale_free else yr - yt
+    coef = np.linalg.solve(a.T @ (w[:, None] * a), a.T @ (w * target))
+    r = target - a @ coef
+    return float(np.sum(w * r * r)), r, w, (coef[1] if scale_free else 1.0)
+
+
+def compare(rec, tmpl, bin_s, model=False, scale_free=False):
+    """The least misfit over shifts within two samples (every bin, then the parabola)."""
+    n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
+    reach = 2 * OVERSAMPLE
+    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free)[0] for k in range(-reach, reach + 1)]
+    i = int(np.argmin(c))
+    s = float(i - reach)
+    if 0 < i < len(c) - 1:
+        curv = c[i - 1] - 2 * c[i] + c[i + 1]
+        if curv > 0:
+            s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv
+            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free)[0] < c[i]:
+                s = s2
+    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free)
+    z = r * np.sqrt(w)
+    k = int(np.argmax(np.abs(z)))
+    return {"dprime": math.sqrt(chi2), "n": n, "max": float(abs(z[k])),
+            "max_at_us": (k - len(rec[0]) / 4) * bin_s * 1e6, "shift_us": s * bin_s * 1e6,
+            "scale": scale}
+
+
+def chi2_noise(rec, tmpl, bin_s):
+    """compare()'s chi2 (the standard errors alone)."""
+    return compare(rec, tmpl, bin_s)["dprime"] ** 2
+
+
+def log_vertex(sizes, chi2):
+    """The least chi2 over log size: the parabola's vertex through the smallest and its two
+    neighbours (kept between them), else the smallest point."""
+    i = int(np.argmin(chi2))
+    if i == 0 or i == len(chi2) - 1:
+        return sizes[i], chi2[i]
+    x = np.log(sizes[i - 1:i + 2])
+    c = np.polyfit(x, chi2[i - 1:i + 2], 2)
+    if c[0] <= 0:
+        return sizes[i], chi2[i]
+    v = min(max(-c[1] / (2 * c[0]), x[0]), x[2])
+    return math.exp(v), max(float(np.polyval(c, v)), 0.0)
+
+
+def prepared(fold):
+    """A fold ready to compare: (y without the cycle, se)."""
+    return without_cycle(*fold), fold[1]
+
+
+def bank_best_size(bank, bin_s, rec, angle):
+    """The bank's size (at its angle nearest `angle`) that fits the record best, between its
+    sizes on the parabola."""
+    sizes = sorted({k[0] for k in bank})
+    near = min({k[1] for k in bank}, key=lambda a: abs(a - angle))
+    c = [chi2_noise(rec, (without_cycle(*bank[(s, near)]), bank[(s, near)][1]), bin_s)
+         for s in sizes]
+    return log_vertex(sizes, c)[0]
+
+
+def search(chi2_at, start, sizes0, runs=None, angle_search=True):
+    """The run of one place nearest a record: the least chi2, searched in turn along the size
+    (runs SIZE_STEP apart) and the angle (ANGLE_STEP apart, within 3 deg) from `start` deg and each
+    of sizes0 (the misfit has several minima in the size for long pits), then a run at the
+    vertex of the parabola through the best size and its neighbours. chi2_at(angle, size): the
+    chi2 of a run there against the record (angle to 0.01 deg, size to 0.001 deg). runs: (angle,
+    size) -> chi2, filled. angle_search False: the size alone, at `start`. Returns (chi2, size,
+    angle) of the best run. It may end in a local minimum of the angle and wander from `start`:
+    scan() keeps to a window."""
+    runs = {} if runs is None else runs
+
+    def run(ang, sz):
+        key = (round(ang, 2), round(sz, 3))
+        if key not in runs:
+            runs[key] = chi2_at(*key)
+        return runs[key]
+
+    def line(f, step_of, limit):
+        """Runs along one coordinate (k steps from the middle) until the least lies between
+        two: the best k."""
+        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
+        while True:
+            order = sorted(tried)
+            i = int(np.argmin([tried[k] for k in order]))
+            if 0 < i < len(order) - 1 or len(tried) >= limit:
+                return order[i]
+            k = order[0] - 1 if i == 0 else order[-1] + 1
+            tried[k] = f(step_of(k))
+
+    def descend(sz):
+        ang = start
+        for _ in range(3):
+            k = line(lambda x: run(ang, x), lambda k: sz * SIZE_STEP ** k, 6)
+            sz = round(sz * SIZE_STEP ** k, 3)
+            if not angle_search:
+                break
+            ka = line(lambda x: run(x, sz), lambda k: ang + ANGLE_STEP * k, 13)
+            if ka == 0:
+                break
+            ang = round(ang + ANGLE_STEP * ka, 2)
+        line(lambda x: run(ang, x), lambda k: sz * SIZE_STEP ** k, 6)  # the size at the final angle
+        sizes = sorted(x for (a_, x) in runs if a_ == round(ang, 2))
+        v, _ = log_vertex(sizes, [runs[(round(ang, 2), x)] for x in sizes])
+        run(ang, v)
+        return min((runs[(round(ang, 2), x)], x, ang) for (a_, x) in runs if a_ == round(ang, 2))
+
+    return min(descend(s) for s in sizes0)
+
+
+def size_line(chi2_at, angle, size0, limit=12):
+    """Runs at one angle, sizes SIZE_STEP apart from size0, until the least lies between two
+    (at most `limit` runs: 0.46-2.2 times size0), then one at the parabola's vertex (log size):
+    (chi2, size) of the best."""
+    tried = {}
+
+    def at(k):
+        sz = round(size0 * SIZE_STEP ** k, 3)
+        if sz not in tried:
+            tried[sz] = chi2_at(angle, sz)
+        return tried[sz]
+    ks = {k: at(k) for k in (-1, 0, 1)}
+    while True:
+        order = sorted(ks)
+        i = int(np.argmin([ks[k] for k in order]))
+        if 0 < i < len(order) - 1 or len(ks) >= limit:
+            break
+        k = order[0] - 1 if i == 0 else order[-1] + 1
+        ks[k] = at(k)
+    sizes = sorted(tried)
+    v, _ = log_vertex(sizes, [tried[x] for x in sizes])
+    v = round(v, 3)
+    if v not in tried:
+        tried[v] = chi2_at(angle, v)
+    return min((c, sz) for sz, c in tried.items())
+
+
+def scan(chi2_at, lo, hi, sizes0, keep=2):
+    """The run nearest a record within the window [lo, hi] deg (the misfit is rugged in the
+    angle, with local minima ~1-2 deg apart, so it is sampled, not descended): every ANGLE_STEP
+    at each of sizes0; at the `keep` best (angle, size) of those, with distinct angles, the size
+    (size_line()); at the best of them the angle again ANGLE_STEP / 2 either side (kept within
+    the window), at its size. chi2_at(angle, size) as search()'s. Returns (chi2, size, angle)
+    of the best run."""
+    n = max(int(math.floor((hi - lo) / ANGLE_STEP + 1e-9)), 0)
+    mid = 0.5 * (lo + hi)
+    angles = [round(mid + ANGLE_STEP * (k - n / 2), 2) for k in range(n + 1)]
+    first = sorted((chi2_at(a, round(s, 3)), a, s) for s in sizes0 for a in angles)
+    starts = []
+    for _, a, s in first:
+        if all(a != b for b, _ in starts):
+            starts.append((a, s))
+        if len(starts) == keep:
+            break
+    best = min(size_line(chi2_at, a, s) + (a,) for a, s in starts)
+    c, sz, a = best
+    for b in (a - ANGLE_STEP / 2, a + ANGLE_STEP / 2):
+        if lo - 1e-9 <= b <= hi + 1e-9:
+            best = min(best, (chi2_at(round(b, 2), sz), sz, round(b, 2)))
+    return best

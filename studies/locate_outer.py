@@ -1,0 +1,332 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Where an outer-race pit is, from the load direction (issue 26): the second stage after
+`ohmdem-post diagnose --size-method template`. Under a radial load diagnose places an outer pit
+from its pulses' phase only modulo the ball spacing (360/Nb deg): a pit at theta and one at
+theta - 360/Nb see the other balls in the same places as one crosses the pit. The branches
+differ in which ball loses its load, and the simulator tells what that does to the pulse. This
+stage runs the record's scene with the pit on each branch (the phase's interval moved by k 360/Nb,
+widened by --window deg either side) within --zone deg of the load line, samples each branch's
+window for the run whose fold (acquired through the record's own chain, as its header states
+it) is nearest the record's (every 0.5 deg at the first stage's size, then the size 8 % apart
+at the two best angles, then the angle to 0.25 deg: the misfit is too rugged in the angle to
+descend), and keeps the branch whose best run fits best, when it beats the runner-up by
+a chi2 margin of more than --margin (200: the scatter of an independent 0.3 s of the same scene
+reaches 200 in doc/report/sizing/template/branch.md; chosen on the cases of blind.md and held
+fixed since). Else the branch is not determined, and the candidates within the margin are
+listed.
+
+  studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
+      [--var NAME VALUE ...] [--zone 63] [--margin 200] [--seed 8] [--format json|text]
+      [--window 2] [--keep-runs] RECORD OUT
+
+RECORD: a record written by `ohmdem-post acquire` (its '#' header holds the chain: column,
+scale, anti-alias low-pass, rate, noise, ADC). --metadata: the scene's run.json (bearing, speed,
+load, force, ...), from which the deck's variables are set (--var adds or overrides one; the
+deck: inputs/bearing_6208/in.bearing unless --deck). The runs, their acquisitions and folds are
+kept under OUT (a second call reuses them; the runs' 1 MHz signals are deleted once acquired
+unless --keep-runs); OUT/locate.json holds the answer, also printed.
+About 25 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing): 3-5
+minutes on one core for the 6208's 0.3 s records. doc/ohmdem-post.md, "The outer pit's branch".
+"""
+import argparse
+import json
+import math
+import os
+import re
+import sys
+
+import common
+import fold_compare
+
+# in.bearing's radial load pushes the outer ring along -y: the balls at +y (90 deg on the race)
+# carry it; diagnose's angles are from there, positive in the balls' direction of travel
+ZONE_CENTRE_DEG = 90.0
+MARGIN = 200.0
+ZONE_DEG = 63.0
+# each branch's runs lie within the phase's interval moved onto it, widened by this much either
+# side (the phase's centroid lies up to 2.8 deg off the pit in heldout_angles*.md)
+WINDOW_DEG = 2.0
+# the best run's chi2 per bin beyond which no run of the scene is like the record (the records
+# of branch.md and blind.md: 0.1-6.5 per bin at the true branch)
+MAX_CHI2_PER_BIN = 20.0
+# run.json -> in.bearing's variables (the scene; the pit's own are set per run)
+SCENE = [("omega_input", "omega"), ("omega_start", "omega_start"), ("ramp", "ramp"),
+         ("load", "load"), ("F_input", "F"), ("I", "I"), ("gamma", "gamma"), ("area", "area"),
+         ("dt", "dt"), ("cage_clearance", "cclear"), ("cage_mass", "mcage"),
+         ("ring_mass", "Mring"), ("ring_damping", "Cring"), ("t_sliding_end", "tslide"),
+         ("depth", "depth"), ("lubricant", "lubricant"), ("temperature", "temperature"),
+         ("roughness", "roughness"), ("fexc", "fexc"), ("wetted", "wetted")]
+CUSTOM_GEOMETRY = [("nb", "Nb"), ("db", "Db"), ("dext", "Dext"), ("dinn", "Dinn"),
+                   ("rc_ext", "Rcext"), ("rc_inn", "Rcinn")]
+
+
+def fail(text):
+    sys.exit(f"locate_outer: {text}")
+
+
+def read_chain(path):
+    """The acquisition chain a record's header states: the `ohmdem-post acquire` options that
+    repeat it (without the seed), the analysis window (from, to) and the column's name."""
+    head = {}
+    with open(path) as f:
+        for line in f:
+            if not line.startswith("#"):
+                break
+            k, sep, v = line[1:].partition(":")
+            if sep:
+                head[k.strip()] = v.strip()
+            elif line.startswith("# time "):
+                head["columns"] = line[1:].split()
+    if "chain" not in head:
+        fail(f"{path}: no '# chain:' line: RECORD must be a record written by "
+             "`ohmdem-post acquire` (its header states the chain)")
+
+    def need(key, pattern):
+        m = re.match(pattern, head.get(key, ""))
+        if not m:
+            fail(f"{path}: the header's '# {key}:' line is missing or unreadable (expected "
+                 f"'{pattern}', got '{head.get(key, '')}')")
+        return m
+
+    column = head.get("input column", "")
+    if not column:
+        fail(f"{path}: no '# input column:' line")
+    window = need("input window", r"([-+0-9.eE]+) to ([-+0-9.eE]+) s")
+    args = ["--column", column, "--scale", need("scale", r"([-+0-9.eE]+)").group(1),
+            "--offset", need("offset", r"([-+0-9.eE]+)").group(1),
+            "--rate", need("sampling rate (Hz)", r"([-+0-9.eE]+)").group(1)]
+    lp = head.get("lowpass", "")
+    if lp != "none":
+        m = need("lowpass", r"Butterworth order (\d+), cut-off ([-+0-9.eE]+) Hz.*, (steady|zero) "
+                 "initial state")
+        args += ["--lowpass", m.group(2), "--order", m.group(1), "--filter-start", m.group(3)]
+    if head.get("noise", "") != "none":
+        args += ["--noise-rms", need("noise", r"white Gaussian added to the samples, rms "
+                                     r"([-+0-9.eE]+)").group(1)]
+    if head.get("adc", "") != "none":
+        m = need("adc", r"(\d+) bits, range ([-+0-9.eE]+) to ([-+0-9.eE]+),")
+        args += ["--bits", m.group(1), "--range", m.group(2), m.group(3)]
+    name = head["columns"][1] if len(head.get("columns", [])) > 1 else "V"
+    args += ["--name", name]
+    if head.get("unit"):
+        args += ["--unit", head["unit"]]
+    return args, float(window.group(1)), float(window.group(2)), name
+
+
+def scene_variables(meta):
+    """in.bearing's -var values for the run.json's scene."""
+    if meta.get("load") != "radial":
+        fail(f"the scene's load is '{meta.get('load')}': an outer pit's branch exists under "
+             "load radial only (the other loads load every ball alike)")
+    v = {"bearing": meta.get("catalog_name", meta.get("bearing", "machado2014"))}
+    for key, var in SCENE:
+        if key in meta:
+            v[var] = meta[key]
+    if v["bearing"] == "custom":
+        for key, var in CUSTOM_GEOMETRY:
+            v[var] = meta[key]
+    return v
+
+
+class Scene:
+    """Runs of the record's scene with an outer pit (size, angle from the load), acquired
+    through the record's chain and folded; cached under OUT."""
+
+    def __init__(self, a, chain, t_from, t_to, name, variables):
+        self.a, self.chain, self.t_from, self.name = a, chain, t_from, name
+        self.vars = dict(variables, **dict(a.var))
+        self.tend = t_to
+        self.runs = 0
+
+    def fold(self, angle, size):
+        tag = f"outer_{size:g}_a{angle:g}"
+        sim = os.path.join(self.a.out, "runs", tag)
+        if not os.path.exists(os.path.join(sim, "run.json")):
+            os.makedirs(sim, exist_ok=True)
+            values = dict(self.vars, defect="outer", size=size,
+                          position=round(ZONE_CENTRE_DEG + angle, 3), tend=self.tend)
+            common.run(common.deck_command(self.a.deck, [
+                "-var", "out", sim, "-log", os.path.join(sim, "log.liggghts"), "-screen", "none"]
+                + common.variables(values)), os.path.join(sim, "stdout.txt"), who="locate_outer")
+            self.runs += 1
+        acq = os.path.join(sim, f"acq_s{self.a.seed}.txt")
+        if not os.path.exists(acq):
+            common.post(["acquire", "--from", repr(self.t_from), "--seed", str(self.a.seed)]
+                        + self.chain + ["--output", acq + ".part",
+                                        os.path.join(sim, "signal.txt")], who="locate_outer")
+            os.replace(acq + ".part", acq)
+            if not self.a.keep_runs:  # the 1 MHz signal and restart files: ~100 MB a run
+                for f in os.listdir(sim):
+                    if f == "signal.txt" or f.startswith("restart."):
+                        os.remove(os.path.join(sim, f))
+        path = acq[:-4] + ".fold"
+        if not os.path.exists(path):
+            common.post(["diagnose", "--no-size", "--format", "json", "--column", self.name,
+                         "--metadata", os.path.join(sim, "run.json"), "--from",
+                         repr(self.t_from), "--assume-defect", "outer", "--pulse-fold-out",
+                         path + ".part", acq], who="locate_outer")
+            os.replace(path + ".part", path)
+        return fold_compare.prepared(fold_compare.read_fold(path))
+
+
+def first_stage(a, record_fold):
+    """diagnose's template fit on the record: its JSON."""
+    args = ["diagnose", "--format", "json", "--column", a.column, "--metadata", a.metadata,
+            "--from", repr(a.t_from), "--assume-defect", "outer", "--pulse-fold-out", record_fold]
+    if a.bank:
+        args += ["--size-method", "template", "--template-bank", a.bank]
+    return json.loads(common.post(args + [a.record], who="locate_outer").stdout)
+
+
+def decide(found, margin, bins, spacing):
+    """The branch from each candidate's best run: found = [(chi2, branch, angle, size, runs)].
+    Returns (0 - the best of `found` by chi2 is placed - or None, the note)."""
+    found = sorted(found)
+    best = found[0]
+    if best[0] / bins > MAX_CHI2_PER_BIN:
+        return None, (f"not determined: no run of the scene folds like the record (the best, "
+                      f"{best[2]:g} deg and {best[3]:g} deg of pit, has chi2 {best[0]:.0f} over "
+                      f"{bins} bins, more than {MAX_CHI2_PER_BIN:g} a bin): another scene?")
+    if len(found) == 1:
+        return 0, "the only branch within the zone"
+    gap = found[1][0] - best[0]
+    if gap > margin:
+        return 0, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
+                   f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
+    close = [f for f in found if f[0] - best[0] <= margin]
+    return None, ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
+                  f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
+                  f"realization of the same record reaches it); modulo the ball spacing "
+                  f"{spacing:.4g} deg")
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("record")
+    ap.add_argument("out")
+    ap.add_argument("--metadata", required=True, help="the scene's run.json")
+    ap.add_argument("--bank", default=os.path.join(
+        common.DOC, "report", "sizing", "template", "bank_outer_radial_r20000_low.txt"),
+        help="diagnose's --template-bank for the first stage's size ('' for none)")
+    ap.add_argument("--from", dest="t_from", type=float, default=None,
+                    help="start of the analysis (s; default: the record's first sample)")
+    ap.add_argument("--column", default=None, help="the record's column (default: its own)")
+    ap.add_argument("--deck", default=common.BEARING_DECK)
+    ap.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
+    ap.add_argument("--zone", type=float, default=ZONE_DEG,
+                    help="branches within this many deg of the load line")
+    ap.add_argument("--margin", type=float, default=MARGIN)
+    ap.add_argument("--seed", type=int, default=8, help="the runs' acquisition noise seed")
+    ap.add_argument("--format", choices=("json", "text"), default="json")
+    ap.add_argument("--keep-runs", action="store_true",
+                    help="keep each run's signal and restart files (~100 MB a run)")
+    ap.add_argument("--window", type=float, default=WINDOW_DEG,
+                    help="deg added either side of the phase's interval on each branch")
+    a = ap.parse_args(argv)
+    for path, what in ((a.record, "RECORD"), (a.metadata, "--metadata"), (a.deck, "--deck")):
+        if not os.path.isfile(path):
+            fail(f"{what}: no such file '{path}'")
+    if a.bank and not os.path.isfile(a.bank):
+        fail(f"--bank: no such file '{a.bank}'")
+    if not (a.zone > 0 and a.margin >= 0 and a.window >= 0):
+        fail("--zone expects deg > 0, --margin a chi2 >= 0 and --window deg >= 0")
+    chain, start, end, name = read_chain(a.record)
+    a.t_from = start if a.t_from is None else a.t_from
+    a.column = a.column or name
+    with open(a.metadata) as f:
+        meta = json.load(f)
+    variables = scene_variables(meta)
+    os.makedirs(a.out, exist_ok=True)
+    record_fold = os.path.join(a.out, "record.fold")
+    d = first_stage(a, record_fold)
+    nb = int(meta.get("nb", 0))
+    if d.get("position_reference") != "load direction" or d.get("position_deg") is None or nb < 2:
+        fail("diagnose gives no outer pit's angle from the load direction for this record: "
+             + str(d.get("position_note", d.get("size_note", ""))))
+    spacing = 360.0 / nb
+    phase = float(d["position_deg"])
+    lo, hi = d.get("position_interval_deg") or [phase, phase]
+    rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
+    bins = int(0.9 * len(rec[0]))
+    bin_s = None
+    with open(record_fold) as f:
+        for line in f:
+            if line.startswith("# bin (s):"):
+                bin_s = float(line.split(":")[1])
+    if bin_s is None:
+        fail(f"{record_fold}: diagnose's fold states no '# bin (s):'")
+    scene = Scene(a, chain, a.t_from, end, a.column, variables)
+    bank = fold_compare.read_bank(a.bank)[0] if a.bank else None
+    size0 = d.get("size_deg")
+    if size0 is None and bank is None:
+        fail("the first stage gives no size to begin the runs at (" +
+             str(d.get("size_note", d.get("size_method", ""))) + "): give a --bank for the "
+             "record's chain (studies/template_bank.py writes one)")
+    half = 0.5 * (hi - lo) + a.window
+    ks = [k for k in range(-nb, nb + 1) if abs(phase + k * spacing) <= a.zone]
+    if not ks:
+        fail(f"no branch of the phase {phase:g} deg lies within --zone {a.zone:g} deg")
+    found = []
+    for k in ks:
+        centre = 0.5 * (lo + hi) + k * spacing
+        # the sizes to begin with: the first stage's (fitted over the bank's angles: within ~6 %
+        # on the held-out cases) and, when it differs by more than 15 %, the bank's best at the
+        # branch's angle (another branch's best run may be 0.3-1.4 times the pit's size in
+        # branch.md): so that every branch is searched from a size fit for it
+        sizes0 = [size0] if size0 is not None else []
+        if bank:
+            own = fold_compare.bank_best_size(bank, bin_s, rec, abs(centre))
+            if size0 is None or abs(math.log(own / size0)) > math.log(1.15):
+                sizes0.append(own)
+        runs = {}
+
+        def chi2_at(ang, sz):
+            if (ang, sz) not in runs:
+                runs[(ang, sz)] = fold_compare.chi2_noise(rec, scene.fold(ang, sz), bin_s)
+            return runs[(ang, sz)]
+        chi2, sz, ang = fold_compare.scan(chi2_at, centre - half, centre + half, sizes0)
+        found.append((chi2, round(centre, 2), ang, sz, len(runs)))
+        print(f"locate_outer: branch {centre:.2f} deg: best run {ang:g} deg, {sz:g} deg of pit, "
+              f"chi2 {chi2:.0f} ({len(runs)} runs)", file=sys.stderr, flush=True)
+    pick, note = decide(found, a.margin, bins, spacing)
+    ordered = sorted(found)
+    result = {"position_reference": "load direction", "phase_deg": phase,
+              "phase_interval_deg": [lo, hi], "ball_spacing_deg": spacing,
+              "window_deg": [-half, half],
+              "first_stage_size_deg": d.get("size_deg"), "margin": a.margin, "bins": bins,
+              "candidates": [{"branch_deg": f[1], "best_run_deg": f[2], "best_run_size_deg": f[3],
+                              "chi2": round(f[0], 3), "runs": f[4]}
+                             for f in sorted(found, key=lambda f: f[1])],
+              "runs_made": scene.runs}
+    if pick is None:
+        result.update(position_deg=None, position_interval_deg=None, branch_determined=False,
+                      position_modulo_deg=spacing)
+    else:
+        # the best run's angle (to the search's step), its interval holding the phase's on
+        # that branch too (the phase's centroid lies up to ~2-3 deg off on the held-out cases)
+        k = round((ordered[pick][2] - phase) / spacing) * spacing
+        at = ordered[pick][2]
+        result.update(position_deg=at, position_interval_deg=[
+                          min(lo + k, at - fold_compare.ANGLE_STEP),
+                          max(hi + k, at + fold_compare.ANGLE_STEP)],
+                      branch_determined=True, best_run_size_deg=ordered[pick][3],
+                      chi2_margin=(ordered[1][0] - ordered[0][0]) if len(ordered) > 1 else None)
+    result["note"] = note
+    with open(os.path.join(a.out, "locate.json"), "w") as f:
+        json.dump(result, f, indent=1)
+        f.write("\n")
+    if a.format == "json":
+        print(json.dumps(result, indent=1))
+    else:
+        pos = ("not determined" if pick is None else
+               f"{result['position_deg']:.1f} deg [{result['position_interval_deg'][0]:.1f}, "
+               f"{result['position_interval_deg'][1]:.1f}] from the load direction")
+        print(f"outer pit: {pos}\n  {note}")
+        for c in result["candidates"]:
+            print(f"  branch {c['branch_deg']:g} deg: best run {c['best_run_deg']:g} deg, "
+                  f"{c['best_run_size_deg']:g} deg of pit, chi2 {c['chi2']:.0f} ({c['runs']} runs)")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
