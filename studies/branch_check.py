@@ -59,14 +59,10 @@ def folded(out, size, angle, seed, later=0.0):
     later = 0.3: the same scene's next 0.3 s (a run to T_FROM + 0.6 s, folded from T_FROM +
     0.3 s, under out/later): an independent realization of the passes' scatter, where the
     record's own run acquired again repeats it."""
-    place = round(90.0 + angle, 3)
     if later:
         out = os.path.join(out, "later")
-    sim = sizing.simulate(out, ("outer", size, "radial", place), template_bank.TEND + later)
-    os.makedirs(os.path.join(out, "acq"), exist_ok=True)
-    acq = os.path.join(out, "acq", f"outer_{size:g}_radial_p{place:g}_r{RATE:g}_{NOISE}_s{seed}.txt")
-    if not os.path.exists(acq):
-        sizing.acquire_with_angle(sim, "radial", RATE, NOISE, acq, seed=seed)
+    sim, acq = template_bank.acquired(out, "outer", size, "radial", angle, RATE, NOISE, seed=seed,
+                                      tend=template_bank.TEND + later, allow_fail=False)
     path = acq[:-4] + ".fold"
     if not os.path.exists(path):
         common.post(["diagnose", "--no-size", "--format", "json", "--column", "V", "--metadata",

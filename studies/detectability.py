@@ -315,8 +315,6 @@ def answer(rows, g):
     smallest_size = min(g["sizes"])
     id_rate = {c: lowest_rate(rows, g, c, "inner", smallest_size, noise0, bits,
                               lambda r: r["identified"]) for c in CHANNELS}
-    size_rate = {c: lowest_rate(rows, g, c, "inner", smallest_size, noise0, bits, within)
-                 for c in CHANNELS}
     sized = {size: lowest_rate(rows, g, "R", "inner", size, noise0, bits, within)
              for size in g["sizes"]}
     not_analysable = sorted({r["rate_hz"] for r in rows if r["diagnosis"] == "not_analysable"})

@@ -20,30 +20,43 @@ MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
 SIZE_STEP, ANGLE_STEP = 1.08, 0.5
 
 
-def read_bank(path):
-    bank, bin_s = {}, None
+def read_header(path):
+    """The '# key: value' lines heading a fold or bank file, as a dict of strings."""
+    head = {}
     with open(path) as f:
         for line in f:
-            if line.startswith("# bin (s):"):
-                bin_s = float(line.split(":")[1])
+            if not line.startswith("#"):
+                break
+            k, _, v = line[1:].partition(":")
+            head[k.strip()] = v.strip()
+    return head
+
+
+def read_bank(path):
+    """A template bank (studies/template_bank.py): ({(size, angle): (y, se)}, its bin in s)."""
+    bank = {}
+    with open(path) as f:
+        for line in f:
             if line.startswith("#"):
                 continue
             v = line.split()
             n = int(v[2])
             bank[(float(v[0]), float(v[1]))] = (np.array(v[3:3 + n], float),
                                                 np.array(v[3 + n:3 + 2 * n], float))
-    return bank, bin_s
+    bin_s = read_header(path).get("bin (s)")
+    return bank, None if bin_s is None else float(bin_s)
 
 
-def read_fold(path):
+def read_fold(path, text=False):
+    """A fold's 'Y SE' rows: numpy arrays, or with text=True the numbers as written."""
     y, se = [], []
     with open(path) as f:
         for line in f:
             if not line.startswith("#"):
                 a, b = line.split()
-                y.append(float(a))
-                se.append(float(b))
-    return np.array(y), np.array(se)
+                y.append(a)
+                se.append(b)
+    return (y, se) if text else (np.array(y, float), np.array(se, float))
 
 
 def without_cycle(y, se, harmonics=2, before=0.15):
@@ -146,6 +159,19 @@ def bank_best_size(bank, bin_s, rec, angle):
     return log_vertex(sizes, c)[0]
 
 
+def steps_to_least(f, limit):
+    """f(k) at k = -1, 0, 1 steps along one coordinate, then on past the least end until the
+    least lies between two (at most `limit` calls): the best k."""
+    tried = {k: f(k) for k in (-1, 0, 1)}
+    while True:
+        order = sorted(tried)
+        i = int(np.argmin([tried[k] for k in order]))
+        if 0 < i < len(order) - 1 or len(tried) >= limit:
+            return order[i]
+        k = order[0] - 1 if i == 0 else order[-1] + 1
+        tried[k] = f(k)
+
+
 def search(chi2_at, start, sizes0, runs=None, angle_search=True):
     """The run of one place nearest a record: the least chi2, searched in turn along the size
     (runs SIZE_STEP apart) and the angle (ANGLE_STEP apart, within 3 deg) from `start` deg and each
@@ -164,16 +190,7 @@ def search(chi2_at, start, sizes0, runs=None, angle_search=True):
         return runs[key]
 
     def line(f, step_of, limit):
-        """Runs along one coordinate (k steps from the middle) until the least lies between
-        two: the best k."""
-        tried = {k: f(step_of(k)) for k in (-1, 0, 1)}
-        while True:
-            order = sorted(tried)
-            i = int(np.argmin([tried[k] for k in order]))
-            if 0 < i < len(order) - 1 or len(tried) >= limit:
-                return order[i]
-            k = order[0] - 1 if i == 0 else order[-1] + 1
-            tried[k] = f(step_of(k))
+        return steps_to_least(lambda k: f(step_of(k)), limit)
 
     def descend(sz):
         ang = start
@@ -206,14 +223,7 @@ def size_line(chi2_at, angle, size0, limit=12):
         if sz not in tried:
             tried[sz] = chi2_at(angle, sz)
         return tried[sz]
-    ks = {k: at(k) for k in (-1, 0, 1)}
-    while True:
-        order = sorted(ks)
-        i = int(np.argmin([ks[k] for k in order]))
-        if 0 < i < len(order) - 1 or len(ks) >= limit:
-            break
-        k = order[0] - 1 if i == 0 else order[-1] + 1
-        ks[k] = at(k)
+    steps_to_least(at, limit)
     sizes = sorted(tried)
     v, _ = log_vertex(sizes, [tried[x] for x in sizes])
     v = round(v, 3)
@@ -244,4 +254,28 @@ def scan(chi2_at, lo, hi, sizes0, keep=2):
     for b in (a - ANGLE_STEP / 2, a + ANGLE_STEP / 2):
         if lo - 1e-9 <= b <= hi + 1e-9:
             best = min(best, (chi2_at(round(b, 2), sz), sz, round(b, 2)))
+    return best
+
+
+def refine(chi2_at, best, lo, hi, steps=(ANGLE_STEP / 4, ANGLE_STEP / 8)):
+    """A window's best run (chi2, size, angle), from scan(), refined where the misfit's minimum is
+    narrower than scan()'s grid (chi2 ~1 at the pit, hundreds 0.25-0.5 deg off): for each step in
+    turn, the angle a step either side, going on the way it improves (within [lo, hi]), then the
+    size at the new angle (size_line()). Angles to 0.001 deg. Returns (chi2, size, angle)."""
+    for step in steps:
+        at = best[2]
+        for direction in (-1, 1):
+            b = at
+            while True:
+                b = round(b + direction * step, 3)
+                if not lo - 1e-9 <= b <= hi + 1e-9:
+                    break
+                c = chi2_at(b, best[1])
+                if c >= best[0]:
+                    break
+                best = (c, best[1], b)
+            if best[2] != at:
+                break
+        if best[2] != at:
+            best = min(best, size_line(chi2_at, best[2], best[1]) + (best[2],))
     return best

@@ -10,11 +10,13 @@ widened by --window deg either side) within --zone deg of the load line, samples
 window for the run whose fold (acquired through the record's own chain, as its header states
 it) is nearest the record's (every 0.5 deg at the first stage's size, then the size 8 % apart
 at the two best angles, then the angle to 0.25 deg: the misfit is too rugged in the angle to
-descend), and keeps the branch whose best run fits best, when it beats the runner-up by
-a chi2 margin of more than --margin (200: the scatter of an independent 0.3 s of the same scene
-reaches 200 in doc/report/sizing/template/branch.md; chosen on the cases of blind.md and held
-fixed since). Else the branch is not determined, and the candidates within the margin are
-listed.
+descend), refines the branches within 3 margins of the best to 1/8 deg and then 1/16 deg, the
+size again at each new angle, and keeps the branch whose best run fits best, when it beats the
+runner-up by a chi2 margin of more than --margin (200: the scatter of an independent 0.3 s of
+the same scene reaches 200 in doc/report/sizing/template/branch.md; chosen on the cases of
+blind.md and held fixed since). Else the branch is not determined, and the candidates within
+the margin are listed; when they are two mirror images about the load line (a pit about half a
+ball spacing from it), the pit's distance from the load line is given.
 
   studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
       [--var NAME VALUE ...] [--zone 63] [--margin 200] [--seed 8] [--format json|text]
@@ -26,8 +28,9 @@ load, force, ...), from which the deck's variables are set (--var adds or overri
 deck: inputs/bearing_6208/in.bearing unless --deck). The runs, their acquisitions and folds are
 kept under OUT (a second call reuses them; the runs' 1 MHz signals are deleted once acquired
 unless --keep-runs); OUT/locate.json holds the answer, also printed.
-About 25 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing): 3-5
-minutes on one core for the 6208's 0.3 s records. doc/ohmdem-post.md, "The outer pit's branch".
+About 30-40 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing; 140-190
+a record): 4-6 minutes on one core for the 6208's 0.3 s records. doc/ohmdem-post.md, "The outer
+pit's branch".
 """
 import argparse
 import json
@@ -47,6 +50,9 @@ ZONE_DEG = 63.0
 # each branch's runs lie within the phase's interval moved onto it, widened by this much either
 # side (the phase's centroid lies up to 2.8 deg off the pit in heldout_angles*.md)
 WINDOW_DEG = 2.0
+# branches whose best scanned run lies within this many margins of the best branch's are refined
+# (fold_compare.refine()): their best lies up to 0.25 deg off the scan's grid
+REFINE_SPAN = 3.0
 # the best run's chi2 per bin beyond which no run of the scene is like the record (the records
 # of branch.md and blind.md: 0.1-6.5 per bin at the true branch)
 MAX_CHI2_PER_BIN = 20.0
@@ -201,24 +207,36 @@ def first_stage(a, record_fold):
 
 def decide(found, margin, bins, spacing):
     """The branch from each candidate's best run: found = [(chi2, branch, angle, size, runs)].
-    Returns (0 - the best of `found` by chi2 is placed - or None, the note)."""
+    Returns (whether the best of `found` by chi2 is placed, the note)."""
     found = sorted(found)
     best = found[0]
     if best[0] / bins > MAX_CHI2_PER_BIN:
-        return None, (f"not determined: no run of the scene folds like the record (the best, "
+        return False, (f"not determined: no run of the scene folds like the record (the best, "
                       f"{best[2]:g} deg and {best[3]:g} deg of pit, has chi2 {best[0]:.0f} over "
                       f"{bins} bins, more than {MAX_CHI2_PER_BIN:g} a bin): another scene?")
     if len(found) == 1:
-        return 0, "the only branch within the zone"
+        return True, "the only branch within the zone"
     gap = found[1][0] - best[0]
     if gap > margin:
-        return 0, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
+        return True, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
                    f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
     close = [f for f in found if f[0] - best[0] <= margin]
-    return None, ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
+    return False, ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
                   f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
                   f"realization of the same record reaches it); modulo the ball spacing "
                   f"{spacing:.4g} deg")
+
+
+def mirror_pair(found, margin):
+    """The best runs' angles when the branches within the margin are two whose best runs are
+    mirror images about the load line (within ANGLE_STEP): a pit at about half the ball
+    spacing from it, where the phase has a branch on either side at the same distance, which a
+    symmetric radial load does not tell apart. None otherwise."""
+    found = sorted(found)
+    close = [f for f in found if f[0] - found[0][0] <= margin]
+    if len(close) == 2 and abs(close[0][2] + close[1][2]) <= fold_compare.ANGLE_STEP:
+        return close[0][2], close[1][2]
+    return None
 
 
 def main(argv):
@@ -269,13 +287,10 @@ def main(argv):
     lo, hi = d.get("position_interval_deg") or [phase, phase]
     rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
     bins = int(0.9 * len(rec[0]))
-    bin_s = None
-    with open(record_fold) as f:
-        for line in f:
-            if line.startswith("# bin (s):"):
-                bin_s = float(line.split(":")[1])
+    bin_s = fold_compare.read_header(record_fold).get("bin (s)")
     if bin_s is None:
         fail(f"{record_fold}: diagnose's fold states no '# bin (s):'")
+    bin_s = float(bin_s)
     scene = Scene(a, chain, a.t_from, end, a.column, variables)
     bank = fold_compare.read_bank(a.bank)[0] if a.bank else None
     size0 = d.get("size_deg")
@@ -287,7 +302,7 @@ def main(argv):
     ks = [k for k in range(-nb, nb + 1) if abs(phase + k * spacing) <= a.zone]
     if not ks:
         fail(f"no branch of the phase {phase:g} deg lies within --zone {a.zone:g} deg")
-    found = []
+    found, branches = [], {}
     for k in ks:
         centre = 0.5 * (lo + hi) + k * spacing
         # the sizes to begin with: the first stage's (fitted over the bank's angles: within ~6 %
@@ -301,16 +316,27 @@ def main(argv):
                 sizes0.append(own)
         runs = {}
 
-        def chi2_at(ang, sz):
+        def chi2_at(ang, sz, runs=runs):
             if (ang, sz) not in runs:
                 fo = scene.fold(ang, sz)  # None: a run without a fold counts as no fit
                 runs[(ang, sz)] = math.inf if fo is None else fold_compare.chi2_noise(rec, fo, bin_s)
             return runs[(ang, sz)]
         chi2, sz, ang = fold_compare.scan(chi2_at, centre - half, centre + half, sizes0)
+        branches[round(centre, 2)] = (chi2_at, runs, centre - half, centre + half)
         found.append((chi2, round(centre, 2), ang, sz, len(runs)))
         print(f"locate_outer: branch {centre:.2f} deg: best run {ang:g} deg, {sz:g} deg of pit, "
               f"chi2 {chi2:.0f} ({len(runs)} runs)", file=sys.stderr, flush=True)
-    pick, note = decide(found, a.margin, bins, spacing)
+    # The branches that may still win, refined to finer angles than the scan's grid: a branch's
+    # best sampled run lies up to 0.25 deg off its minimum, which costs it up to a few hundred
+    best = min(found)[0]
+    for i, (chi2, centre, ang, sz, _) in enumerate(found):
+        if chi2 - best <= REFINE_SPAN * a.margin:
+            chi2_at, runs, b_lo, b_hi = branches[centre]
+            chi2, sz, ang = fold_compare.refine(chi2_at, (chi2, sz, ang), b_lo, b_hi)
+            found[i] = (chi2, centre, ang, sz, len(runs))
+            print(f"locate_outer: branch {centre:.2f} deg refined: best run {ang:g} deg, {sz:g} "
+                  f"deg of pit, chi2 {chi2:.0f} ({len(runs)} runs)", file=sys.stderr, flush=True)
+    placed, note = decide(found, a.margin, bins, spacing)
     ordered = sorted(found)
     result = {"position_reference": "load direction", "phase_deg": phase,
               "phase_interval_deg": [lo, hi], "ball_spacing_deg": spacing,
@@ -320,18 +346,24 @@ def main(argv):
                               "chi2": round(f[0], 3), "runs": f[4]}
                              for f in sorted(found, key=lambda f: f[1])],
               "runs_made": scene.runs}
-    if pick is None:
+    if not placed:
         result.update(position_deg=None, position_interval_deg=None, branch_determined=False,
                       position_modulo_deg=spacing)
+        pair = mirror_pair(found, a.margin)
+        if pair:
+            dist = 0.5 * (abs(pair[0]) + abs(pair[1]))
+            result.update(distance_from_load_deg=round(dist, 3), mirror_positions_deg=list(pair))
+            note += (f"; the two are mirror images about the load line: the pit lies {dist:.2f} "
+                     "deg from it, on a side a symmetric radial load does not tell")
     else:
         # the best run's angle (to the search's step), its interval holding the phase's on
         # that branch too (the phase's centroid lies up to ~2-3 deg off on the held-out cases)
-        k = round((ordered[pick][2] - phase) / spacing) * spacing
-        at = ordered[pick][2]
+        k = round((ordered[0][2] - phase) / spacing) * spacing
+        at = ordered[0][2]
         result.update(position_deg=at, position_interval_deg=[
                           min(lo + k, at - fold_compare.ANGLE_STEP),
                           max(hi + k, at + fold_compare.ANGLE_STEP)],
-                      branch_determined=True, best_run_size_deg=ordered[pick][3],
+                      branch_determined=True, best_run_size_deg=ordered[0][3],
                       chi2_margin=(ordered[1][0] - ordered[0][0]) if len(ordered) > 1 else None)
     result["note"] = note
     with open(os.path.join(a.out, "locate.json"), "w") as f:
@@ -340,7 +372,9 @@ def main(argv):
     if a.format == "json":
         print(json.dumps(result, indent=1))
     else:
-        pos = ("not determined" if pick is None else
+        pos = ("not determined" + (f" (±{result['distance_from_load_deg']:.1f} deg: mirror "
+                                   "images)" if "mirror_positions_deg" in result else "")
+               if not placed else
                f"{result['position_deg']:.1f} deg [{result['position_interval_deg'][0]:.1f}, "
                f"{result['position_interval_deg'][1]:.1f}] from the load direction")
         print(f"outer pit: {pos}\n  {note}")

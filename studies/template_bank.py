@@ -24,6 +24,7 @@ import os
 import sys
 
 import common
+import fold_compare
 import sizing
 
 # the bank's sizes: 12 % apart from 0.2 deg (the fit reads between them on the parabola of the
@@ -53,15 +54,18 @@ def sizes_of(defect, load):
     return BANK_SIZES_ANGLES if len(angles_of(defect, load)) > 1 else BANK_SIZES
 
 
-def acquired(out, defect, size, load, angle, rate, noise):
-    """A run of the scene (pit `angle` deg from the load direction) acquired by the chain; None
-    when the chain cannot record it (R infinite)."""
-    sim = sizing.simulate(out, (defect, size, load, 90.0 + angle), TEND)
+def acquired(out, defect, size, load, angle, rate, noise, seed=1, tend=TEND, allow_fail=True,
+             extra=None):
+    """A run of the scene to `tend` s (pit `angle` deg from the load direction; extra: more deck
+    variables) acquired by the chain with the noise's `seed`: (run folder, record), cached under
+    out; (None, None) when the chain cannot record it (R infinite; allow_fail False: an error)."""
+    place = round(90.0 + angle, 3)
+    sim = sizing.simulate(out, (defect, size, load, place), tend, extra)
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)
-    dest = os.path.join(out, "acq",
-                        f"{defect}_{size:g}_{load}_p{90 + angle:g}_r{rate:g}_{noise}.txt")
-    if not os.path.exists(dest) and not sizing.acquire_with_angle(sim, load, rate, noise, dest,
-                                                                  allow_fail=True):
+    dest = os.path.join(out, "acq", os.path.basename(sim) + f"_r{rate:g}_{noise}"
+                        + ("" if seed == 1 else f"_s{seed}") + ".txt")
+    if not os.path.exists(dest) and not sizing.acquire_with_angle(
+            sim, load, rate, noise, dest, allow_fail=allow_fail, seed=seed):
         return None, None
     return sim, dest
 
@@ -79,17 +83,8 @@ def fold(out, defect, size, load, angle, rate, noise):
                         who="template_bank", allow_fail=True)
         if r.returncode != 0:
             return None
-    head, y, se = {}, [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#"):
-                k, _, v = line[1:].partition(":")
-                head[k.strip()] = v.strip()
-            else:
-                a, b = line.split()
-                y.append(a)
-                se.append(b)
-    return head.get("lowpass", ""), head["bin (s)"], y, se
+    head = fold_compare.read_header(path)
+    return (head.get("lowpass", ""), head["bin (s)"]) + fold_compare.read_fold(path, text=True)
 
 
 def write_bank(path, defect, load, rate, noise, rows, error, angle_error=None):

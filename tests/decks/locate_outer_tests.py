@@ -4,14 +4,16 @@
 
 Parts without runs: the chain read from a record's header repeats the record sample for sample;
 the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its noise, one 10 %
-higher does not); the margin rule. Then one run: a 1.5 deg pit 20 deg
-from the load direction (the branches 27.7 deg apart: this record's best run of the other branch
-has chi2 > 400 against ~130 for its own, studies/locate_outer.py on the same record), acquired at
-20 kHz, 16 bits, low noise, located within --zone 25 (two branches); and
+higher does not); the refinement of a branch's best to 1/16 deg on a narrow misfit; the margin
+rule and the mirror pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the
+branches 27.7 deg apart: this record's best run of the other branch has chi2 533 against 17 for
+its own, studies/locate_outer.py on the same record in session 17), acquired at 20 kHz, 16 bits,
+low noise, located within --zone 25 (two branches) to 0.1 deg; and
 the errors of a record not from acquire and of a scene without a radial load.
 Usage: locate_outer_tests.py --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR"""
 import argparse
 import json
+import math
 import os
 import subprocess
 import sys
@@ -75,17 +77,50 @@ def folds_compare(fc):
           f"a pulse 10 % higher does not: chi2 {c_higher:.0f} (bins + {extra:.0f})")
 
 
+def refine_narrows(fc):
+    # a misfit as narrow in the angle as the runs' (chi2 ~1 at the pit, hundreds 0.25-0.5 deg
+    # off) with its minimum between scan()'s 0.5 deg grid points: the scan's best lies 0.12 deg
+    # off, refine() ends within 1/16 deg of the minimum and at its size; never outside [lo, hi]
+    calls = []
+
+    def chi2_at(ang, sz):
+        calls.append((ang, sz))
+        return 1 + 3000 * (ang - 20.12) ** 2 + 400 * math.log(sz / 1.37) ** 2
+
+    lo, hi = 17.5, 22.5
+    best = fc.scan(chi2_at, lo, hi, [1.5])
+    c, sz, ang = fc.refine(chi2_at, best, lo, hi)
+    check(abs(best[2] - 20.12) > 0.1 and abs(ang - 20.12) <= 1 / 16 and abs(sz / 1.37 - 1) < 0.04
+          and c < best[0], f"refine: scan's best {best[2]:g} deg, refined {ang:g} deg, {sz:g} deg "
+          f"of pit (the minimum 20.12, 1.37)")
+    start = chi2_at(19.5, 1.37)
+    before = len(calls)
+    c, sz, ang = fc.refine(chi2_at, (start, 1.37, 19.5), 19.0, 19.5)
+    check(ang == 19.5 and len(calls) > before and all(a <= 19.5 for a, _ in calls[before:]),
+          f"refine keeps to its window: {ang:g} deg at its edge 19.5")
+
+
 def margin_rule(lo):
     placed, note = lo.decide([(350.0, -7.5, -7.5, 1.5, 10), (100.0, 20.2, 20.0, 1.5, 12)],
                              200, 175, 27.69)
-    check(placed == 0 and "margin of 250" in note, "a margin of 250 > 200 places: " + note)
+    check(placed is True and "margin of 250" in note, "a margin of 250 > 200 places: " + note)
     placed, note = lo.decide([(250.0, -7.5, -7.5, 1.5, 10), (100.0, 20.2, 20.0, 1.5, 12)],
                              200, 175, 27.69)
-    check(placed is None and "branches at 20.2, -7.5 deg" in note, "150 < 200 does not: " + note)
+    check(placed is False and "branches at 20.2, -7.5 deg" in note, "150 < 200 does not: " + note)
     placed, note = lo.decide([(9000.0, -7.5, -7.5, 1.5, 10), (5000.0, 20.2, 20.0, 1.5, 12)],
                              200, 175, 27.69)
-    check(placed is None and "another scene" in note,
+    check(placed is False and "another scene" in note,
           "no run like the record (28 a bin > 20): not determined: " + note)
+    # the held-out pit at 13.75 deg (doc/report/sizing/template/locate_check.md): its branch and
+    # the mirror one's best runs at 13.715 and -13.975 deg, chi2 19.5 and 22.8
+    mirror = [(4349.2, -41.54, -40.04, 0.85, 31), (22.8, -13.85, -13.975, 0.9, 38),
+              (19.5, 13.84, 13.715, 0.89, 38), (5142.2, 41.53, 41.53, 0.85, 30)]
+    check(lo.mirror_pair(mirror, 200) == (13.715, -13.975), "mirror images about the load line")
+    mirror[2] = (19.5, 13.84, 14.715, 0.89, 38)
+    check(lo.mirror_pair(mirror, 200) is None, "1 deg from mirror images: not a mirror pair")
+    mirror[2] = (19.5, 13.84, 13.715, 0.89, 38)
+    mirror[3] = (120.0, 41.53, 41.53, 0.85, 30)
+    check(lo.mirror_pair(mirror, 200) is None, "a third branch within the margin: no pair")
 
 
 def one_record(a, tmp):
@@ -112,8 +147,9 @@ def one_record(a, tmp):
         return
     d = json.loads(r.stdout)
     print(json.dumps({k: d[k] for k in ("position_deg", "note", "candidates")}))
-    check(d["branch_determined"] and abs(d["position_deg"] - 20.0) <= 15,
-          f"the pit 20 deg from the load placed on its branch: {d['position_deg']}")
+    # on its branch, and refined to 1/16 deg (20.023 in session 17; 19.96 before the refinement)
+    check(d["branch_determined"] and abs(d["position_deg"] - 20.0) <= 0.1,
+          f"the pit 20 deg from the load placed on its branch, within 0.1 deg: {d['position_deg']}")
     lo_, hi_ = d["position_interval_deg"]
     check(lo_ <= d["position_deg"] <= hi_ and hi_ - lo_ < 10, f"its interval: [{lo_}, {hi_}]")
     check(len(d["candidates"]) == 2 and d["runs_made"] > 4, "two branches searched, with runs")
@@ -145,6 +181,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         chain_repeats(a.post, locate_outer, tmp)
         folds_compare(fold_compare)
+        refine_narrows(fold_compare)
         margin_rule(locate_outer)
         one_record(a, tmp)
     finish()
