@@ -6,13 +6,17 @@ each simulated (0.35 s, as the sizing study's scene), acquired through the study
 16 bits, low noise, acquisition seed 7) and located by locate_outer.py with its defaults (the
 margin 200 fixed beforehand). The error of the placed angle, or 'not determined'.
 
-  studies/locate_check.py [--cases=ANGLE:SIZE,...] [--rate 2e4 --bank FILE] OUT
+  studies/locate_check.py [--cases=ANGLE:SIZE,...] [--rate 2e4 --bank FILE]
+                          [--mismatch NAME RECORD_VALUE VALUE] OUT
 
 --rate: another chain's rate (the same 16 bits and low noise), with --bank a template bank for
 that chain (studies/template_bank.py --rates R --noise low --kinds outer:radial OUT writes one).
+--mismatch: the record's scene with the deck variable NAME at RECORD_VALUE while locate_outer.py
+is told VALUE (--var), as when the user knows the scene only roughly (F 336 320: the radial load
+5 % above the stated one).
 
 Writes OUT/locate_check.csv and OUT/locate_check.md (one row per case, written as it goes); each
-case's runs under OUT/<case>/ (3-5 minutes a case on one core).
+case's runs under OUT/<case>/ (4-6 minutes a case on one core).
 """
 import argparse
 import json

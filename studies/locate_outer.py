@@ -212,19 +212,19 @@ def decide(found, margin, bins, spacing):
     best = found[0]
     if best[0] / bins > MAX_CHI2_PER_BIN:
         return False, (f"not determined: no run of the scene folds like the record (the best, "
-                      f"{best[2]:g} deg and {best[3]:g} deg of pit, has chi2 {best[0]:.0f} over "
-                      f"{bins} bins, more than {MAX_CHI2_PER_BIN:g} a bin): another scene?")
+                       f"{best[2]:g} deg and {best[3]:g} deg of pit, has chi2 {best[0]:.0f} over "
+                       f"{bins} bins, more than {MAX_CHI2_PER_BIN:g} a bin): another scene?")
     if len(found) == 1:
         return True, "the only branch within the zone"
     gap = found[1][0] - best[0]
     if gap > margin:
         return True, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
-                   f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
+                      f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
     close = [f for f in found if f[0] - best[0] <= margin]
     return False, ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
-                  f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
-                  f"realization of the same record reaches it); modulo the ball spacing "
-                  f"{spacing:.4g} deg")
+                   f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
+                   f"realization of the same record reaches it); modulo the ball spacing "
+                   f"{spacing:.4g} deg")
 
 
 def mirror_pair(found, margin):

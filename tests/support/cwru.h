@@ -6,8 +6,8 @@
 
 #include <sys/stat.h>
 
+#include <cctype>
 #include <fstream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -34,24 +34,63 @@ struct CwruReadme {
   std::string nb, db_mm, dp_mm, angle_deg;
 };
 
+// A README table row's cells, trimmed: "| a | b |" -> {"a", "b"}; none for a line that is not
+// a row. (Plain string work: std::regex draws GCC 12's false -Wmaybe-uninitialized under ASan.)
+inline std::vector<std::string> table_cells(const std::string &line)
+{
+  std::vector<std::string> cells;
+  if (line.empty() || line[0] != '|') return cells;
+  std::string::size_type at = 1;
+  for (std::string::size_type bar; (bar = line.find('|', at)) != std::string::npos; at = bar + 1) {
+    std::string c = line.substr(at, bar - at);
+    const auto b = c.find_first_not_of(" \t"), e = c.find_last_not_of(" \t");
+    cells.push_back(b == std::string::npos ? std::string() : c.substr(b, e - b + 1));
+  }
+  return cells;
+}
+
+// The leading run of digits (and dots, with `dots`) of text.
+inline std::string leading_number(const std::string &text, bool dots)
+{
+  std::string::size_type n = 0;
+  while (n < text.size() &&
+         (std::isdigit(static_cast<unsigned char>(text[n])) || (dots && text[n] == '.')))
+    ++n;
+  return text.substr(0, n);
+}
+
+// The millimetres of a cell ending "... (7.940 mm)".
+inline std::string millimetres(const std::string &cell)
+{
+  const auto open = cell.rfind('(');
+  if (open == std::string::npos || cell.size() < 4 || cell.compare(cell.size() - 4, 4, " mm)") != 0)
+    return "";
+  const std::string number = leading_number(cell.substr(open + 1), true);
+  return open + 1 + number.size() + 4 == cell.size() && !number.empty() ? number : "";
+}
+
 inline CwruReadme parse_cwru_readme(const std::string &path)
 {
   std::ifstream in(path);
   CwruReadme r;
   std::string line;
-  std::smatch m;
-  const std::regex row(R"(^\|\s*(sig\d+)\s*\|\s*([0-9.]+)\s*\|\s*([0-9.]+)\s*\|)");
-  const std::regex balls(R"(^\|\s*number of balls\s*\|\s*([0-9]+)\s*\|)");
-  const std::regex ball(R"(^\|\s*ball diameter\s*\|.*\(([0-9.]+) mm\))");
-  const std::regex pitch(R"(^\|\s*pitch diameter\s*\|.*\(([0-9.]+) mm\))");
-  const std::regex angle(R"(^\|\s*contact angle\s*\|\s*([0-9.]+) deg)");
   while (std::getline(in, line)) {
-    if (std::regex_search(line, m, row))
-      r.records.push_back({m[1], std::stod(m[2]), std::stod(m[3])});
-    if (std::regex_search(line, m, balls)) r.nb = m[1];
-    if (std::regex_search(line, m, ball)) r.db_mm = m[1];
-    if (std::regex_search(line, m, pitch)) r.dp_mm = m[1];
-    if (std::regex_search(line, m, angle)) r.angle_deg = m[1];
+    const std::vector<std::string> c = table_cells(line);
+    if (c.size() < 2) continue;
+    const std::string &key = c[0], &value = c[1];
+    const bool signal = key.size() > 3 && key.compare(0, 3, "sig") == 0 &&
+                        leading_number(key.substr(3), false).size() == key.size() - 3;
+    if (signal && c.size() >= 3 && !value.empty() && !c[2].empty() &&
+        leading_number(value, true) == value && leading_number(c[2], true) == c[2])
+      r.records.push_back({key, std::stod(value), std::stod(c[2])});
+    if (key == "number of balls" && !value.empty() && leading_number(value, false) == value)
+      r.nb = value;
+    if (key == "ball diameter" && !millimetres(value).empty()) r.db_mm = millimetres(value);
+    if (key == "pitch diameter" && !millimetres(value).empty()) r.dp_mm = millimetres(value);
+    if (key == "contact angle") {
+      const std::string deg = leading_number(value, true);
+      if (!deg.empty() && value.compare(deg.size(), 4, " deg") == 0) r.angle_deg = deg;
+    }
   }
   return r;
 }
