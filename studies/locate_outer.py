@@ -28,7 +28,7 @@ load, force, ...), from which the deck's variables are set (--var adds or overri
 deck: inputs/bearing_6208/in.bearing unless --deck). The runs, their acquisitions and folds are
 kept under OUT (a second call reuses them; the runs' 1 MHz signals are deleted once acquired
 unless --keep-runs); OUT/locate.json holds the answer, also printed.
-About 30-40 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing; 140-190
+About 30-40 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing; 120-200
 a record): 4-6 minutes on one core for the 6208's 0.3 s records. doc/ohmdem-post.md, "The outer
 pit's branch".
 """
