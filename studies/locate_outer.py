@@ -74,16 +74,9 @@ def fail(text):
 def read_chain(path):
     """The acquisition chain a record's header states: the `ohmdem-post acquire` options that
     repeat it (without the seed), the analysis window (from, to) and the column's name."""
-    head = {}
-    with open(path) as f:
-        for line in f:
-            if not line.startswith("#"):
-                break
-            k, sep, v = line[1:].partition(":")
-            if sep:
-                head[k.strip()] = v.strip()
-            elif line.startswith("# time "):
-                head["columns"] = line[1:].split()
+    head = fold_compare.read_header(path)
+    # the columns' line ('# time V ...') has no colon: read_header keeps it as a key
+    columns = next((k.split() for k in head if k.startswith("time ")), [])
     if "chain" not in head:
         fail(f"{path}: no '# chain:' line: RECORD must be a record written by "
              "`ohmdem-post acquire` (its header states the chain)")
@@ -113,7 +106,7 @@ def read_chain(path):
     if head.get("adc", "") != "none":
         m = need("adc", r"(\d+) bits, range ([-+0-9.eE]+) to ([-+0-9.eE]+),")
         args += ["--bits", m.group(1), "--range", m.group(2), m.group(3)]
-    name = head["columns"][1] if len(head.get("columns", [])) > 1 else "V"
+    name = columns[1] if len(columns) > 1 else "V"
     args += ["--name", name]
     if head.get("unit"):
         args += ["--unit", head["unit"]]
