@@ -44,6 +44,10 @@ if want detectability; then
   mkdir -p "$OUT/detectability"
   cp "$WORK"/detectability/*.png "$WORK"/detectability/detectability.csv \
      "$WORK"/detectability/detectability.md "$OUT/detectability/"
+  echo "== an inner pit's place from the accelerometer (issue 26)"
+  /usr/bin/python3 studies/accel_position.py "$WORK/accel_position" > "$OUT/accel_position.log"
+  cp "$WORK"/accel_position/accel_position.csv "$WORK"/accel_position/accel_position.md \
+     "$OUT/detectability/"
 fi
 if want runup; then
   echo "== run-up study (order tracking)"

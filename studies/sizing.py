@@ -226,6 +226,22 @@ def width_curve(out, defect, load, rate, noise):
     return path, best, err
 
 
+def with_angle(record, dest):
+    """An acquired record (time, V) into dest with the deck's shaft angle omega t as a third
+    column, angle_inner; the record removed. Written whole, then renamed: a run stopped halfway
+    leaves no short record in a cache."""
+    part = dest + ".part"
+    with open(record) as f, open(part, "w") as g:
+        for line in f:
+            if line.startswith("#"):
+                g.write(line if not line.startswith("# time") else "# time V angle_inner\n")
+            else:
+                t, v = line.split()
+                g.write(f"{t} {v} {OMEGA * float(t)!r}\n")
+    os.replace(part, dest)
+    os.remove(record)
+
+
 def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False, seed=1):
     """The electrical channel acquired, plus the shaft angle the deck's angle_inner holds. The
     fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range. seed: the acquisition noise's
@@ -241,17 +257,7 @@ def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False, seed=1):
                     who="sizing", allow_fail=allow_fail)
     if r.returncode != 0:
         return False
-    # written whole, then renamed: a run stopped halfway leaves no short record in the cache
-    part = dest + ".part"
-    with open(tmp) as f, open(part, "w") as g:
-        for line in f:
-            if line.startswith("#"):
-                g.write(line if not line.startswith("# time") else "# time V angle_inner\n")
-            else:
-                t, v = line.split()
-                g.write(f"{t} {v} {OMEGA * float(t)!r}\n")
-    os.replace(part, dest)
-    os.remove(tmp)
+    with_angle(tmp, dest)
     return True
 
 

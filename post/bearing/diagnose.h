@@ -35,6 +35,9 @@ struct DiagnoseOptions {
   std::string load;
   double pulse_height = 0;
   const std::vector<double> *shaft_angle = nullptr;
+  // the record's anti-alias filter's delay at 0 Hz (s; its header's lowpass line), 0 when it
+  // states none: an event's time in the record is this much after the event
+  double record_delay_s = 0;
   // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
   // pulses) whatever the identification says; empty: the identified defect only
   std::string assume_defect;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/pass_energy.h"
 #include "bearing/race_sizing.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
@@ -279,7 +280,9 @@ LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
     return l;
   }
   const DoubleImpulseSize e = size_from_double_impulse(s.x, s.rate, r.f, r.defect, g.nb, {});
-  return take_size(l, r, g, e);
+  l = take_size(l, r, g, e);
+  place_inner_by_pass_energy(s, r, o, l);
+  return l;
 }
 
 }  // namespace ohmdem::post

@@ -6,12 +6,18 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/load_zone_fit.h"
 #include "bearing/race_sizing.h"
 #include "core/constants.h"
 #include "core/sampled_signal.h"
 #include "dsp/detect_laws.h"
 
 namespace ohmdem::post {
+
+std::size_t smoothing_samples(double rate)
+{
+  return static_cast<std::size_t>(std::max(1.0, std::round(1e-4 * rate)));
+}
 
 PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
                            const PassEnergySettings &s)
@@ -31,7 +37,7 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
   for (std::size_t i = 0; i < x.size(); ++i) e[i] = (x[i] - mean) * (x[i] - mean);
   // the events are found on the squared record smoothed over 0.1 ms (one sample at 10 kHz), so
   // that one noisy sample does not place a window
-  const auto k = static_cast<std::size_t>(std::max(1.0, std::round(1e-4 * rate)));
+  const std::size_t k = smoothing_samples(rate);
   std::vector<double> sm(e.size(), 0.0);
   double acc = 0;
   for (std::size_t i = 0; i < e.size(); ++i) {
@@ -51,12 +57,27 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
       static_cast<double>(x.size()) - period / 2 - period / 12 - static_cast<double>(w) - 2;
   // the first pass: the strongest event of the first period
   std::size_t c = strongest(static_cast<double>(w) + period / 2, period / 2);
+  // the last pass whose event stood out (twice its background's energy and within 20 dB of
+  // the strongest pass so far: a record's quantization alone gives empty windows energy
+  // ratios of any size), and the passes since: a pass without one (a defect outside the load
+  // zone) is searched for where the period puts it from there, not from its window's largest
+  // sample, which lies at its edge in the last event's tail (the search would drift away from
+  // the events a quarter period a pass)
+  double anchor = static_cast<double>(c), since = 0, strongest_pass = 0;
   while (static_cast<double>(c) < end) {
     // the background half a period later, not searched: a search there would centre it on
     // the peaks of any steady tone and subtract more than the tone's mean energy
     const auto b = static_cast<std::size_t>(std::lround(static_cast<double>(c) + period / 2));
-    out.energy.push_back(energy(c) - energy(b));
-    const double next = static_cast<double>(c) + period;
+    const double ec = energy(c), eb = energy(b);
+    out.energy.push_back(ec - eb);
+    out.at.push_back(static_cast<double>(c));
+    strongest_pass = std::max(strongest_pass, ec - eb);
+    if (ec > 2 * eb && ec - eb >= 1e-2 * strongest_pass) {
+      anchor = static_cast<double>(c);
+      since = 0;
+    }
+    ++since;
+    const double next = anchor + since * period;
     if (next + period / 4 + static_cast<double>(w) + 1 >= static_cast<double>(x.size())) break;
     c = strongest(next, period / 4);
   }
@@ -155,7 +176,53 @@ LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
   ps.curve_rel_error = o.curve_rel_error;
   const PassEnergySize e = size_from_pass_energy(s.x, s.rate, r.f, r.defect, ps);
   l.pass_energy = e.energy;
-  return take_size(l, r, o.geometry, e);
+  l = take_size(l, r, o.geometry, e);
+  place_inner_by_pass_energy(s, r, o, l);
+  return l;
+}
+
+void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
+                                LocatedDefect &l)
+{
+  if (r.defect != "inner") return;
+  if (o.load != "radial") {
+    l.position_note =
+        o.load.empty() ? "not determined: needs the load mode ({diagnose.load}, or run.json)"
+                       : "not determined: under a balanced load every pass looks the same";
+    return;
+  }
+  if (!o.shaft_angle || o.shaft_angle->empty()) {
+    l.position_note = "not determined: the record has no shaft angle (angle or tachometer column)";
+    return;
+  }
+  const PassEnergies pe = pass_energies(s.x, s.rate, r.f, PassEnergySettings{});
+  const std::size_t n = pe.energy.size();
+  if (n < 8) {
+    l.position_note = "not determined: " + std::to_string(n) + " defect passes, fewer than 8";
+    return;
+  }
+  // each pass's time: its strongest event's (the ball it meets, wherever the cage holds it),
+  // less the anti-alias filter's delay
+  std::vector<double> t(n);
+  for (std::size_t j = 0; j < n; ++j) t[j] = s.t0 + pe.at[j] / s.rate - o.record_delay_s;
+  const ZoneEstimate z = zone_estimate(shaft_angles_at(t, s.rate, s.t0, o.shaft_angle, o.fr),
+                                       pe.energy);
+  if (!(z.c > 0)) {
+    l.position_note = "not determined: the passes' energy does not follow the load zone";
+    return;
+  }
+  // +-0.5 deg: the grid's step; and the shaft's turn over the smoothing window: where in it
+  // the event lies is not resolved (the ring's response and the exit's place in the pit move
+  // the energy's peak by about that much)
+  const double smear_deg =
+      360 * o.fr * static_cast<double>(smoothing_samples(s.rate)) / s.rate;
+  const double half =
+      student_t_isf(0.025, static_cast<double>(n - 1)) * z.phi_sd + 0.5 + smear_deg;
+  l.position_deg = wrap_deg(kLoadDirectionDeg - z.phi_deg);
+  l.position_lo_deg = wrap_deg(l.position_deg - half);
+  l.position_hi_deg = wrap_deg(l.position_deg + half);
+  l.position_reference = "shaft zero";
+  l.position_note.clear();
 }
 
 }  // namespace ohmdem::post

@@ -33,9 +33,13 @@ struct PassEnergySettings {
 // (the background, which never overlaps a pass's window).
 struct PassEnergies {
   std::vector<double> energy;  // one per pass (V^2 s)
+  std::vector<double> at;      // each pass's window centre (sample index)
   double mean = std::numeric_limits<double>::quiet_NaN();
   std::vector<double> group_mean;  // per group of consecutive passes
 };
+// The samples over which the squared record is smoothed to find a pass's event: 0.1 ms, at
+// least one.
+std::size_t smoothing_samples(double rate);
 PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
                            const PassEnergySettings &s);
 
@@ -67,6 +71,14 @@ struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
 struct LocatedDefect;
+struct RaceToSize;
+// An inner defect's place on the ring from an acceleration record: under a radial load the
+// passes' energy peaks when the defect meets the load direction, so the energy against the
+// shaft angle at each pass gives it (bearing/load_zone_fit.h), with an interval from the
+// jackknife over the passes. Needs the radial load and the record's shaft angle (o.shaft_angle);
+// else l.position_note says why not. An outer defect's note is left as it is.
+void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
+                                LocatedDefect &l);
 // diagnose's size by this method (its accel-curve size method; the curve in o.curve_size_deg and
 // o.curve_rel_area_s, its error in o.curve_rel_error): the race defect found, or
 // o.assume_defect at its kinematic frequency.

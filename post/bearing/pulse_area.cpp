@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bearing/load_zone_fit.h"
 #include "core/circular_index.h"
 #include "core/constants.h"
 #include "dsp/detect_laws.h"
@@ -18,11 +19,6 @@ double median(std::vector<double> v)
 {
   std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
   return v[v.size() / 2];
-}
-
-double wrap_deg(double a)
-{
-  return a - 360 * std::floor(a / 360);
 }
 
 // The pulse's window in the period, as fractions [lo, hi) of it (hi - lo <= 0.6): the folded
@@ -73,74 +69,6 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   }
   centre = m1 / m0 / static_cast<double>(bins);
   return true;
-}
-
-// Pass angles (rad): the shaft angle at each pass, or 2 pi fr t.
-std::vector<double> pass_angles(const PassAreas &p, double rate, double t0,
-                                const PulseAreaSettings &s)
-{
-  std::vector<double> a(p.time.size());
-  for (std::size_t j = 0; j < a.size(); ++j) {
-    if (s.shaft_angle && !s.shaft_angle->empty()) {
-      const double u = (p.time[j] - t0) * rate;
-      const auto i =
-          std::min(static_cast<std::size_t>(std::max(u, 0.0)), s.shaft_angle->size() - 1);
-      a[j] = (*s.shaft_angle)[i];
-    } else {
-      a[j] = 2 * kPi * s.fr * p.time[j];
-    }
-  }
-  return a;
-}
-
-// r_j = c cos^p(theta_j - phi) (0 outside the half turn): phi on a 1-degree grid, p in
-// {1, 1.5, ..., 4}, c by least squares; `skip` leaves one pass out (jackknife).
-struct ZoneFit {
-  double c = 0, phi_deg = 0;
-};
-struct ZoneTable {
-  std::vector<double> g;  // [pass][phi][p]
-  std::size_t n = 0;
-  static constexpr int kPhi = 360, kP = 7;
-  double at(std::size_t j, int f, int q) const { return g[(j * kPhi + f) * kP + q]; }
-};
-
-ZoneTable zone_table(const std::vector<double> &theta)
-{
-  ZoneTable t;
-  t.n = theta.size();
-  t.g.resize(t.n * ZoneTable::kPhi * ZoneTable::kP);
-  for (std::size_t j = 0; j < t.n; ++j)
-    for (int f = 0; f < ZoneTable::kPhi; ++f) {
-      const double c = std::cos(theta[j] - f * kPi / 180);
-      for (int q = 0; q < ZoneTable::kP; ++q)
-        t.g[(j * ZoneTable::kPhi + f) * ZoneTable::kP + q] = c > 0 ? std::pow(c, 1 + 0.5 * q) : 0;
-    }
-  return t;
-}
-
-ZoneFit zone_fit(const ZoneTable &t, const std::vector<double> &r, std::size_t skip)
-{
-  ZoneFit best;
-  double best_gain = -1;
-  for (int f = 0; f < ZoneTable::kPhi; ++f)
-    for (int q = 0; q < ZoneTable::kP; ++q) {
-      double rg = 0, gg = 0;
-      for (std::size_t j = 0; j < t.n; ++j) {
-        if (j == skip) continue;
-        const double g = t.at(j, f, q);
-        rg += r[j] * g;
-        gg += g * g;
-      }
-      if (gg <= 0) continue;
-      const double gain = rg * rg / gg;  // RSS = sum r^2 - gain
-      if (gain > best_gain) {
-        best_gain = gain;
-        best.c = rg / gg;
-        best.phi_deg = f;
-      }
-    }
-  return best;
 }
 
 // Linear interpolation of the size at area a on the model's curve; NaN outside it.
@@ -278,27 +206,15 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
   if (s.load_zone && defect == "inner") {
     // the defect turns with the shaft: its passes follow the load zone; the peak is the pass
     // at the zone's centre
-    const ZoneTable t = zone_table(pass_angles(p, rate, t0, s));
-    const ZoneFit all = zone_fit(t, p.rel_area, n);
-    double sc = 0, sc2 = 0, sp = 0, sp2 = 0;
-    for (std::size_t j = 0; j < n; ++j) {  // jackknife over the passes
-      const ZoneFit k = zone_fit(t, p.rel_area, j);
-      const double dphi = wrap_deg(k.phi_deg - all.phi_deg + 180) - 180;
-      sc += k.c;
-      sc2 += k.c * k.c;
-      sp += dphi;
-      sp2 += dphi * dphi;
-    }
-    const double nn = static_cast<double>(n);
-    const double var_c = (nn - 1) / nn * std::max(sc2 - sc * sc / nn, 0.0);
-    const double var_p = (nn - 1) / nn * std::max(sp2 - sp * sp / nn, 0.0);
-    c = all.c;
-    se = std::sqrt(var_c);
+    const ZoneEstimate z =
+        zone_estimate(shaft_angles_at(p.time, rate, t0, s.shaft_angle, s.fr), p.rel_area);
+    c = z.c;
+    se = z.c_se;
     if (s.shaft_angle && !s.shaft_angle->empty()) {
       // the defect meets the load direction when shaft angle + position = load direction;
       // +-0.5 deg: the grid's step
-      const double half = tq * std::sqrt(var_p) + 0.5;
-      e.position_deg = wrap_deg(s.load_direction_deg - all.phi_deg);
+      const double half = tq * z.phi_sd + 0.5;
+      e.position_deg = wrap_deg(s.load_direction_deg - z.phi_deg);
       e.position_lo_deg = wrap_deg(e.position_deg - half);
       e.position_hi_deg = wrap_deg(e.position_deg + half);
     }

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "bearing/load_zone_fit.h"
+
 namespace ohmdem::post {
 
 struct PulseAreaSettings {
@@ -25,7 +27,7 @@ struct PulseAreaSettings {
   double level_offset = 0;         // the record's value at R = 0 (acquire's offset)
   double confidence = 0.95;        // two-sided level of the interval
   double fr = 0;                   // shaft frequency (Hz): the inner defect turns with the shaft
-  double load_direction_deg = 90;  // where the load zone's centre is (deck: +y)
+  double load_direction_deg = kLoadDirectionDeg;  // where the load zone's centre is
   // shaft angle (rad) per sample, from the record (angle column or tachometer), else null:
   // an inner defect's position on the ring is then not determined
   const std::vector<double> *shaft_angle = nullptr;

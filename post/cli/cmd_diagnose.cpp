@@ -225,6 +225,7 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
+  o.record_delay_s = record_filter_delay_s(input_options(a).files.at(0));
   // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
   const bool double_impulse = size_method == "double-impulse";
@@ -338,6 +339,7 @@ int run_diagnose(const std::vector<std::string> &argv)
   name_flags(d.detection);
   d.located.method = flag_named(d.located.method);
   d.located.height_source = flag_named(d.located.height_source);
+  d.located.position_note = flag_named(d.located.position_note);
   if (in_orders) o.fr = sa->speed.mean / (2 * kPi);
   for (const auto &w : d.warnings) std::cerr << "WARNING: diagnose: " << w << "\n";
   Output out(a);

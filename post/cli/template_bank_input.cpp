@@ -2,11 +2,13 @@
 #include "cli/template_bank_input.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "dsp/butterworth.h"
 
 namespace ohmdem::post::cli {
 
@@ -117,6 +119,27 @@ std::string record_lowpass(const std::string &record_path)
   while (std::getline(in, line) && !line.empty() && line[0] == '#')
     if (line.rfind("# lowpass:", 0) == 0) return filter_part(line.substr(10));
   return "";
+}
+
+double record_filter_delay_s(const std::string &record_path)
+{
+  std::ifstream in(record_path);
+  std::string line;
+  while (std::getline(in, line) && !line.empty() && line[0] == '#') {
+    if (line.rfind("# lowpass:", 0) != 0) continue;
+    int order = 0;
+    double fc = 0, fs = 0;
+    const std::string v = line.substr(10);
+    const auto cut = v.find("cut-off"), at = v.find("sections at");
+    if (std::sscanf(v.c_str(), " Butterworth order %d", &order) != 1 ||
+        cut == std::string::npos || at == std::string::npos ||
+        std::sscanf(v.c_str() + cut, "cut-off %lf", &fc) != 1 ||
+        std::sscanf(v.c_str() + at, "sections at %lf", &fs) != 1)
+      return 0;
+    if (order < 1 || order > kMaxButterworthOrder || !(fc > 0 && fc < fs / 2)) return 0;
+    return sos_dc_delay_s(butterworth_lowpass(order, fc, fs), fs);
+  }
+  return 0;
 }
 
 void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,

@@ -174,6 +174,14 @@ std::complex<double> sos_response(const Sos &sos, double f, double fs)
   return h;
 }
 
+double sos_dc_delay_s(const Sos &sos, double fs)
+{
+  double samples = 0;
+  for (const Biquad &s : sos)
+    samples += (s.b1 + 2 * s.b2) / (s.b0 + s.b1 + s.b2) - (s.a1 + 2 * s.a2) / (1 + s.a1 + s.a2);
+  return samples / fs;
+}
+
 double butterworth_gain(int order, double fc, double fs, double f)
 {
   const double r = std::tan(kPi * f / fs) / std::tan(kPi * fc / fs);

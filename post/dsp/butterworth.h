@@ -36,6 +36,11 @@ void sos_filter(const Sos &sos, std::vector<double> &x, SosState &state);
 // Frequency response H(e^{i 2 pi f / fs}) of the cascade.
 std::complex<double> sos_response(const Sos &sos, double f, double fs);
 
+// The cascade's group delay at 0 Hz (s): per section (b1 + 2 b2) / (b0 + b1 + b2) - (a1 + 2 a2)
+// / (1 + a1 + a2) samples (the phase of sum c_k e^{-i w k} falls as w sum k c_k / sum c_k near
+// w = 0), summed, over fs.
+double sos_dc_delay_s(const Sos &sos, double fs);
+
 // |H(f)| of the digital Butterworth low-pass in closed form (bilinear transform of the analog
 // |H| = 1/sqrt(1 + (w/wc)^2N), with the prewarped frequencies tan(pi f/fs)): the theory the
 // design is checked against.

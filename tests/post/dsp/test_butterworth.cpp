@@ -96,6 +96,25 @@ TEST(Butterworth, ResponseIsTheBilinearButterworthMagnitude)
   }
 }
 
+TEST(Butterworth, DelayAtZeroHertzIsTheAnalogPrototypes)
+{
+  // the analog Butterworth's group delay at 0 Hz: sum_k sin((2k - 1) pi / 2N) / (2 pi fc) (its
+  // poles -sin + i cos on the unit circle, each adding Re(-p)/|p|^2); the bilinear transform
+  // keeps it where fc << fs. And against the phase's slope of sos_response near 0 Hz.
+  for (int n : {1, 2, 4, 7}) {
+    const double fs = 1e6, fc = 4000;
+    double analog = 0;
+    for (int k = 1; k <= n; ++k) analog += std::sin((2 * k - 1) * kPi / (2 * n));
+    analog /= 2 * kPi * fc;
+    const Sos sos = butterworth_lowpass(n, fc, fs);
+    const double d = sos_dc_delay_s(sos, fs);
+    EXPECT_NEAR(d, analog, 1e-4 * analog) << n;
+    const double df = 0.01;  // Hz
+    const double slope = -std::arg(sos_response(sos, df, fs)) / (2 * kPi * df);
+    EXPECT_NEAR(d, slope, 1e-7 * d) << n;
+  }
+}
+
 TEST(Butterworth, RejectsImpossibleDesigns)
 {
   EXPECT_THROW(butterworth_lowpass(0, 100, 1000), Error);
