@@ -186,9 +186,9 @@ void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const Diag
 {
   if (r.defect != "inner") return;
   if (o.load != "radial") {
-    l.position_note =
-        o.load.empty() ? "not determined: needs the load mode ({diagnose.load}, or run.json)"
-                       : "not determined: under a balanced load every pass looks the same";
+    l.position_note = o.load.empty()
+                          ? "not determined: needs the load mode ({diagnose.load}, or run.json)"
+                          : "not determined: under a balanced load every pass looks the same";
     return;
   }
   if (!o.shaft_angle || o.shaft_angle->empty()) {
@@ -205,8 +205,8 @@ void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const Diag
   // less the anti-alias filter's delay
   std::vector<double> t(n);
   for (std::size_t j = 0; j < n; ++j) t[j] = s.t0 + pe.at[j] / s.rate - o.record_delay_s;
-  const ZoneEstimate z = zone_estimate(shaft_angles_at(t, s.rate, s.t0, o.shaft_angle, o.fr),
-                                       pe.energy);
+  const ZoneEstimate z =
+      zone_estimate(shaft_angles_at(t, s.rate, s.t0, o.shaft_angle, o.fr), pe.energy);
   if (!(z.c > 0)) {
     l.position_note = "not determined: the passes' energy does not follow the load zone";
     return;
@@ -214,10 +214,8 @@ void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const Diag
   // +-0.5 deg: the grid's step; and the shaft's turn over the smoothing window: where in it
   // the event lies is not resolved (the ring's response and the exit's place in the pit move
   // the energy's peak by about that much)
-  const double smear_deg =
-      360 * o.fr * static_cast<double>(smoothing_samples(s.rate)) / s.rate;
-  const double half =
-      student_t_isf(0.025, static_cast<double>(n - 1)) * z.phi_sd + 0.5 + smear_deg;
+  const double smear_deg = 360 * o.fr * static_cast<double>(smoothing_samples(s.rate)) / s.rate;
+  const double half = student_t_isf(0.025, static_cast<double>(n - 1)) * z.phi_sd + 0.5 + smear_deg;
   l.position_deg = wrap_deg(kLoadDirectionDeg - z.phi_deg);
   l.position_lo_deg = wrap_deg(l.position_deg - half);
   l.position_hi_deg = wrap_deg(l.position_deg + half);

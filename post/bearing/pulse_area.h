@@ -23,10 +23,10 @@ struct PulseAreaSettings {
   // h: relative level jump when the ball in the defect loses contact (under a radial load: at
   // the centre of the load zone). Must be > 0.
   double rel_height = 0;
-  bool load_zone = false;          // radial load: pulse heights follow the load zone
-  double level_offset = 0;         // the record's value at R = 0 (acquire's offset)
-  double confidence = 0.95;        // two-sided level of the interval
-  double fr = 0;                   // shaft frequency (Hz): the inner defect turns with the shaft
+  bool load_zone = false;    // radial load: pulse heights follow the load zone
+  double level_offset = 0;   // the record's value at R = 0 (acquire's offset)
+  double confidence = 0.95;  // two-sided level of the interval
+  double fr = 0;             // shaft frequency (Hz): the inner defect turns with the shaft
   double load_direction_deg = kLoadDirectionDeg;  // where the load zone's centre is
   // shaft angle (rad) per sample, from the record (angle column or tachometer), else null:
   // an inner defect's position on the ring is then not determined

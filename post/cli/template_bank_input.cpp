@@ -131,9 +131,8 @@ double record_filter_delay_s(const std::string &record_path)
     double fc = 0, fs = 0;
     const std::string v = line.substr(10);
     const auto cut = v.find("cut-off"), at = v.find("sections at");
-    if (std::sscanf(v.c_str(), " Butterworth order %d", &order) != 1 ||
-        cut == std::string::npos || at == std::string::npos ||
-        std::sscanf(v.c_str() + cut, "cut-off %lf", &fc) != 1 ||
+    if (std::sscanf(v.c_str(), " Butterworth order %d", &order) != 1 || cut == std::string::npos ||
+        at == std::string::npos || std::sscanf(v.c_str() + cut, "cut-off %lf", &fc) != 1 ||
         std::sscanf(v.c_str() + at, "sections at %lf", &fs) != 1)
       return 0;
     if (order < 1 || order > kMaxButterworthOrder || !(fc > 0 && fc < fs / 2)) return 0;

@@ -125,8 +125,8 @@ TEST(DiagnoseAccelCurve, InnerDefectPlacedWithTheShaftAngleThroughTheCommand)
     const double t = static_cast<double>(i) / fs;
     const double s = std::fmod(t * bpfi + 0.3, 1.0) / bpfi;  // since the pass began
     const double c = std::cos(2 * kPi * fr * (t - s) + (place - 90) * kPi / 180);
-    in << t << " " << (c > 0 ? std::pow(c, 1.5) : 0.0) * std::exp(-s / 150e-6) *
-                          std::sin(2 * kPi * 3000 * s)
+    in << t << " "
+       << (c > 0 ? std::pow(c, 1.5) : 0.0) * std::exp(-s / 150e-6) * std::sin(2 * kPi * 3000 * s)
        << "\n";
   }
   const std::string raw = test::write_temp("inner_place_1mhz.txt", in.str());
@@ -156,8 +156,9 @@ TEST(DiagnoseAccelCurve, InnerDefectPlacedWithTheShaftAngleThroughTheCommand)
     with << line << "\n";
     if (line.rfind("# lowpass:", 0) != 0) without << line << "\n";
   }
-  const std::string args = " --format json --column V --rpm 3600 --bearing 6205 --load radial "
-                           "--assume-defect inner --size-method accel-curve";
+  const std::string args =
+      " --format json --column V --rpm 3600 --bearing 6205 --load radial "
+      "--assume-defect inner --size-method accel-curve";
   const Json j = json_of(run("diagnose " + test::write_temp("inner_place.txt", with.str()) + args),
                          "with the filter");
   const Json *pos = j.find("position_deg");
@@ -172,9 +173,9 @@ TEST(DiagnoseAccelCurve, InnerDefectPlacedWithTheShaftAngleThroughTheCommand)
   // without the header's filter line its delay, 2.613 / (2 pi 4 kHz) = 104 us (the analog
   // prototype's) = 1.04 samples, is not taken off: the passes take the angle column's sample 1
   // or 2 earlier (2.16 deg each at 60 Hz), and the place reads that much earlier
-  const Json k = json_of(
-      run("diagnose " + test::write_temp("inner_place_nolp.txt", without.str()) + args),
-      "without the filter");
+  const Json k =
+      json_of(run("diagnose " + test::write_temp("inner_place_nolp.txt", without.str()) + args),
+              "without the filter");
   const double shift = std::remainder(pos->number() - k.find("position_deg")->number(), 360);
   EXPECT_GE(shift, 1.5) << pos->number() << " " << k.find("position_deg")->number();
   EXPECT_LE(shift, 5.0) << pos->number() << " " << k.find("position_deg")->number();
