@@ -6,7 +6,6 @@
 
 #include "bearing/load_zone_fit.h"
 #include "core/circular_index.h"
-#include "core/constants.h"
 #include "dsp/detect_laws.h"
 #include "dsp/pulses.h"
 #include "dsp/stats.h"

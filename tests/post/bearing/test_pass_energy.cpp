@@ -24,29 +24,39 @@ using ohmdem::test::kPi;
 
 constexpr double kF = 200, kFb = 1000, kTau = 300e-6;  // passes (Hz), ring (Hz), its decay (s)
 
-// Passes at kF, ring amplitude a, steady tone 0.05 at 1234 Hz (below the smallest ring's
-// peak: the passes are found on the rings), noise rms: 0.3 s (60 passes)
-// at 1 MHz acquired at `rate` through dsp/acquire's anti-alias filter (0.4 x rate), which keeps
-// nearly all of the 1 kHz ring's energy (its spectrum is ~0.5 kHz wide).
-std::vector<double> record(double a, double rate, double noise, unsigned seed = 1)
+// x(t, s) sampled 1 MHz for `seconds` (s: the time since the defect pass began, passes at kF
+// from t = -0.3 / kF) and acquired at `rate` through dsp/acquire's anti-alias filter
+// (0.4 x rate, order 4) with white noise.
+template <class Wave>
+Signal acquired(Wave x, double seconds, double rate, double noise, unsigned seed = 1)
 {
   const double fs = 1e6;
-  const auto n = static_cast<std::size_t>(0.3 * fs);
+  const auto n = static_cast<std::size_t>(seconds * fs);
   Signal in;
   in.rate = fs;
   in.x.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const double t = static_cast<double>(i) / fs;
-    const double s = std::fmod(t * kF + 0.3, 1.0) / kF;  // since the pass began
-    in.x[i] =
-        0.05 * std::sin(2 * kPi * 1234 * t) + a * std::exp(-s / kTau) * std::sin(2 * kPi * kFb * s);
+    in.x[i] = x(t, std::fmod(t * kF + 0.3, 1.0) / kF);
   }
   AcquireSettings acq;
   acq.lowpass = 0.4 * rate;
   acq.rate = rate;
   acq.noise_rms = noise;
   acq.seed = seed;
-  return acquire(in, acq).signal.x;
+  return acquire(in, acq).signal;
+}
+
+// Passes at kF, ring amplitude a, steady tone 0.05 at 1234 Hz (below the smallest ring's
+// peak: the passes are found on the rings), noise rms: 0.3 s (60 passes), whose filter keeps
+// nearly all of the 1 kHz ring's energy (its spectrum is ~0.5 kHz wide).
+std::vector<double> record(double a, double rate, double noise, unsigned seed = 1)
+{
+  auto wave = [a](double t, double s) {
+    return 0.05 * std::sin(2 * kPi * 1234 * t) +
+           a * std::exp(-s / kTau) * std::sin(2 * kPi * kFb * s);
+  };
+  return acquired(wave, 0.3, rate, noise, seed).x;
 }
 
 double theory(double a)
@@ -133,24 +143,13 @@ TEST(PassEnergy, NotDeterminedSaysWhy)
 constexpr double kShaft = 37.3;  // Hz: kF / kShaft = 5.36 passes a turn, as a BPFI
 Signal inner_record(double position_deg, double rate)
 {
-  const double fs = 1e6;
-  const auto n = static_cast<std::size_t>(fs);
-  Signal in;
-  in.rate = fs;
-  in.x.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) / fs;
-    const double s = std::fmod(t * kF + 0.3, 1.0) / kF;  // since the pass began
+  auto wave = [position_deg](double t, double s) {
     // the defect's angle from the load direction when the pass began
     const double at = 2 * kPi * kShaft * (t - s) + (position_deg - 90) * kPi / 180;
     const double c = std::max(std::cos(at), 0.0);
-    in.x[i] = std::pow(c, 1.5) * std::exp(-s / 300e-6) * std::sin(2 * kPi * 3000 * s);
-  }
-  AcquireSettings acq;
-  acq.lowpass = 0.4 * rate;
-  acq.rate = rate;
-  acq.noise_rms = 0.01;
-  return acquire(in, acq).signal;
+    return std::pow(c, 1.5) * std::exp(-s / 300e-6) * std::sin(2 * kPi * 3000 * s);
+  };
+  return acquired(wave, 1.0, rate, 0.01);
 }
 
 TEST(PassEnergy, InnerDefectPlacedFromTheLoadZoneWithTheShaftAngle)
