@@ -70,6 +70,20 @@ def steady_instructions(wd, mode):
     return (instructions(wd, mode, 0.017) - instructions(wd, mode, 0.015)) / 2000
 
 
+def kernel_set():
+    """The form of the batched contact kernel this CPU runs (race_admittance_batch.cpp takes
+    the best of AVX-512 F+DQ, AVX2, SSE2); valgrind reports no AVX-512, so callgrind's
+    instructions are always the AVX2 form's where the CPU has AVX2."""
+    try:
+        flags = next((ln.split(":", 1)[1].split() for ln in open("/proc/cpuinfo")
+                      if ln.startswith("flags")), [])
+    except OSError:
+        flags = []
+    if "avx2" in flags and "avx512f" in flags and "avx512dq" in flags:
+        return "AVX-512 (eight lanes)"
+    return "AVX2 (four lanes)" if "avx2" in flags else "SSE2 (four lanes)"
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--steps", type=int, default=20000)
@@ -103,7 +117,7 @@ def main():
 
     print(f"SKF 6208, F = 320 N, 500 rad/s, {a.steps} steps, one core; wall: fastest of "
           f"{a.rounds} interleaved runs; instructions: callgrind, the first 2000 steps and "
-          f"steady rolling")
+          f"steady rolling; batched contact kernel: {kernel_set()}")
     print(f"{'mode':<11} {'s/step':>9} {'x mech':>7} {'x dry':>6} {'eval/mech':>10} "
           f"{'instr/step':>11} {'x dry':>6} {'eval/mech':>10} {'steady':>9} {'x dry':>6}")
     mech, mech_ir = t["mechanics"], ir.get("mechanics")

@@ -22,7 +22,7 @@
 
 namespace ohmdem {
 
-// g(s) in powers of s, constant term first (erfc_fast; common/lanes4.h users share it).
+// g(s) in powers of s, constant term first (erfc_fast; common/lanes.h users share it).
 inline constexpr double kErfcG[22] = {
     -0.6717940840566903,     0.6726432239778217,    0.047343306841332665,
     -0.04689561024571166,    -0.009872689339502133, 0.008824938935263605,

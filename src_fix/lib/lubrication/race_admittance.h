@@ -89,11 +89,14 @@ class RaceAdmittance {
     contact(fn, speed, g_dry, recess, c);
     return c;
   }
-  // The batch's contacts into out[0..size), four at a time (race_admittance_batch.cpp):
-  // out[k] is contact(fn[k], speed[k], g_dry[k], recess[k]) bit for bit, whatever its place
-  // in the batch and the batch's size. Compiled for SSE2 and AVX2, the best the CPU has taken
-  // unless `isa` asks for SSE2 (the tests compare both).
-  enum class Isa { best, sse2 };
+  // The batch's contacts into out[0..size), four or eight at a time
+  // (race_admittance_batch.cpp): out[k] is contact(fn[k], speed[k], g_dry[k], recess[k]) bit
+  // for bit, whatever its place in the batch and the batch's size. Compiled for SSE2, AVX2
+  // and AVX-512 (F and DQ), the best the CPU has taken unless `isa` asks for AVX2 or SSE2 at
+  // most (the tests compare all three).
+  enum class Isa { best, avx2, sse2 };
+  // The set Isa::best runs with on this CPU: "avx512", "avx2" or "sse2" (for logs).
+  static const char *best_isa();
   void contacts(const ContactBatch &in, ContactAdmittance *out, Isa isa = Isa::best) const;
   // The smallest film.minimum and lambda of a race's records (infinity: no record), taken
   // four wide where the records are (the caller's loop need not visit them). min is exact and
@@ -144,8 +147,9 @@ class RaceAdmittance {
   // The constants the batched form reads, each four times over (its vector operands: one load
   // per use rather than a broadcast), laid out as race_admittance_batch.cpp's RaceConstants;
   // set at the end of the constructor by splat_constants (that file).
-  static constexpr int kSplat = 4 * 56;
+  static constexpr int kSplat = 4 * 56, kSplat8 = 8 * 56;
   alignas(32) std::array<double, kSplat> splat_{};
+  alignas(64) std::array<double, kSplat8> splat8_{};  // eight times over (AVX-512's groups)
   static void splat_constants(RaceAdmittance &r);
   // This race's constants, numbered per construction (a copy keeps the number: the same
   // constants); 0 for a default one.

@@ -3,7 +3,7 @@
 // form the bearing evaluates at every step: each contact's record must be RaceAdmittance::contact's
 // bit for bit (the scalar path, itself held to the budget against contact_admittance() by
 // test_race_admittance.cpp), whatever its lane, its batch's size and its neighbours, in both
-// compiled forms (SSE2, AVX2); and within the accuracy budget of doc/lubricated_contact.md
+// compiled forms (SSE2, AVX2, AVX-512: the last two where the CPU has them); and within the accuracy budget of doc/lubricated_contact.md
 // "Speed" (1e-10 relative on h, C and G; held here to 1e-12) against contact_admittance(), the
 // reference.
 #include <gtest/gtest.h>
@@ -89,7 +89,7 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
       c.g_dry = u01(rng) < 0.15 ? 0.0 : logu(1e-3, 10.0);
       c.recess = u01(rng) < 0.33 ? logu(1e-8, 1e-5) : 0.0;
     }
-    for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+    for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
       const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
       // The bearing's call (this race, no other) also gives the records' smallest films.
       ContactBatch in;
@@ -108,7 +108,7 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
         const Case &c = cases[k];
         differ += !same_bits(out[k], fast.contact(c.fn, c.speed, c.g_dry, c.recess));
         differ += !same_bits(both[k], out[k]);
-        if (isa == RaceAdmittance::Isa::sse2) continue;
+        if (isa != RaceAdmittance::Isa::best) continue;
         ++contacts;
         const ContactAdmittance &a = out[k];
         const ContactInput in = input(r, c.fn, c.speed, c.g_dry, c.recess);
@@ -126,10 +126,10 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
     }
   }
   std::printf(
-      "%d contacts: %d records differ from the scalar path; worst relative differences against "
+      "%d contacts (Isa::best: %s): %d records differ from the scalar path; worst relative differences against "
       "contact_admittance: h_c %.1e, h_min %.1e, C_hertz %.1e, C_outer %.1e, G %.1e; erfc's "
       "range in %d, over pits %d, ellipses past the wetted circle %d\n",
-      contacts, differ, worst[0], worst[1], worst[2], worst[3], worst[4], erfc_range, recessed,
+      contacts, RaceAdmittance::best_isa(), differ, worst[0], worst[1], worst[2], worst[3], worst[4], erfc_range, recessed,
       beyond);
   EXPECT_EQ(differ, 0);
   for (double w : worst) EXPECT_LT(w, 1e-12);
@@ -139,8 +139,9 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
   EXPECT_GT(beyond, 100);
 }
 
-// Every edge case in every lane of batches of 1 to 9 among other contacts (padding included):
-// the same bits as alone and as the scalar path; never NaN for a loaded contact.
+// Every edge case in every lane of batches of 1 to 17 among other contacts (padding included;
+// AVX-512's groups of eight and the four-lane ones after them): the same bits as alone and as
+// the scalar path; never NaN for a loaded contact.
 TEST(RaceAdmittanceBatch, AContactsRecordDoesNotDependOnItsLaneOrBatch)
 {
   const std::vector<Case> edge = edge_cases();
@@ -153,12 +154,12 @@ TEST(RaceAdmittanceBatch, AContactsRecordDoesNotDependOnItsLaneOrBatch)
       if (c.fn > 0.0) {
         EXPECT_FALSE(std::isnan(scalar.g) || std::isnan(scalar.capacitance())) << "case " << e;
       }
-      for (std::size_t size = 1; size <= 9; ++size) {
+      for (std::size_t size = 1; size <= 17; ++size) {
         for (std::size_t lane = 0; lane < size; ++lane) {
           std::vector<Case> cases(size);
           for (std::size_t k = 0; k < size; ++k) cases[k] = edge[(e + 1 + k) % edge.size()];
           cases[lane] = c;
-          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
             const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
             EXPECT_TRUE(same_bits(out[lane], scalar))
                 << "case " << e << " r_wet " << r_wet << " batch " << size << " lane " << lane;
@@ -180,9 +181,9 @@ TEST(RaceAdmittanceBatch, AnEmptyBatchWritesNothing)
 }
 
 // Both races at once (the bearing's call): every record is its race's scalar record bit for bit,
-// for every pair of batch sizes 0 to 9 (their last contacts sharing a group where they fit, each
+// for every pair of batch sizes 0 to 13 (their last contacts sharing a group where they fit, each
 // lane with its own race's constants: two races of different geometry and oil film here), the
-// edge cases in the shared group's lanes included, in both compiled forms.
+// edge cases in the shared group's lanes included, in every compiled form.
 TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
 {
   const std::vector<Case> edge = edge_cases();
@@ -190,8 +191,8 @@ TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
   // eps_r: the races' own (the permittivity as one fraction), above 9.5 for both (its eight
   // divisions), and one of each (never in one group)
   for (const auto &eps : {std::pair{0.0, 0.0}, std::pair{12.0, 15.0}, std::pair{0.0, 12.0}})
-    for (std::size_t na = 0; na <= 9; ++na)
-      for (std::size_t nb = 0; nb <= 9; ++nb)
+    for (std::size_t na = 0; na <= 13; ++na)
+      for (std::size_t nb = 0; nb <= 13; ++nb)
         for (std::size_t shift = 0; shift < edge.size(); shift += 4) {
           RaceInput ra = race(3, 1e-3), rb = race(4, 1e-5);  // rb: the wetted circle inside
           if (eps.first > 0) ra.eps_r = eps.first;
@@ -204,7 +205,7 @@ TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
           for (const Case &c : ca) ia.add(c.fn, c.speed, c.g_dry, c.recess);
           for (const Case &c : cb) ib.add(c.fn, c.speed, c.g_dry, c.recess);
           shared += na % 4 && nb % 4 && na % 4 + nb % 4 <= 4 && (eps.first > 0) == (eps.second > 0);
-          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::sse2}) {
+          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
             std::vector<ContactAdmittance> oa(na + 1), ob(nb + 1);
             oa[na].g = ob[nb].g = 42.0;  // one past the end: never written
             const auto minima = RaceAdmittance::contacts(fa, ia, oa.data(), fb, ib, ob.data(), isa);
@@ -230,5 +231,5 @@ TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
           }
         }
   EXPECT_EQ(differ, 0);
-  EXPECT_GT(shared, 200);  // the shared group was exercised, in both forms
+  EXPECT_GT(shared, 200);  // the shared group was exercised, in every form
 }
