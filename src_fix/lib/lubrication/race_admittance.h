@@ -121,7 +121,7 @@ class RaceAdmittance {
   const RaceInput &input() const { return in_; }
 
  private:
-  friend struct RaceLanes;  // the batched form's lanes (race_admittance_batch.cpp)
+  friend struct RaceLanes;  // the batched form's lanes (race_lanes.h)
   RaceInput in_;
   double central_ = 0, minimum_ = 0;  // Hamrock-Dowson prefactor times ellipticity factor
   double ell_central_ = 0, ell_minimum_ = 0;
@@ -145,8 +145,8 @@ class RaceAdmittance {
   bool rational_ = false;
   double permittivity(double q0) const;
   // The constants the batched form reads, each four times over (its vector operands: one load
-  // per use rather than a broadcast), laid out as race_admittance_batch.cpp's RaceConstants;
-  // set at the end of the constructor by splat_constants (that file).
+  // per use rather than a broadcast), laid out as race_lanes.h's RaceConstants; set at the end
+  // of the constructor by splat_constants (race_admittance_batch.cpp).
   static constexpr int kSplat = 4 * 56, kSplat8 = 8 * 56;
   alignas(32) std::array<double, kSplat> splat_{};
   alignas(64) std::array<double, kSplat8> splat8_{};  // eight times over (AVX-512's groups)
