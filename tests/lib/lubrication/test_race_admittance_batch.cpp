@@ -2,10 +2,10 @@
 // RaceAdmittance::contacts (src_fix/lib/lubrication/race_admittance_batch.cpp), the batched
 // form the bearing evaluates at every step: each contact's record must be RaceAdmittance::contact's
 // bit for bit (the scalar path, itself held to the budget against contact_admittance() by
-// test_race_admittance.cpp), whatever its lane, its batch's size and its neighbours, in both
-// compiled forms (SSE2, AVX2, AVX-512: the last two where the CPU has them); and within the accuracy budget of doc/lubricated_contact.md
-// "Speed" (1e-10 relative on h, C and G; held here to 1e-12) against contact_admittance(), the
-// reference.
+// test_race_admittance.cpp), whatever its lane, its batch's size and its neighbours, in every
+// compiled form (SSE2, AVX2, AVX-512: the last two where the CPU has them); and within the
+// accuracy budget of doc/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; held
+// here to 1e-12) against contact_admittance(), the reference.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -89,7 +89,8 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
       c.g_dry = u01(rng) < 0.15 ? 0.0 : logu(1e-3, 10.0);
       c.recess = u01(rng) < 0.33 ? logu(1e-8, 1e-5) : 0.0;
     }
-    for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
+    for (const auto isa :
+         {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
       const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
       // The bearing's call (this race, no other) also gives the records' smallest films.
       ContactBatch in;
@@ -126,11 +127,12 @@ TEST(RaceAdmittanceBatch, IsTheScalarBitForBitAndWithinTheBudget)
     }
   }
   std::printf(
-      "%d contacts (Isa::best: %s): %d records differ from the scalar path; worst relative differences against "
+      "%d contacts (Isa::best: %s): %d records differ from the scalar path; worst relative "
+      "differences against "
       "contact_admittance: h_c %.1e, h_min %.1e, C_hertz %.1e, C_outer %.1e, G %.1e; erfc's "
       "range in %d, over pits %d, ellipses past the wetted circle %d\n",
-      contacts, RaceAdmittance::best_isa(), differ, worst[0], worst[1], worst[2], worst[3], worst[4], erfc_range, recessed,
-      beyond);
+      contacts, RaceAdmittance::best_isa(), differ, worst[0], worst[1], worst[2], worst[3],
+      worst[4], erfc_range, recessed, beyond);
   EXPECT_EQ(differ, 0);
   for (double w : worst) EXPECT_LT(w, 1e-12);
   EXPECT_GT(contacts, 20000);
@@ -159,7 +161,8 @@ TEST(RaceAdmittanceBatch, AContactsRecordDoesNotDependOnItsLaneOrBatch)
           std::vector<Case> cases(size);
           for (std::size_t k = 0; k < size; ++k) cases[k] = edge[(e + 1 + k) % edge.size()];
           cases[lane] = c;
-          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
+          for (const auto isa :
+               {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
             const std::vector<ContactAdmittance> out = batched(fast, cases, isa);
             EXPECT_TRUE(same_bits(out[lane], scalar))
                 << "case " << e << " r_wet " << r_wet << " batch " << size << " lane " << lane;
@@ -205,7 +208,8 @@ TEST(RaceAdmittanceBatch, BothRacesAtOnceAreEachRacesScalarRecords)
           for (const Case &c : ca) ia.add(c.fn, c.speed, c.g_dry, c.recess);
           for (const Case &c : cb) ib.add(c.fn, c.speed, c.g_dry, c.recess);
           shared += na % 4 && nb % 4 && na % 4 + nb % 4 <= 4 && (eps.first > 0) == (eps.second > 0);
-          for (const auto isa : {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
+          for (const auto isa :
+               {RaceAdmittance::Isa::best, RaceAdmittance::Isa::avx2, RaceAdmittance::Isa::sse2}) {
             std::vector<ContactAdmittance> oa(na + 1), ob(nb + 1);
             oa[na].g = ob[nb].g = 42.0;  // one past the end: never written
             const auto minima = RaceAdmittance::contacts(fa, ia, oa.data(), fb, ib, ob.data(), isa);
