@@ -362,123 +362,24 @@ struct RaceLanes {
     return fold<kFour>(minimum, lanes);
   }
 
-  // The last contacts of two races in one group: la of race a (from its contact na - la), then
-  // lb of race b, each lane with its race's constants (la, lb >= 1, la + lb <= 4, the same
-  // permittivity form); padding as race a's. Each race's films into its minima, from the
-  // records.
+  // race_admittance_batch.cpp's alone (the AVX-512 file never reads them): the shared group
+  // of two races' last contacts, the race's constants in lanes, and the tails.
+  // The last contacts of two races in one group (la of race a, then lb of race b).
   template <Isa kIsa>
-  static OHMDEM_LANES_INLINE void mixed(const RaceAdmittance &ra, const ContactBatch &ia,
-                                        ContactAdmittance *oa, std::size_t la,
-                                        const RaceAdmittance &rb, const ContactBatch &ib,
-                                        ContactAdmittance *ob, std::size_t lb, double &ma,
-                                        double &mb)
-  {
-    const std::size_t na = ia.size(), nb = ib.size();
-    RaceAdmittance::Blended &blended = ra.blended_;
-    if (blended.partner != rb.serial_ || blended.la != la || blended.lb != lb) {
-      blend(constants(ra), constants(rb), ra.rational_, la, lb, blended.splat.data());
-      blended.partner = rb.serial_;
-      blended.la = la;
-      blended.lb = lb;
-    }
-    const RaceConstants &k = *reinterpret_cast<const RaceConstants *>(blended.splat.data());
-    ContactAdmittance *lanes[kLanes];
-    Group<v4d> grp{&k, {&ra, &ra, &ra, &ra}, nullptr, lanes};
-    v4d fn = splat<v4d>(1.0), speed = splat<v4d>(1.0), g_dry = splat<v4d>(0.0),
-        recess = splat<v4d>(0.0);
-    ContactAdmittance dropped;  // the padding lanes' records
-    for (int l = 0; l < kLanes; ++l) {
-      const bool in_a = static_cast<std::size_t>(l) < la,
-                 in_b = !in_a && static_cast<std::size_t>(l) < la + lb;
-      const ContactBatch &in = in_b ? ib : ia;
-      const std::size_t at = in_b ? nb - lb + (l - la) : na - la + l;
-      grp.race[l] = in_b ? &rb : &ra;
-      lanes[l] = in_a ? oa + at : in_b ? ob + at : &dropped;
-      if (!in_a && !in_b) continue;
-      fn[l] = in.fn()[at];
-      speed[l] = in.speed()[at];
-      g_dry[l] = in.g_dry()[at];
-      recess[l] = in.recess()[at];
-    }
-    four<kIsa>(grp, ra.rational_, fn, speed, g_dry, recess, static_cast<int>(la + lb),
-               static_cast<v4d *>(nullptr));
-    for (std::size_t l = 0; l < la; ++l) fold(ma, oa[na - la + l]);
-    for (std::size_t l = 0; l < lb; ++l) fold(mb, ob[nb - lb + l]);
-  }
-
-  // The constants of a group of la lanes of race a, then lb of race b, lane by lane into `to`
-  // (RaceConstants' layout; wt and dt only for the eight divisions' form: never read in the
-  // one-fraction form). RaceConstants is 56 vectors in a row (static_assert above): its bytes
-  // taken 32 at a time. Plain code (either instruction set's caller): rarely run.
+  static void mixed(const RaceAdmittance &ra, const ContactBatch &ia, ContactAdmittance *oa,
+                    std::size_t la, const RaceAdmittance &rb, const ContactBatch &ib,
+                    ContactAdmittance *ob, std::size_t lb, double &ma, double &mb);
+  // The blended constants of such a group.
   static void blend(const RaceConstants &ka, const RaceConstants &kb, bool rational, std::size_t la,
-                    std::size_t lb, double *to)
-  {
-    v4i from_b = splat<v4d>(0.0) > 1.0;  // no lane
-    for (std::size_t l = la; l < la + lb; ++l) from_b[l] = -1;
-    const char *pa = reinterpret_cast<const char *>(&ka), *pb = reinterpret_cast<const char *>(&kb);
-    char *pk = reinterpret_cast<char *>(to);
-    const std::size_t fields =
-        rational ? offsetof(RaceConstants, wt) / sizeof(v4d) : sizeof(RaceConstants) / sizeof(v4d);
-    for (std::size_t f = 0; f < fields; ++f) {
-      v4d va, vb;
-      __builtin_memcpy(&va, pa + f * sizeof(v4d), sizeof va);
-      __builtin_memcpy(&vb, pb + f * sizeof(v4d), sizeof vb);
-      const v4d v = select(from_b, vb, va);
-      __builtin_memcpy(pk + f * sizeof(v4d), &v, sizeof v);
-    }
-  }
-
+                    std::size_t lb, double *to);
   // The race's constants, each in every lane of V.
   template <class V>
-  static RaceConstantsOf<V> in_lanes(const RaceAdmittance &r)
-  {
-    RaceConstantsOf<V> k;
-    k.a_coef = splat<V>(r.in_.a_coef);
-    k.b_coef = splat<V>(r.in_.b_coef);
-    k.central = splat<V>(r.central_);
-    k.ell_central = splat<V>(r.ell_central_);
-    k.minimum = splat<V>(r.minimum_);
-    k.ell_minimum = splat<V>(r.ell_minimum_);
-    k.inv_sigma = splat<V>(r.inv_sigma_);
-    k.area_coef = splat<V>(r.area_coef_);
-    k.inv_resistivity = splat<V>(r.inv_resistivity_);
-    k.q0_coef = splat<V>(r.q0_coef_);
-    k.sigma = splat<V>(r.in_.sigma);
-    k.r_wet = splat<V>(r.in_.r_wet);
-    k.p = splat<V>(r.p_);
-    k.q = splat<V>(r.q_);
-    k.r2 = splat<V>(r.r2_);
-    k.sp_coef = splat<V>(r.sp_coef_);
-    k.sq_coef = splat<V>(r.sq_coef_);
-    k.hertz_s = splat<V>(r.hertz_s_);
-    k.hertz_y = splat<V>(r.hertz_y_);
-    k.scale = splat<V>(r.scale_);
-    k.eps_const = splat<V>(r.eps_const_);
-    k.eps_pole = splat<V>(r.eps_pole_);
-    k.ga = splat<V>(r.ga_);
-    for (int i = 0; i < 8; ++i) {
-      k.pc[i] = splat<V>(r.pc_[i]);
-      k.wt[i] = splat<V>(r.wt_[i]);
-      k.dt[i] = splat<V>(r.dt_[i]);
-    }
-    for (int i = 0; i < 9; ++i) k.qc[i] = splat<V>(r.qc_[i]);
-    return k;
-  }
-
-  // Whether two races' last contacts go in one group: both have some, they fit, and the races'
-  // permittivity is in the same form.
-  // The contacts a race of n leaves to the shared group: its last n % 4 (AVX-512: its last
-  // n % 8 of 1 to 4 but four, as run() leaves them).
-  static std::size_t tail(Isa isa, std::size_t n)
-  {
-    const std::size_t r = isa == Isa::avx512 ? n % 8 : n % kLanes;
-    return r < kLanes ? r : 0;
-  }
+  static RaceConstantsOf<V> in_lanes(const RaceAdmittance &r);
+  // The contacts a race of n leaves to the shared group.
+  static std::size_t tail(Isa isa, std::size_t n);
+  // Whether two races' last contacts go in one group.
   static bool mixes(const RaceAdmittance &ra, std::size_t la, const RaceAdmittance &rb,
-                    std::size_t lb)
-  {
-    return la > 0 && lb > 0 && la + lb <= kLanes && ra.rational_ == rb.rational_;
-  }
+                    std::size_t lb);
 };
 
 // RaceLanes::run<Isa::avx512> (race_admittance_avx512.cpp): call only where the CPU has
