@@ -48,6 +48,11 @@ if want detectability; then
   /usr/bin/python3 studies/accel_position.py "$WORK/accel_position" > "$OUT/accel_position.log"
   cp "$WORK"/accel_position/accel_position.csv "$WORK"/accel_position/accel_position.md \
      "$OUT/detectability/"
+  echo "== an outer pit's angle from a two-axis accelerometer (issue 26)"
+  /usr/bin/python3 studies/accel_outer_angle.py "$WORK/accel_outer_angle" \
+    > "$OUT/accel_outer_angle.log"
+  cp "$WORK"/accel_outer_angle/accel_outer_angle.csv \
+     "$WORK"/accel_outer_angle/accel_outer_angle.md "$OUT/detectability/"
 fi
 if want runup; then
   echo "== run-up study (order tracking)"

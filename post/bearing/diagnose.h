@@ -65,6 +65,10 @@ struct DiagnoseOptions {
   // flagged record whose impulses are coherent with it and stronger there reads `none`
   // (impulses from the other channel) or `other-bearing` (other_channel.h)
   const Signal *other_channel = nullptr;
+  // The accelerometer's second axis, recorded with this one (same rate and samples), at right
+  // angles to it in the bearing's plane (the record's axis turned +90 deg), or none: with the
+  // record's axis along the load direction, an outer defect's angle from it (event_direction.h)
+  const Signal *across = nullptr;
 };
 
 struct Evidence {

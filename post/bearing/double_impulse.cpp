@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/event_direction.h"
 #include "bearing/pass_energy.h"
 #include "bearing/race_sizing.h"
 #include "core/constants.h"
@@ -282,6 +283,7 @@ LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
   const DoubleImpulseSize e = size_from_double_impulse(s.x, s.rate, r.f, r.defect, g.nb, {});
   l = take_size(l, r, g, e);
   place_inner_by_pass_energy(s, r, o, l);
+  place_outer_by_event_direction(s, r, o, l);
   return l;
 }
 

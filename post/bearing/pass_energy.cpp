@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "bearing/diagnose.h"
+#include "bearing/event_direction.h"
 #include "bearing/load_zone_fit.h"
 #include "bearing/race_sizing.h"
 #include "core/constants.h"
@@ -19,22 +20,13 @@ std::size_t smoothing_samples(double rate)
   return static_cast<std::size_t>(std::max(1.0, std::round(1e-4 * rate)));
 }
 
-PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
-                           const PassEnergySettings &s)
+PassWindows pass_windows(const std::vector<double> &e, double rate, double f)
 {
-  if (s.groups < 3 || !(s.confidence > 0 && s.confidence < 1) || !(rate > 0 && f > 0))
-    throw std::invalid_argument(
-        "pass energy: settings out of range (at least 3 groups, confidence in (0, 1), rate "
-        "and defect frequency > 0)");
-  PassEnergies out;
+  PassWindows out;
   const double period = rate / f;  // samples per pass
   const auto w = static_cast<std::size_t>(std::floor(period / 6));
-  if (w < 1 || x.size() < 4 * static_cast<std::size_t>(period)) return out;
-  double mean = 0;
-  for (double v : x) mean += v;
-  mean /= static_cast<double>(x.size());
-  std::vector<double> e(x.size());
-  for (std::size_t i = 0; i < x.size(); ++i) e[i] = (x[i] - mean) * (x[i] - mean);
+  out.half = w;
+  if (w < 1 || e.size() < 4 * static_cast<std::size_t>(period)) return out;
   // the events are found on the squared record smoothed over 0.1 ms (one sample at 10 kHz), so
   // that one noisy sample does not place a window
   const std::size_t k = smoothing_samples(rate);
@@ -54,7 +46,7 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
     return sum / rate;
   };
   const double end =
-      static_cast<double>(x.size()) - period / 2 - period / 12 - static_cast<double>(w) - 2;
+      static_cast<double>(e.size()) - period / 2 - period / 12 - static_cast<double>(w) - 2;
   // the first pass: the strongest event of the first period
   std::size_t c = strongest(static_cast<double>(w) + period / 2, period / 2);
   // the last pass whose event stood out (twice its background's energy and within 20 dB of
@@ -70,7 +62,8 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
     const auto b = static_cast<std::size_t>(std::lround(static_cast<double>(c) + period / 2));
     const double ec = energy(c), eb = energy(b);
     out.energy.push_back(ec - eb);
-    out.at.push_back(static_cast<double>(c));
+    out.at.push_back(c);
+    out.background.push_back(b);
     strongest_pass = std::max(strongest_pass, ec - eb);
     if (ec > 2 * eb && ec - eb >= 1e-2 * strongest_pass) {
       anchor = static_cast<double>(c);
@@ -78,9 +71,33 @@ PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
     }
     ++since;
     const double next = anchor + since * period;
-    if (next + period / 4 + static_cast<double>(w) + 1 >= static_cast<double>(x.size())) break;
+    if (next + period / 4 + static_cast<double>(w) + 1 >= static_cast<double>(e.size())) break;
     c = strongest(next, period / 4);
   }
+  return out;
+}
+
+void check_pass_settings(const PassEnergySettings &s, double rate, double f)
+{
+  if (s.groups < 3 || !(s.confidence > 0 && s.confidence < 1) || !(rate > 0 && f > 0))
+    throw std::invalid_argument(
+        "pass energy: settings out of range (at least 3 groups, confidence in (0, 1), rate "
+        "and defect frequency > 0)");
+}
+
+PassEnergies pass_energies(const std::vector<double> &x, double rate, double f,
+                           const PassEnergySettings &s)
+{
+  check_pass_settings(s, rate, f);
+  PassEnergies out;
+  double mean = 0;
+  for (double v : x) mean += v;
+  mean /= static_cast<double>(x.size());
+  std::vector<double> e(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) e[i] = (x[i] - mean) * (x[i] - mean);
+  const PassWindows pw = pass_windows(e, rate, f);
+  out.energy = pw.energy;
+  out.at.assign(pw.at.begin(), pw.at.end());
   const std::size_t n = out.energy.size();
   if (n < s.groups) return out;
   out.mean = 0;
@@ -178,6 +195,7 @@ LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
   l.pass_energy = e.energy;
   l = take_size(l, r, o.geometry, e);
   place_inner_by_pass_energy(s, r, o, l);
+  place_outer_by_event_direction(s, r, o, l);
   return l;
 }
 

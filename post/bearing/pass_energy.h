@@ -28,6 +28,21 @@ struct PassEnergySettings {
   double curve_rel_error = 0;
 };
 
+// The passes' windows on e, a record's squared deviation from its mean (or its sum over a
+// sensor's axes): each centred on the pass's strongest event (e smoothed over
+// smoothing_samples), searched within a quarter period of where the period puts it from the last
+// pass whose event stood out; its background the window half a period later; both +-half
+// samples. energy: the window's sum of e over the rate minus the background's.
+struct PassWindows {
+  std::vector<std::size_t> at, background;
+  std::size_t half = 0;
+  std::vector<double> energy;
+};
+PassWindows pass_windows(const std::vector<double> &e, double rate, double f);
+// Throws std::invalid_argument for settings out of range (at least 3 groups, confidence in
+// (0, 1), rate and frequency > 0).
+void check_pass_settings(const PassEnergySettings &s, double rate, double f);
+
 // Per-pass energies: the window is +-period/6 around the pass's strongest event, the energy
 // sum(x^2)/rate of the mean-removed record minus the same from the window half a period later
 // (the background, which never overlaps a pass's window).

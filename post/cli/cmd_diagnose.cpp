@@ -140,6 +140,7 @@ int run_diagnose(const std::vector<std::string> &argv)
            "end, when the record is the fan end's): a record whose impulses are at its defect "
            "frequencies reads 'other-bearing', not 'unidentified'");
   add_other_channel_options(a);
+  add_across_options(a);
   a.option("--mains", "LIST",
            "mains frequencies (Hz, comma-separated) whose harmonic combs are masked where they "
            "stand out, or 'none'",
@@ -309,6 +310,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   }
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
   if (other_channel) o.other_channel = &*other_channel;
+  const std::optional<Signal> across = across_input(a, meta, s);
+  if (across && !double_impulse && !accel_curve)
+    throw Error(
+        "diagnose: --across-column is read by the accelerometer size methods (--size-method "
+        "double-impulse or accel-curve)");
+  if (across) o.across = &*across;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
   if (accel_curve && (in_orders || a.has("--pulse-height") || a.has("--width-curve")))
     throw Error(
@@ -374,6 +381,9 @@ int run_diagnose(const std::vector<std::string> &argv)
                                                      : " (--band)"));
   if (other_channel)
     m.emplace_back("other channel", other_channel->name + " (the other bearing's sensor)");
+  if (across)
+    m.emplace_back("second axis",
+                   across->name + " (the sensor's axis at +90 deg from the record's)");
   if (o.baseline)
     m.emplace_back("baseline", a.get("--baseline") + " (at " + format_number(o.baseline->rate, 10) +
                                    " Hz, the record's rate)");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// diagnose's second channel (issue 25): the other bearing's sensor, recorded with the record,
-// as another variable of the same file (--other-channel) or another file (--other-file).
+// diagnose's second channels, recorded with the record: the other bearing's sensor (issue 25),
+// as another variable of the same file (--other-channel) or another file (--other-file); the
+// accelerometer's second axis (issue 26, --across-column).
 #ifndef OHMDEM_POST_CLI_OTHER_CHANNEL_INPUT_H
 #define OHMDEM_POST_CLI_OTHER_CHANNEL_INPUT_H
 
@@ -18,6 +19,11 @@ void add_other_channel_options(Args &a);
 // The other channel, read with the record's input options and time window; nothing when neither
 // option is given. Refused when it does not hold the record's rate and number of samples.
 std::optional<Signal> other_channel_input(const Args &a, const RunMetadata &meta, const Signal &s);
+
+// --across-column NAME: the accelerometer's second axis in the record's file (issue 26).
+void add_across_options(Args &a);
+// That axis, read and checked as the other channel; nothing without the option.
+std::optional<Signal> across_input(const Args &a, const RunMetadata &meta, const Signal &s);
 
 }  // namespace ohmdem::post::cli
 

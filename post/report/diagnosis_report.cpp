@@ -289,7 +289,7 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
          interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
                        "deg") +
          " from the " + d.located.position_reference +
-         (std::isfinite(d.located.position_modulo_deg) ? ", " + d.located.position_note : ""));
+         (d.located.position_note.empty() ? "" : ", " + d.located.position_note));
   else if ((chosen || d.located.valid) && !d.located.position_note.empty())
     line("position:      " + d.located.position_note);
   if ((chosen || d.located.valid) && !d.located.depth_note.empty())
