@@ -7,8 +7,8 @@ in the bearing's plane points along it. Outer pits of the sizing study's scene (
 rad/s, radial load, 50 um deep) at places from the load direction, both ring axes (the deck's
 acc_along and acc_across) through the accelerometer chain of studies/sizing_map.py (10 mV/g,
 +-5 V, 16 bits, anti-alias filter 0.4 x rate, the two noise levels; each axis its own noise
-seed) in one record, diagnosed with `--size-method accel-curve --across-column V2` on the
-committed outer curves (doc/report/detectability/accel_curves/).
+seed) in one record (`acquire --across-column`), diagnosed with `--size-method accel-curve
+--across-column V2` on the committed outer curves (doc/report/detectability/accel_curves/).
 
 Two sets: 'tuning', the cases whose largest error set the method's allowance for the ring's
 response (EventDirectionSettings::model_deg), and 'held-out', sizes and places not used for it.
@@ -43,38 +43,17 @@ def grid(tiny):
             "rates": [1e4, 2e4, 5e4], "noise": ["low", "high"]}
 
 
-def acquire_axis(sim, column, rate, noise, seed, dest):
-    common.post(["acquire", "--column", column, "--scale", repr(sizing_map.ACC_SENSITIVITY),
-                 "--from", repr(sizing.T_FROM), "--lowpass", repr(0.4 * rate), "--order", "4",
-                 "--rate", repr(rate), "--bits", "16", "--range", "-5", "5",
-                 "--noise-density", repr(sizing_map.ACC_NOISE[noise] * sizing_map.ACC_SENSITIVITY),
-                 "--seed", str(seed), "--name", "V", "--unit", "V", "--output", dest,
-                 os.path.join(sim, "signal.txt")], who="accel_outer_angle")
-
-
 def acquire(sim, rate, noise, dest):
-    """Both axes through the chain (noise seeds 1 and 2) as one record: time V V2, the first's
-    header (its chain). Written whole, then renamed: a stopped run leaves no short record."""
-    if os.path.exists(dest):
-        return dest
-    along, across = dest + ".along", dest + ".across"
-    acquire_axis(sim, "acc_along", rate, noise, 1, along)
-    acquire_axis(sim, "acc_across", rate, noise, 2, across)
-    part = dest + ".part"
-    with open(along) as f, open(across) as g, open(part, "w") as h:
-        second = [line.split()[1] for line in g if not line.startswith("#")]
-        k = 0
-        for line in f:
-            if line.startswith("# time"):
-                h.write("# time V V2\n")
-            elif line.startswith("#"):
-                h.write(line)
-            else:
-                h.write(line.rstrip("\n") + " " + second[k] + "\n")
-                k += 1
-    os.replace(part, dest)
-    os.remove(along)
-    os.remove(across)
+    """Both ring axes through the chain into one record (time V V2): `acquire --across-column`,
+    the second axis with its own noise (seed 2)."""
+    if not os.path.exists(dest):
+        common.post(["acquire", "--column", "acc_along", "--across-column", "acc_across",
+                     "--scale", repr(sizing_map.ACC_SENSITIVITY), "--from", repr(sizing.T_FROM),
+                     "--lowpass", repr(0.4 * rate), "--order", "4", "--rate", repr(rate),
+                     "--bits", "16", "--range", "-5", "5", "--noise-density",
+                     repr(sizing_map.ACC_NOISE[noise] * sizing_map.ACC_SENSITIVITY),
+                     "--seed", "1", "--name", "V", "--across-name", "V2", "--unit", "V",
+                     "--output", dest, os.path.join(sim, "signal.txt")], who="accel_outer_angle")
     return dest
 
 

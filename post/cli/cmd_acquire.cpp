@@ -3,6 +3,7 @@
 // sampling, noise, ADC), written as a '#'-headed "time value" table the other commands read.
 #include <cmath>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/common.h"
@@ -57,6 +58,19 @@ AcquireSettings settings(const Args &a)
 }
 
 // The options of acquire (run_acquire parses them).
+// A value column's name: one word, not 'time' (the time column's).
+std::string column_name(const Args &a, const std::string &option, const std::string &input_name)
+{
+  const std::string name = a.has(option) ? a.get(option) : input_name;
+  if (name.empty() || name.find_first_of(" \t\r\n,#\"") != std::string::npos)
+    throw Error("option " + option +
+                " expects one word without blanks, commas, quotes or '#', got '" + name + "'");
+  if (name == "time")
+    throw Error("the value column cannot be called 'time' (the time column's name): give " +
+                option);
+  return name;
+}
+
 void declare_options(Args &a)
 {
   add_input_options(a, "--input-rate");
@@ -82,8 +96,14 @@ void declare_options(Args &a)
   a.option("--seed", "N", "seed of the noise (same seed, same record)", "1");
   a.option("--bits", "N", "ADC resolution (1..32); needs --range");
   a.option("--range", "LO HI", "ADC input range (output unit); needs --bits", "", 2);
+  a.option("--across-column", "NAME",
+           "the sensor's second axis, another column or MAT variable of FILE (e.g. acc_across "
+           "beside acc_along): through the same chain with its own noise (seed N + 1), written "
+           "as a third column; diagnose reads it with --across-column");
   a.section("Output");
   a.option("--name", "NAME", "name of the value column (default: the input column's)");
+  a.option("--across-name", "NAME",
+           "name of the second axis's column (default: its input column's)");
   a.option("--format", "FMT", "table ('# time NAME' header, blank-separated) | csv", "table");
   a.option("--output", "FILE", "write to FILE instead of standard output");
   a.option("--unit", "UNIT", "unit of the output, written in the metadata");
@@ -111,17 +131,41 @@ int run_acquire(const std::vector<std::string> &argv)
   const AcquireSettings set = settings(a);
   const RunMetadata meta = run_metadata(a);
   const Signal s = load_input(a, meta, 4, false, "--input-rate");
-  const std::string name = a.has("--name") ? a.get("--name") : s.name;
-  if (name.empty() || name.find_first_of(" \t\r\n,#\"") != std::string::npos)
-    throw Error("option --name expects one word without blanks, commas, quotes or '#', got '" +
-                name + "'");
-  if (name == "time")
-    throw Error("the value column cannot be called 'time' (the time column's name): give --name");
+  const std::string name = column_name(a, "--name", s.name);
   const Acquisition q = acquire(s, set);
+  // the second axis: the same chain, its own noise
+  std::optional<Acquisition> q2;
+  std::string name2;
+  if (a.has("--across-column")) {
+    InputOptions io = input_options(a, "--input-rate");
+    io.column = a.get("--across-column");
+    io.min_samples = 4;
+    const Signal s2 = load_named(io, meta, "--input-rate");
+    if (s2.x.size() != s.x.size() || s2.rate != s.rate || s2.t0 != s.t0)
+      throw Error("acquire: --across-column " + io.column + " holds " +
+                  std::to_string(s2.x.size()) + " samples at " + format_number(s2.rate, 10) +
+                  " Hz, the signal " + std::to_string(s.x.size()) + " at " +
+                  format_number(s.rate, 10) + " Hz: the two axes must be recorded together");
+    if (s2.x == s.x)
+      throw Error("acquire: --across-column " + io.column +
+                  " holds the signal's own samples: name the sensor's second axis");
+    name2 = column_name(a, "--across-name", s2.name);
+    if (name2 == name)
+      throw Error("acquire: the two columns are both called '" + name +
+                  "': give --name or --across-name");
+    AcquireSettings set2 = set;
+    set2.seed = set.seed + 1;
+    q2 = acquire(s2, set2);
+  } else if (a.has("--across-name")) {
+    throw Error("acquire: --across-name needs --across-column (it names that column)");
+  }
   Output out(a);
   if (out.format() == OutputFormat::Json)
     throw Error("option --format expects table|csv for acquire (the other commands read them)");
   for (const auto &w : q.warnings) std::cerr << "WARNING: acquire: " << flag_named(w) << "\n";
+  if (q2)
+    for (const auto &w : q2->warnings)
+      std::cerr << "WARNING: acquire: " << name2 << ": " << flag_named(w) << "\n";
 
   AcquisitionContext c;
   c.input_rate = s.rate;
@@ -129,8 +173,13 @@ int run_acquire(const std::vector<std::string> &argv)
   c.input_referred = a.has("--input-referred");
   c.unit = a.get("--unit");
   out.stream() << acquisition_head(ohmdem::version(), s.meta)
-               << flag_named(acquisition_chain(set, q, c))
-               << acquisition_table(q.signal, name, out.format() == OutputFormat::Csv);
+               << flag_named(acquisition_chain(set, q, c));
+  if (q2)
+    out.stream() << "# second axis: " << name2 << " (input " << a.get("--across-column")
+                 << "), the same chain, noise seed " << set.seed + 1 << ", clipped " << q2->clipped
+                 << " of " << q2->signal.size() << "\n";
+  out.stream() << acquisition_table(q.signal, name, q2 ? &q2->signal : nullptr, name2,
+                                    out.format() == OutputFormat::Csv);
   out.stream().flush();
   if (!out.stream()) throw Error("acquire: writing the output failed");
   return 0;

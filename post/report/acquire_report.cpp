@@ -79,14 +79,21 @@ std::string acquisition_chain(const AcquireSettings &s, const Acquisition &q,
   return m;
 }
 
-std::string acquisition_table(const Signal &y, const std::string &name, bool csv)
+std::string acquisition_table(const Signal &y, const std::string &name, const Signal *second,
+                              const std::string &second_name, bool csv)
 {
-  std::string text = csv ? "time," + name + "\n" : "# time " + name + "\n";
   const char sep = csv ? ',' : ' ';
+  std::string text = (csv ? "time," : "# time ") + name;
+  if (second) text += sep + second_name;
+  text += '\n';
   for (std::size_t i = 0; i < y.size(); ++i) {
     text += json_number(y.time(i));
     text += sep;
     text += json_number(y.x[i]);
+    if (second) {
+      text += sep;
+      text += json_number(second->x[i]);
+    }
     text += '\n';
   }
   return text;

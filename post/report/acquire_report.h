@@ -28,8 +28,10 @@ std::string acquisition_head(const std::string &version, const MetaList &input_m
 std::string acquisition_chain(const AcquireSettings &s, const Acquisition &q,
                               const AcquisitionContext &c);
 
-// The column header and one "time value" row per sample of `y`.
-std::string acquisition_table(const Signal &y, const std::string &name, bool csv);
+// The column header and one "time value" row per sample of `y`; with `second` (the sensor's
+// second axis, sampled with y), "time value second" rows.
+std::string acquisition_table(const Signal &y, const std::string &name, const Signal *second,
+                              const std::string &second_name, bool csv);
 
 }  // namespace ohmdem::post
 

@@ -9,6 +9,9 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_run.h"
 #include "io/json.h"
@@ -174,6 +177,81 @@ TEST(AcquireCli, SameSeedSameRecord)
   ASSERT_EQ(run("acquire " + in + opts + " --seed 4 --output " + tmp("acq_s4.txt")).status, 0);
   EXPECT_EQ(test::slurp(tmp("acq_s3a.txt")), test::slurp(tmp("acq_s3b.txt")));
   EXPECT_NE(test::slurp(tmp("acq_s3a.txt")), test::slurp(tmp("acq_s4.txt")));
+}
+
+// The data rows of a record: each line's columns from `first` on (0: time).
+std::vector<std::string> column_rows(const std::string &path, int first, int count)
+{
+  std::vector<std::string> rows;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream f(line);
+    std::vector<std::string> w;
+    for (std::string x; f >> x;) w.push_back(x);
+    std::string r;
+    for (int k = first; k < first + count && k < static_cast<int>(w.size()); ++k) r += w[k] + " ";
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+TEST(AcquireCli, SecondAxisThroughTheSameChainWithItsOwnNoise)
+{
+  // two axes of one sensor: the second through the same chain as the first, its noise seeded
+  // seed + 1, so each column is what a one-axis acquire of it gives with that seed
+  std::string text = "# time a b\n";
+  char buf[96];
+  for (int i = 0; i < 30000; ++i) {  // 0.3 s: diagnose needs two cage periods
+    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g\n", i * 1e-5, std::sin(0.01 * i),
+                  0.5 * std::cos(0.013 * i));
+    text += buf;
+  }
+  const std::string in = test::write_temp("acq_two_axes_in.txt", text);
+  const std::string chain = " --lowpass 8000 --rate 20000 --noise-rms 0.01 --bits 16 --range -2 2";
+  const CliRun both = run("acquire " + in + " --column a --across-column b --seed 3" + chain +
+                          " --output " + tmp("acq_ab.txt"));
+  ASSERT_EQ(both.status, 0) << both.out;
+  ASSERT_EQ(run("acquire " + in + " --column a --seed 3" + chain + " --output " + tmp("acq_a.txt"))
+                .status,
+            0);
+  ASSERT_EQ(run("acquire " + in + " --column b --seed 4" + chain + " --output " + tmp("acq_b.txt"))
+                .status,
+            0);
+  const std::vector<std::string> ab = column_rows(tmp("acq_ab.txt"), 0, 3);
+  const std::vector<std::string> a = column_rows(tmp("acq_a.txt"), 0, 2),
+                                 b = column_rows(tmp("acq_b.txt"), 1, 1);
+  ASSERT_EQ(ab.size(), 6000u);
+  ASSERT_EQ(a.size(), ab.size());
+  ASSERT_EQ(b.size(), ab.size());
+  for (std::size_t i = 0; i < ab.size(); ++i) ASSERT_EQ(ab[i], a[i] + b[i]) << i;
+  const std::string out = test::slurp(tmp("acq_ab.txt"));
+  EXPECT_NE(out.find("# second axis: b (input b), the same chain, noise seed 4, clipped 0 of 6000\n"
+                     "# time a b\n"),
+            std::string::npos)
+      << out.substr(0, 2000);
+  // diagnose reads the pair
+  const CliRun d = run("diagnose " + tmp("acq_ab.txt") +
+                       " --column a --across-column b --size-method accel-curve --rpm 1800 "
+                       "--bearing 6205 --no-size");
+  EXPECT_EQ(d.status, 0) << d.out;
+  EXPECT_NE(d.out.find("# second axis: b"), std::string::npos) << d.out;
+  // bad input
+  CliRun r = run("acquire " + in + " --column a --across-name x");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--across-name needs --across-column"), std::string::npos) << r.out;
+  r = run("acquire " + in + " --column a --across-column a");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("--across-column a holds the signal's own samples"), std::string::npos)
+      << r.out;
+  r = run("acquire " + in + " --column a --across-column b --name b");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("the two columns are both called 'b'"), std::string::npos) << r.out;
+  r = run("acquire " + in + " --column a --across-column b --across-name 'x y'");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("option --across-name expects one word"), std::string::npos) << r.out;
+  r = run("acquire " + in + " --column a --across-column c");
+  EXPECT_NE(r.status, 0);
 }
 
 TEST(AcquireCli, AccelerometerWithInputReferredNoiseDensity)

@@ -41,8 +41,17 @@ TEST(AcquireReport, NoiseLineNamesItsSetting)
 TEST(AcquireReport, TableInBothForms)
 {
   const Signal y = sampled().signal;
-  EXPECT_EQ(acquisition_table(y, "V", false), "# time V\n0 1\n0.001 2\n0.002 3\n0.003 4\n");
-  EXPECT_EQ(acquisition_table(y, "V", true), "time,V\n0,1\n0.001,2\n0.002,3\n0.003,4\n");
+  EXPECT_EQ(acquisition_table(y, "V", nullptr, "", false),
+            "# time V\n0 1\n0.001 2\n0.002 3\n0.003 4\n");
+  EXPECT_EQ(acquisition_table(y, "V", nullptr, "", true),
+            "time,V\n0,1\n0.001,2\n0.002,3\n0.003,4\n");
+  // a second axis: a third column
+  Signal z = y;
+  for (double &v : z.x) v = -v;
+  EXPECT_EQ(acquisition_table(y, "V", &z, "V2", false),
+            "# time V V2\n0 1 -1\n0.001 2 -2\n0.002 3 -3\n0.003 4 -4\n");
+  EXPECT_EQ(acquisition_table(y, "V", &z, "V2", true),
+            "time,V,V2\n0,1,-1\n0.001,2,-2\n0.002,3,-3\n0.003,4,-4\n");
   EXPECT_EQ(acquisition_head("1.0", {{"source", "x.txt"}, {"column", "R"}}),
             "# ohmdem-post 1.0 acquire: what an instrument records\n"
             "# source: x.txt\n# input column: R\n");
