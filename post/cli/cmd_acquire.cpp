@@ -57,7 +57,6 @@ AcquireSettings settings(const Args &a)
   return s;
 }
 
-// The options of acquire (run_acquire parses them).
 // A value column's name: one word, not 'time' (the time column's).
 std::string column_name(const Args &a, const std::string &option, const std::string &input_name)
 {
@@ -71,6 +70,7 @@ std::string column_name(const Args &a, const std::string &option, const std::str
   return name;
 }
 
+// The options of acquire (run_acquire parses them).
 void declare_options(Args &a)
 {
   add_input_options(a, "--input-rate");
