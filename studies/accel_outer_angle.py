@@ -44,17 +44,9 @@ def grid(tiny):
 
 
 def acquire(sim, rate, noise, dest):
-    """Both ring axes through the chain into one record (time V V2): `acquire --across-column`,
-    the second axis with its own noise (seed 2)."""
-    if not os.path.exists(dest):
-        common.post(["acquire", "--column", "acc_along", "--across-column", "acc_across",
-                     "--scale", repr(sizing_map.ACC_SENSITIVITY), "--from", repr(sizing.T_FROM),
-                     "--lowpass", repr(0.4 * rate), "--order", "4", "--rate", repr(rate),
-                     "--bits", "16", "--range", "-5", "5", "--noise-density",
-                     repr(sizing_map.ACC_NOISE[noise] * sizing_map.ACC_SENSITIVITY),
-                     "--seed", "1", "--name", "V", "--across-name", "V2", "--unit", "V",
-                     "--output", dest, os.path.join(sim, "signal.txt")], who="accel_outer_angle")
-    return dest
+    """Both ring axes through the sizing map's chain into one record (time V V2)."""
+    return dest if os.path.exists(dest) else sizing_map.acquire_acc(sim, rate, noise, dest,
+                                                                   across=True)
 
 
 def one(out, which, size, offset, rate, noise):

@@ -45,8 +45,11 @@ def grid(tiny):
             "channels": ["electrical", "acc", "acc-curve"]}
 
 
-def acquire_acc(sim, rate, noise, dest):
-    common.post(["acquire", "--column", "acc_along", "--scale", repr(ACC_SENSITIVITY),
+def acquire_acc(sim, rate, noise, dest, across=False):
+    """The ring's acceleration along the load through the accelerometer's chain (column V);
+    across: the sensor's second axis too (acc_across as V2, its own noise: acquire's seed + 1)."""
+    second = ["--across-column", "acc_across", "--across-name", "V2"] if across else []
+    common.post(["acquire", "--column", "acc_along", *second, "--scale", repr(ACC_SENSITIVITY),
                  "--from", repr(sizing.T_FROM), "--lowpass", repr(0.4 * rate), "--order", "4",
                  "--rate", repr(rate), "--bits", "16", "--range", "-5", "5",
                  "--noise-density", repr(ACC_NOISE[noise] * ACC_SENSITIVITY), "--seed", "1",
