@@ -48,6 +48,20 @@ if want detectability; then
   /usr/bin/python3 studies/accel_position.py "$WORK/accel_position" > "$OUT/accel_position.log"
   cp "$WORK"/accel_position/accel_position.csv "$WORK"/accel_position/accel_position.md \
      "$OUT/detectability/"
+  echo "== an inner pit's place from the electrical channel (issue 26), the study's and held-out"
+  # the same runs as the accelerometer's (OUT/sim), the held-out places and sizes in their own
+  /usr/bin/python3 studies/accel_position.py --channel electrical "$WORK/accel_position" \
+    > "$OUT/electrical_position.log"
+  cp "$WORK"/accel_position/electrical_position.csv \
+     "$WORK"/accel_position/electrical_position.md "$OUT/detectability/"
+  heldout=0.5:70,0.5:130,0.5:215,0.5:345,1.5:70,1.5:130,1.5:215,1.5:345
+  heldout=$heldout,2.5:70,2.5:130,2.5:215,2.5:345
+  /usr/bin/python3 studies/accel_position.py --channel electrical --cases "$heldout" \
+    "$WORK/electrical_heldout" > "$OUT/electrical_position_heldout.log"
+  cp "$WORK"/electrical_heldout/electrical_position.csv \
+     "$OUT/detectability/electrical_position_heldout.csv"
+  sed '1s/$/: held-out places and sizes/' "$WORK"/electrical_heldout/electrical_position.md \
+    > "$OUT/detectability/electrical_position_heldout.md"
   echo "== an outer pit's angle from a two-axis accelerometer (issue 26)"
   /usr/bin/python3 studies/accel_outer_angle.py "$WORK/accel_outer_angle" \
     > "$OUT/accel_outer_angle.log"

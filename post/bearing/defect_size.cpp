@@ -76,7 +76,7 @@ double race_radius(const std::string &defect, const BearingGeometry &g)
   return defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2;
 }
 
-bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+void size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
                     const Diagnosis &found, const DiagnoseOptions &o, bool curve);
 void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
            const DiagnoseOptions &o);
@@ -133,6 +133,7 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   ps.load_zone = radial;
   ps.fr = o.fr;
   ps.shaft_angle = o.shaft_angle;
+  ps.delay = o.record_delay_s;
   ps.curve_size_deg = o.curve_size_deg;
   ps.curve_rel_area_s = o.curve_rel_area_s;
   ps.curve_rel_error = o.curve_rel_error;
@@ -167,8 +168,9 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
       }
     }
   }
-  // the phase places an outer pit whether or not its size is read
+  // the phase places an outer pit, the load zone an inner one, whether or not its size is read
   if (d.defect == "outer" && radial) place_outer(l, s, d, g.nb);
+  place(l, a, d, radial, o);
   if (!a.valid && !std::isfinite(w.size)) return l;
   if (std::isfinite(w.size)) {
     l.valid = true;
@@ -177,16 +179,15 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     l.size_hi_deg = w.hi;
     l.arc_m = w.size * kPi / 180 * race_radius(d.defect, g);
     l.height_source = "the model's width curve ({diagnose.width_curve})";
-  } else if (!size_from_area(l, a, s, d, found, o, curve)) {
-    return l;
+  } else {
+    size_from_area(l, a, s, d, found, o, curve);
   }
-  place(l, a, d, radial, o);
   return l;
 }
 
 namespace {
 
-bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+void size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
                     const Diagnosis &found, const DiagnoseOptions &o, bool curve)
 {
   const BearingGeometry &g = o.geometry;
@@ -208,7 +209,7 @@ bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, c
         format_number(found.size.size_deg, 3) +
         " deg: the ball drops into the pit or the ring rings after the exit); give the "
         "model's curve ({diagnose.size_curve}, studies/sizing.py)";
-    return false;
+    return;
   }
   l.valid = true;
   l.size_deg = angle(a.tau_s) * to_deg;
@@ -221,7 +222,6 @@ bool size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, c
     l.size_hi_deg = a.size_hi_deg;
     l.arc_m = a.size_deg * kPi / 180 * race_radius(d.defect, g);
   }
-  return true;
 }
 
 // An outer pit's angle from the load direction, modulo the ball spacing (outer_position.h).
@@ -263,13 +263,30 @@ void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool ra
     if (!radial)
       l.position_note = "not determined: under a balanced load every place looks the same";
   }
-  if (std::isfinite(a.position_deg)) {
-    l.position_deg = a.position_deg;
-    l.position_lo_deg = a.position_lo_deg;
-    l.position_hi_deg = a.position_hi_deg;
-    l.position_reference = "shaft zero";
-    l.position_note.clear();
+  if (!std::isfinite(a.position_deg)) {
+    if (d.defect == "inner" && radial && o.shaft_angle)
+      l.position_note = "not determined: " + a.note;  // the passes' areas: why none
+    return;
   }
+  // The model's part of the interval: the shaft's turn over the ball's crossing of the pit (the
+  // entry-to-exit width, else the pulse width). The pass's centroid lies anywhere within the
+  // crossing, and the areas' peak along the zone moves by about as much again as the ball's load
+  // changes during the crossing (doc/ohmdem-post.md, "Size and position").
+  const double crossing = std::isfinite(l.edge_width_s) ? l.edge_width_s
+                          : d.size.valid                ? d.size.pulse_width_s
+                                                        : std::nan("");
+  if (!std::isfinite(crossing)) {
+    l.position_note =
+        "not determined: the pulses' crossing is not measured (the interval's part "
+        "for the model)";
+    return;
+  }
+  const double turn_deg = 360 * o.fr * crossing;
+  l.position_deg = a.position_deg;
+  l.position_lo_deg = wrap_deg(a.position_deg - a.position_half_deg - turn_deg);
+  l.position_hi_deg = wrap_deg(a.position_deg + a.position_half_deg + turn_deg);
+  l.position_reference = "shaft zero";
+  l.position_note.clear();
 }
 
 }  // namespace

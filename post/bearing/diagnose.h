@@ -36,7 +36,8 @@ struct DiagnoseOptions {
   double pulse_height = 0;
   const std::vector<double> *shaft_angle = nullptr;
   // the record's anti-alias filter's delay at 0 Hz (s; its header's lowpass line), 0 when it
-  // states none: an event's time in the record is this much after the event
+  // states none: an event's time in the record is this much after the event (in the angle
+  // domain, revolutions: diagnose_in_orders converts it at the mean speed)
   double record_delay_s = 0;
   // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
   // pulses) whatever the identification says; empty: the identified defect only

@@ -3,7 +3,8 @@
 // pass shows (the electrical pulse's area, the accelerometer's pass energy) peaks when the
 // defect meets the load direction. A per-pass value r_j against the shaft angle theta_j at the
 // pass is fitted by r_j = c cos^p(theta_j - phi) (0 outside the half turn): phi on a 1-degree
-// grid, p in {1, 1.5, ..., 4}, c by least squares. The defect's place on the ring, from the
+// grid, then at the vertex of the parabola through the best point's and its neighbours' fits,
+// p in {1, 1.5, ..., 4}, c by least squares. The defect's place on the ring, from the
 // shaft's zero, is then the load direction - phi. The pulse area (bearing/pulse_area.h) and the
 // pass energy (bearing/pass_energy.h) share it.
 #ifndef OHMDEM_POST_BEARING_LOAD_ZONE_FIT_H
@@ -31,7 +32,8 @@ struct ZoneEstimate {
 ZoneEstimate zone_estimate(const std::vector<double> &theta, const std::vector<double> &r);
 
 // The shaft angle (rad) at times t (s; the record's first sample at t0): the record's angle
-// per sample where it has one (the sample at or before t), else 2 pi fr t.
+// per sample where it has one (accumulated: linear between the samples around t, the first or
+// last sample beyond the record's ends), else 2 pi fr t.
 std::vector<double> shaft_angles_at(const std::vector<double> &t, double rate, double t0,
                                     const std::vector<double> *shaft_angle, double fr);
 

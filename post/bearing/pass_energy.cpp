@@ -229,11 +229,11 @@ void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const Diag
     l.position_note = "not determined: the passes' energy does not follow the load zone";
     return;
   }
-  // +-0.5 deg: the grid's step; and the shaft's turn over the smoothing window: where in it
-  // the event lies is not resolved (the ring's response and the exit's place in the pit move
-  // the energy's peak by about that much)
+  // and the shaft's turn over the smoothing window: where in it the event lies is not resolved
+  // (the ring's response and the exit's place in the pit move the energy's peak by about that
+  // much)
   const double smear_deg = 360 * o.fr * static_cast<double>(smoothing_samples(s.rate)) / s.rate;
-  const double half = student_t_isf(0.025, static_cast<double>(n - 1)) * z.phi_sd + 0.5 + smear_deg;
+  const double half = student_t_isf(0.025, static_cast<double>(n - 1)) * z.phi_sd + smear_deg;
   l.position_deg = wrap_deg(kLoadDirectionDeg - z.phi_deg);
   l.position_lo_deg = wrap_deg(l.position_deg - half);
   l.position_hi_deg = wrap_deg(l.position_deg + half);

@@ -204,18 +204,17 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
   double c = 0, se = 0;
   if (s.load_zone && defect == "inner") {
     // the defect turns with the shaft: its passes follow the load zone; the peak is the pass
-    // at the zone's centre
+    // at the zone's centre. Each pass when the ball crossed the pit: its pulse less the delay.
+    std::vector<double> crossed(p.time);
+    for (double &t : crossed) t -= s.delay;
     const ZoneEstimate z =
-        zone_estimate(shaft_angles_at(p.time, rate, t0, s.shaft_angle, s.fr), p.rel_area);
+        zone_estimate(shaft_angles_at(crossed, rate, t0, s.shaft_angle, s.fr), p.rel_area);
     c = z.c;
     se = z.c_se;
     if (s.shaft_angle && !s.shaft_angle->empty()) {
-      // the defect meets the load direction when shaft angle + position = load direction;
-      // +-0.5 deg: the grid's step
-      const double half = tq * z.phi_sd + 0.5;
+      // the defect meets the load direction when shaft angle + position = load direction
       e.position_deg = wrap_deg(s.load_direction_deg - z.phi_deg);
-      e.position_lo_deg = wrap_deg(e.position_deg - half);
-      e.position_hi_deg = wrap_deg(e.position_deg + half);
+      e.position_half_deg = tq * z.phi_sd;
     }
     e.note = "pulse area, load-zone peak of " + std::to_string(n) + " passes";
   } else {

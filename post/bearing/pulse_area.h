@@ -31,6 +31,9 @@ struct PulseAreaSettings {
   // shaft angle (rad) per sample, from the record (angle column or tachometer), else null:
   // an inner defect's position on the ring is then not determined
   const std::vector<double> *shaft_angle = nullptr;
+  // the record's anti-alias filter's delay at 0 Hz (in the record's time unit): a pulse shows
+  // this much after the ball crosses the pit, so a pass's shaft angle is read this much earlier
+  double delay = 0;
   // The model's curve from simulations of the same scene (issue 26): the mean over the passes
   // of the fixed-window area / level (window_rel_area_s below) against the size (deg), sizes
   // increasing, areas increasing. When given, the size is read off it (rel_height unused).
@@ -64,10 +67,10 @@ struct PulseAreaSize {
                                                                   // area / level over the passes
   std::size_t passes = 0;
   // inner defect under a radial load with a shaft angle: the defect's angle on the ring from
-  // the shaft's zero, degrees in [0, 360), with its interval; NaN otherwise
+  // the shaft's zero, degrees in [0, 360), and the fit's half-width (Student t at 95 % times
+  // the jackknife's spread over the passes; the caller adds the model's part); NaN otherwise
   double position_deg = std::numeric_limits<double>::quiet_NaN();
-  double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
-  double position_hi_deg = std::numeric_limits<double>::quiet_NaN();
+  double position_half_deg = std::numeric_limits<double>::quiet_NaN();
 };
 
 // x sampled at `rate`, its time of x[0] t0; pulses repeating at f (Hz); defect "inner"/"outer".

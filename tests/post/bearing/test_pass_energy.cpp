@@ -175,9 +175,13 @@ TEST(PassEnergy, InnerDefectPlacedFromTheLoadZoneWithTheShaftAngle)
       place_inner_by_pass_energy(s, r, o, l);
       ASSERT_TRUE(std::isfinite(l.position_deg)) << l.position_note;
       EXPECT_EQ(l.position_reference, "shaft zero");
-      // the ring's energy peaks ~0.08 ms after the pass began: 1.1 deg of shaft
+      // the ring's energy peaks ~0.08 ms after the pass began: 1.1 deg of shaft; the strongest
+      // sample lies up to a sample and a half later: half a sample of sampling, and the 3 kHz
+      // ring's delay behind the filter exceeds its delay at 0 Hz (which is taken off) by 42 us
+      // at 10 kHz, 3.6 us at 20 kHz (the analog order-4 Butterworth's group delay,
+      // scipy.signal.freqs)
       const double err = std::remainder(l.position_deg - position, 360);
-      EXPECT_LT(std::fabs(err), 1.5) << rate << " " << position;
+      EXPECT_LT(std::fabs(err), 1.1 + 360 * kShaft * 1.5 / rate) << rate << " " << position;
       EXPECT_LE(std::remainder(l.position_lo_deg - position, 360), 0) << rate << " " << position;
       EXPECT_GE(std::remainder(l.position_hi_deg - position, 360), 0) << rate << " " << position;
     }

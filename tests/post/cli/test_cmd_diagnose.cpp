@@ -168,6 +168,23 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   EXPECT_NEAR(inner.find("size_deg")->number(), 0.5, 0.075);
   EXPECT_NEAR(inner.find("position_deg")->number(), 330, 3);
   EXPECT_EQ(inner.find("position_reference")->string(), "shaft zero");
+  const Json &inner_iv = *inner.find("position_interval_deg");
+  EXPECT_LE(inner_iv[0].number(), 330);
+  EXPECT_GE(inner_iv[1].number(), 330);
+  // the same record on a curve its area lies beyond: no size, the place all the same (the load
+  // zone gives it, whatever the size), with the same interval
+  const Json unsized =
+      diagnose("inner_0.5_radial_p330",
+               "--assume-defect inner --size-curve " +
+                   test::write_temp("tiny_curve.txt",
+                                    "# a curve below the record's area\n0.01 1e-12\n"
+                                    "0.02 2e-12\n"));
+  EXPECT_TRUE(unsized.find("size_interval_deg")->is_null());
+  EXPECT_NE(unsized.find("size_method")->string().find("beyond the model's curve"),
+            std::string::npos);
+  EXPECT_NEAR(unsized.find("position_deg")->number(), inner.find("position_deg")->number(), 1e-9);
+  EXPECT_EQ(unsized.find("position_reference")->string(), "shaft zero");
+  EXPECT_NEAR((*unsized.find("position_interval_deg"))[0].number(), inner_iv[0].number(), 1e-9);
   // radial load, 0.3 deg outer pit at the load zone's centre: a lower bound only (no upper
   // end); the place from the pulses' phase in the ball-pass modulation, modulo 360/13 deg
   const Json outer = diagnose("outer_0.3_radial_p90", "--pulse-height 0.4494");
