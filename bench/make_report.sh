@@ -54,8 +54,10 @@ if want detectability; then
     > "$OUT/electrical_position.log"
   cp "$WORK"/accel_position/electrical_position.csv \
      "$WORK"/accel_position/electrical_position.md "$OUT/detectability/"
-  heldout=0.5:70,0.5:130,0.5:215,0.5:345,1.5:70,1.5:130,1.5:215,1.5:345
-  heldout=$heldout,2.5:70,2.5:130,2.5:215,2.5:345
+  heldout=0.4:40,0.4:190,0.4:275,0.5:70,0.5:130,0.5:215,0.5:345,0.7:100,0.7:230,0.7:320
+  heldout=$heldout,1.2:40,1.2:190,1.2:275,1.5:70,1.5:130,1.5:215,1.5:345,1.8:100,1.8:230
+  heldout=$heldout,1.8:320,2.2:40,2.2:190,2.2:275,2.5:70,2.5:130,2.5:215,2.5:345,2.6:100
+  heldout=$heldout,2.6:230,2.6:320,2.8:40,2.8:190,2.8:275
   /usr/bin/python3 studies/accel_position.py --channel electrical --cases "$heldout" \
     "$WORK/electrical_heldout" > "$OUT/electrical_position_heldout.log"
   cp "$WORK"/electrical_heldout/electrical_position.csv \

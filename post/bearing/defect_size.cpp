@@ -256,7 +256,7 @@ void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool ra
   if (d.defect == "inner") {
     if (!radial)
       l.position_note = "not determined: under a balanced load every pass looks the same";
-    else if (!o.shaft_angle)
+    else if (!o.shaft_angle || o.shaft_angle->empty())
       l.position_note =
           "not determined: the record has no shaft angle (angle or tachometer column)";
   } else {
@@ -264,14 +264,13 @@ void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool ra
       l.position_note = "not determined: under a balanced load every place looks the same";
   }
   if (!std::isfinite(a.position_deg)) {
-    if (d.defect == "inner" && radial && o.shaft_angle)
-      l.position_note = "not determined: " + a.note;  // the passes' areas: why none
+    if (d.defect == "inner" && radial && o.shaft_angle && !o.shaft_angle->empty())
+      l.position_note = "not determined: " + (a.position_note.empty() ? a.note : a.position_note);
     return;
   }
-  // The model's part of the interval: the shaft's turn over the ball's crossing of the pit (the
-  // entry-to-exit width, else the pulse width). The pass's centroid lies anywhere within the
-  // crossing, and the areas' peak along the zone moves by about as much again as the ball's load
-  // changes during the crossing (doc/ohmdem-post.md, "Size and position").
+  // The model's part of the interval: the shaft's turn over half the ball's crossing of the pit
+  // (the entry-to-exit width, else the pulse width): the centroid of a pulse whose height
+  // changes along the crossing lies anywhere within it (as the outer place's, outer_position.h).
   const double crossing = std::isfinite(l.edge_width_s) ? l.edge_width_s
                           : d.size.valid                ? d.size.pulse_width_s
                                                         : std::nan("");
@@ -281,7 +280,7 @@ void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool ra
         "for the model)";
     return;
   }
-  const double turn_deg = 360 * o.fr * crossing;
+  const double turn_deg = 0.5 * 360 * o.fr * crossing;
   l.position_deg = a.position_deg;
   l.position_lo_deg = wrap_deg(a.position_deg - a.position_half_deg - turn_deg);
   l.position_hi_deg = wrap_deg(a.position_deg + a.position_half_deg + turn_deg);

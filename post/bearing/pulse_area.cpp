@@ -59,10 +59,14 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   lo = static_cast<double>(l - 2) / static_cast<double>(bins);
   start = static_cast<double>(l) / static_cast<double>(bins);  // the first bin beyond 2 %
   hi = lo + width / static_cast<double>(bins);
-  // the pulse's centroid (its time plus the filter's delay at 0 Hz): the pass's time
+  // the pulse's centroid (its time plus the filter's delay at 0 Hz): the pass's time. Over the
+  // pulse's own sign only: the dip that follows a pit's pulse (the ring settling after the exit,
+  // deeper for larger pits) would pull a signed centroid early, by up to 10 deg of shaft for a
+  // 3 deg inner pit (doc/ohmdem-post.md, "The inner pit's place and its interval")
+  const double sign = peak > 0 ? 1 : -1;
   double m0 = 0, m1 = 0;
   for (long b = l - 2; b <= r + 2; ++b) {
-    const double v = avg[circular_index(b, bins)] - base;
+    const double v = std::max((avg[circular_index(b, bins)] - base) * sign, 0.0);
     m0 += v;
     m1 += v * (static_cast<double>(b) + 0.5);
   }
@@ -213,8 +217,12 @@ PulseAreaSize size_from_pulse_area(const std::vector<double> &x, double rate, do
     se = z.c_se;
     if (s.shaft_angle && !s.shaft_angle->empty()) {
       // the defect meets the load direction when shaft angle + position = load direction
-      e.position_deg = wrap_deg(s.load_direction_deg - z.phi_deg);
-      e.position_half_deg = tq * z.phi_sd;
+      if (z.c > 0) {
+        e.position_deg = wrap_deg(s.load_direction_deg - z.phi_deg);
+        e.position_half_deg = tq * z.phi_sd;
+      } else {
+        e.position_note = "the passes' areas do not follow the load zone";
+      }
     }
     e.note = "pulse area, load-zone peak of " + std::to_string(n) + " passes";
   } else {

@@ -71,6 +71,7 @@ struct PulseAreaSize {
   // the jackknife's spread over the passes; the caller adds the model's part); NaN otherwise
   double position_deg = std::numeric_limits<double>::quiet_NaN();
   double position_half_deg = std::numeric_limits<double>::quiet_NaN();
+  std::string position_note;  // why no place where the passes were fitted (else see note)
 };
 
 // x sampled at `rate`, its time of x[0] t0; pulses repeating at f (Hz); defect "inner"/"outer".

@@ -65,6 +65,13 @@ TEST(PulseArea, InnerDefectUnderRadialLoadPeakAndPosition)
   s.shaft_angle = nullptr;
   const PulseAreaSize n = size_from_pulse_area(r.x, r.rate, r.t0, 625.1, "inner", s);
   EXPECT_TRUE(std::isnan(n.position_deg));
+  // dips instead of pulses: the areas fit the zone with c < 0, no peak to place, and why
+  const Signal dips = test_records::pulse_record(tau, 625.1, 2e4, fr, 40, 0, -0.45);
+  std::vector<double> dips_theta;
+  const PulseAreaSize d = size_from_pulse_area(dips.x, dips.rate, dips.t0, 625.1, "inner",
+                                               inner_settings(dips, fr, dips_theta));
+  EXPECT_TRUE(std::isnan(d.position_deg));
+  EXPECT_NE(d.position_note.find("do not follow the load zone"), std::string::npos) << d.note;
 }
 
 // The anti-alias filter delays every pulse by its delay at 0 Hz: given, the passes' shaft angles
@@ -83,8 +90,9 @@ TEST(PulseArea, InnerPositionTakesOffTheFiltersDelay)
     const PulseAreaSize e = size_from_pulse_area(r.x, r.rate, r.t0, 625.1, "inner", s);
     ASSERT_TRUE(e.valid && late.valid) << e.note;
     // the heights follow the shaft angle at the pulse's centre, its centroid: the place within
-    // 0.1 deg (0.06 at 10 kHz); without the delay it reads the delay's turn early
-    EXPECT_NEAR(std::remainder(e.position_deg - place, 360), 0, 0.1) << rate;
+    // 0.25 deg (the centroid over the pulse's sign leaves out the filter's own small undershoot:
+    // 0.17 deg, 6 us, early at 10 and 20 kHz); without the delay it reads the delay's turn early
+    EXPECT_NEAR(std::remainder(e.position_deg - place, 360), 0, 0.25) << rate;
     const double shift_deg = 2 * kPi * fr * s.delay * 180 / kPi;
     EXPECT_NEAR(std::remainder(e.position_deg - late.position_deg, 360), shift_deg, 0.02) << rate;
   }
