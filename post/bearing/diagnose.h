@@ -13,6 +13,7 @@
 
 #include "bearing/bearing.h"
 #include "core/sampled_signal.h"
+#include "dsp/butterworth.h"
 #include "dsp/detect.h"
 #include "dsp/envelope.h"
 
@@ -39,6 +40,9 @@ struct DiagnoseOptions {
   // states none: an event's time in the record is this much after the event (in the angle
   // domain, revolutions: diagnose_in_orders converts it at the mean speed)
   double record_delay_s = 0;
+  // that filter itself, when the header states it: the accelerometer's events are delayed by
+  // its group delay where their energy lies, not at 0 Hz (bearing/pass_energy.h)
+  std::optional<RecordFilter> record_filter;
   // "inner" or "outer": size and place that defect (at its kinematic frequency, refined by the
   // pulses) whatever the identification says; empty: the identified defect only
   std::string assume_defect;

@@ -31,6 +31,7 @@ Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, 
   // angle the shaft turns in the delay varies with the speed: by 10 % of that angle for a
   // speed 10 % off the mean, 0.1 deg of shaft for the 104 us of a 10 kHz record at 500 rad/s)
   opt.record_delay_s *= fr;
+  opt.record_filter.reset();  // its group delays are in seconds (read by the methods refused here)
   // the resampled record's own shaft angle (the given one indexes the original samples)
   std::vector<double> angle;
   if (opt.shaft_angle) {

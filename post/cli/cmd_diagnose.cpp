@@ -226,8 +226,10 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
-  if (const auto files = input_options(a).files; !files.empty())
+  if (const auto files = input_options(a).files; !files.empty()) {
     o.record_delay_s = record_filter_delay_s(files[0]);
+    o.record_filter = record_filter(files[0]);
+  }
   // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
   const bool double_impulse = size_method == "double-impulse";

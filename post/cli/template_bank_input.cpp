@@ -121,7 +121,7 @@ std::string record_lowpass(const std::string &record_path)
   return "";
 }
 
-double record_filter_delay_s(const std::string &record_path)
+std::optional<RecordFilter> record_filter(const std::string &record_path)
 {
   std::ifstream in(record_path);
   std::string line;
@@ -134,11 +134,17 @@ double record_filter_delay_s(const std::string &record_path)
     if (std::sscanf(v.c_str(), " Butterworth order %d", &order) != 1 || cut == std::string::npos ||
         at == std::string::npos || std::sscanf(v.c_str() + cut, "cut-off %lf", &fc) != 1 ||
         std::sscanf(v.c_str() + at, "sections at %lf", &fs) != 1)
-      return 0;
-    if (order < 1 || order > kMaxButterworthOrder || !(fc > 0 && fc < fs / 2)) return 0;
-    return sos_dc_delay_s(butterworth_lowpass(order, fc, fs), fs);
+      return std::nullopt;
+    if (order < 1 || order > kMaxButterworthOrder || !(fc > 0 && fc < fs / 2)) return std::nullopt;
+    return RecordFilter{butterworth_lowpass(order, fc, fs), fs};
   }
-  return 0;
+  return std::nullopt;
+}
+
+double record_filter_delay_s(const std::string &record_path)
+{
+  const std::optional<RecordFilter> f = record_filter(record_path);
+  return f ? sos_dc_delay_s(f->sos, f->fs) : 0;
 }
 
 void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,

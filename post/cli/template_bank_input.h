@@ -9,10 +9,12 @@
 #ifndef OHMDEM_POST_CLI_TEMPLATE_BANK_INPUT_H
 #define OHMDEM_POST_CLI_TEMPLATE_BANK_INPUT_H
 
+#include <optional>
 #include <string>
 
 #include "bearing/pulse_template.h"
 #include "core/sampled_signal.h"
+#include "dsp/butterworth.h"
 
 namespace ohmdem::post::cli {
 
@@ -34,9 +36,11 @@ void check_bank(const BankFile &b, const Signal &s, const std::string &record_pa
 // (-3 dB)"), without the input rate's sections; empty when the header has none.
 std::string record_lowpass(const std::string &record_path);
 
-// The delay at 0 Hz (s) of the anti-alias filter an acquired record's header states
-// ("Butterworth order 4, cut-off 8000 Hz (-3 dB), 2 sections at 1000000 Hz, ..."; acquire's
-// causal filter at its input rate); 0 when the header states none or no such filter.
+// The anti-alias filter an acquired record's header states ("Butterworth order 4, cut-off 8000
+// Hz (-3 dB), 2 sections at 1000000 Hz, ..."; acquire's causal filter at its input rate); none
+// when the header states none or no such filter.
+std::optional<RecordFilter> record_filter(const std::string &record_path);
+// Its delay at 0 Hz (s); 0 without one.
 double record_filter_delay_s(const std::string &record_path);
 
 // --pulse-fold-out FILE: the record's fold, for a bank (header lines, then 'Y SE' per bin).

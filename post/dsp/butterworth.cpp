@@ -182,6 +182,18 @@ double sos_dc_delay_s(const Sos &sos, double fs)
   return samples / fs;
 }
 
+double sos_group_delay_s(const Sos &sos, double f, double fs)
+{
+  const std::complex<double> z1 = std::polar(1.0, -2 * kPi * f / fs), z2 = z1 * z1;  // z^-1, z^-2
+  // -d phase / d omega of c0 + c1 z^-1 + c2 z^-2, in samples
+  const auto delay = [&](double c0, double c1, double c2) {
+    return ((c1 * z1 + 2 * c2 * z2) / (c0 + c1 * z1 + c2 * z2)).real();
+  };
+  double samples = 0;
+  for (const Biquad &s : sos) samples += delay(s.b0, s.b1, s.b2) - delay(1, s.a1, s.a2);
+  return samples / fs;
+}
+
 double butterworth_gain(int order, double fc, double fs, double f)
 {
   const double r = std::tan(kPi * f / fs) / std::tan(kPi * fc / fs);

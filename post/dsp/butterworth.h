@@ -41,6 +41,17 @@ std::complex<double> sos_response(const Sos &sos, double f, double fs);
 // w = 0), summed, over fs.
 double sos_dc_delay_s(const Sos &sos, double fs);
 
+// The cascade's group delay at f (s): per section Re(sum k b_k z^-k / sum b_k z^-k) less the
+// same of the denominator, z = e^{i 2 pi f / fs}, summed, over fs (-d phase / d omega of each
+// polynomial; at f = 0 what sos_dc_delay_s gives).
+double sos_group_delay_s(const Sos &sos, double f, double fs);
+
+// A record's anti-alias filter as its header states it: the sections and the rate they run at.
+struct RecordFilter {
+  Sos sos;
+  double fs = 0;
+};
+
 // |H(f)| of the digital Butterworth low-pass in closed form (bilinear transform of the analog
 // |H| = 1/sqrt(1 + (w/wc)^2N), with the prewarped frequencies tan(pi f/fs)): the theory the
 // design is checked against.

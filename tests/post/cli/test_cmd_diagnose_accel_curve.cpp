@@ -164,15 +164,15 @@ TEST(DiagnoseAccelCurve, InnerDefectPlacedWithTheShaftAngleThroughTheCommand)
   const Json *pos = j.find("position_deg");
   ASSERT_TRUE(pos && pos->is_number()) << j.find("position_note")->string();
   EXPECT_EQ(j.find("position_reference")->string(), "shaft zero");
-  // the ring's energy peaks ~0.05 ms after the pass began: ~1 deg of shaft at 60 Hz; the grid 1
+  // the ring's energy peaks ~0.05 ms after the pass began: ~1 deg of shaft at 60 Hz
   EXPECT_NEAR(std::remainder(pos->number() - place, 360), 0, 2.5);
   const Json *iv = j.find("position_interval_deg");
   ASSERT_TRUE(iv && iv->size() == 2);
   EXPECT_LE(std::remainder((*iv)[0].number() - place, 360), 0);
   EXPECT_GE(std::remainder((*iv)[1].number() - place, 360), 0);
-  // without the header's filter line its delay, 2.613 / (2 pi 4 kHz) = 104 us (the analog
-  // prototype's) = 1.04 samples, is not taken off: the passes take the angle column's sample 1
-  // or 2 earlier (2.16 deg each at 60 Hz), and the place reads that much earlier
+  // without the header's filter line its delay is not taken off: at least 2.613 / (2 pi 4 kHz)
+  // = 104 us (the analog prototype's at 0 Hz; more where the events' energy lies near the
+  // cut-off), 2.25 deg of shaft at 60 Hz, and the place reads that much earlier
   const Json k =
       json_of(run("diagnose " + test::write_temp("inner_place_nolp.txt", without.str()) + args),
               "without the filter");

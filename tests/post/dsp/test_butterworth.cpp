@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "core/error.h"
 #include "dsp/acquire.h"
@@ -113,6 +114,27 @@ TEST(Butterworth, DelayAtZeroHertzIsTheAnalogPrototypes)
     const double slope = -std::arg(sos_response(sos, df, fs)) / (2 * kPi * df);
     EXPECT_NEAR(d, slope, 1e-7 * d) << n;
   }
+}
+
+// The group delay at f against scipy.signal.group_delay of each section of
+// scipy.signal.butter(N, fc, fs=1e6, output='sos'), summed (scipy 1.10, Debian's python3-scipy):
+// the order-4 4 kHz filter of a 10 kHz record and the order-7 20 kHz one; at 0 Hz it is the
+// delay at 0 Hz.
+TEST(Butterworth, GroupDelayAgainstScipy)
+{
+  const double fs = 1e6;
+  const Sos four = butterworth_lowpass(4, 4000, fs);
+  const std::pair<double, double> four_ref[] = {{1000, 0.00010685177390092403},
+                                                {2000, 0.00011858967636329114},
+                                                {3000, 0.00014574264489428294},
+                                                {4000, 0.0001470554753115868},
+                                                {8000, 2.9654482428729856e-05}};
+  for (const auto &[f, ref] : four_ref)
+    EXPECT_NEAR(sos_group_delay_s(four, f, fs), ref, 1e-9 * ref) << f;
+  EXPECT_NEAR(sos_group_delay_s(four, 0, fs), sos_dc_delay_s(four, fs), 1e-15);
+  const Sos seven = butterworth_lowpass(7, 20000, fs);
+  EXPECT_NEAR(sos_group_delay_s(seven, 10000, fs), 3.965947501497795e-05, 1e-14);
+  EXPECT_NEAR(sos_group_delay_s(seven, 20000, fs), 6.149806179910561e-05, 1e-14);
 }
 
 TEST(Butterworth, RejectsImpossibleDesigns)
