@@ -227,8 +227,9 @@ int run_diagnose(const std::vector<std::string> &argv)
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;
   if (const auto files = input_options(a).files; !files.empty()) {
-    o.record_delay_s = record_filter_delay_s(files[0]);
     o.record_filter = record_filter(files[0]);
+    if (o.record_filter)
+      o.record_delay_s = sos_dc_delay_s(o.record_filter->sos, o.record_filter->fs);
   }
   // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
   const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";

@@ -141,12 +141,6 @@ std::optional<RecordFilter> record_filter(const std::string &record_path)
   return std::nullopt;
 }
 
-double record_filter_delay_s(const std::string &record_path)
-{
-  const std::optional<RecordFilter> f = record_filter(record_path);
-  return f ? sos_dc_delay_s(f->sos, f->fs) : 0;
-}
-
 void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,
                 const std::string &bearing, const std::string &defect, const std::string &load)
 {

@@ -40,8 +40,6 @@ std::string record_lowpass(const std::string &record_path);
 // Hz (-3 dB), 2 sections at 1000000 Hz, ..."; acquire's causal filter at its input rate); none
 // when the header states none or no such filter.
 std::optional<RecordFilter> record_filter(const std::string &record_path);
-// Its delay at 0 Hz (s); 0 without one.
-double record_filter_delay_s(const std::string &record_path);
 
 // --pulse-fold-out FILE: the record's fold, for a bank (header lines, then 'Y SE' per bin).
 void write_fold(const std::string &path, const FoldedPulse &p, const std::string &record_path);
