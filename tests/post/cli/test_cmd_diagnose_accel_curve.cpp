@@ -177,7 +177,7 @@ TEST(DiagnoseAccelCurve, InnerDefectPlacedWithTheShaftAngleThroughTheCommand)
       json_of(run("diagnose " + test::write_temp("inner_place_nolp.txt", without.str()) + args),
               "without the filter");
   const double shift = std::remainder(pos->number() - k.find("position_deg")->number(), 360);
-  EXPECT_GE(shift, 1.5) << pos->number() << " " << k.find("position_deg")->number();
+  EXPECT_GE(shift, 360 * 60 * 104e-6) << pos->number() << " " << k.find("position_deg")->number();
   EXPECT_LE(shift, 5.0) << pos->number() << " " << k.find("position_deg")->number();
   // no shaft angle: not determined, and why
   const Json m = json_of(run("diagnose " + acq + args), "no angle");
