@@ -140,15 +140,10 @@ int run_acquire(const std::vector<std::string> &argv)
     InputOptions io = input_options(a, "--input-rate");
     io.column = a.get("--across-column");
     io.min_samples = 4;
-    const Signal s2 = load_named(io, meta, "--input-rate");
-    if (s2.x.size() != s.x.size() || s2.rate != s.rate || s2.t0 != s.t0)
-      throw Error("acquire: --across-column " + io.column + " holds " +
-                  std::to_string(s2.x.size()) + " samples at " + format_number(s2.rate, 10) +
-                  " Hz, the signal " + std::to_string(s.x.size()) + " at " +
-                  format_number(s.rate, 10) + " Hz: the two axes must be recorded together");
-    if (s2.x == s.x)
-      throw Error("acquire: --across-column " + io.column +
-                  " holds the signal's own samples: name the sensor's second axis");
+    const Signal s2 = load_companion(
+        io, meta, s,
+        {"acquire", "--across-column " + io.column, "signal", "name the sensor's second axis"},
+        "--input-rate");
     name2 = column_name(a, "--across-name", s2.name);
     if (name2 == name)
       throw Error("acquire: the two columns are both called '" + name +

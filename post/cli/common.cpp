@@ -95,6 +95,21 @@ Signal load_named(const InputOptions &o, const RunMetadata &meta, const std::str
   return s;
 }
 
+Signal load_companion(const InputOptions &io, const RunMetadata &meta, const Signal &s,
+                      const CompanionNames &n, const std::string &rate_option)
+{
+  Signal o = load_named(io, meta, rate_option);
+  if (std::fabs(o.rate / s.rate - 1) > 1e-9 || o.x.size() != s.x.size())
+    throw Error(n.command + ": " + n.what + " holds " + std::to_string(o.x.size()) +
+                " samples at " + format_number(o.rate, 10) + " Hz, the " + n.record + " " +
+                std::to_string(s.x.size()) + " at " + format_number(s.rate, 10) +
+                " Hz: the two channels must be recorded together (same rate and samples)");
+  if (o.x == s.x)
+    throw Error(n.command + ": " + n.what + " holds the " + n.record +
+                "'s own samples: " + n.name_it);
+  return o;
+}
+
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
                   bool skip_sliding_phase, const std::string &rate_option)
 {

@@ -30,6 +30,14 @@ RunMetadata run_metadata(const Args &a);
 // for the input's rate ("uniform, --rate"), the others as every command names them.
 Signal load_named(const InputOptions &o, const RunMetadata &meta,
                   const std::string &rate_option = "--rate");
+// A second channel recorded with signal `s` (another column or file, loaded with `io`): refused
+// unless it holds s's rate and number of samples, and when it holds s's own samples. The
+// messages begin "<command>: <what> holds", name s "the <record>", and end with `name_it`.
+struct CompanionNames {
+  std::string command, what, record, name_it;
+};
+Signal load_companion(const InputOptions &io, const RunMetadata &meta, const Signal &s,
+                      const CompanionNames &n, const std::string &rate_option = "--rate");
 // Loads the signal and applies the metadata's t_sliding_end as default --from when asked.
 Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_samples,
                   bool skip_sliding_phase = false, const std::string &rate_option = "--rate");

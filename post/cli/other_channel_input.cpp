@@ -1,10 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/other_channel_input.h"
 
-#include <cmath>
-
 #include "cli/common.h"
-#include "core/error.h"
 
 namespace ohmdem::post::cli {
 
@@ -31,14 +28,7 @@ Signal companion(const Args &a, const RunMetadata &meta, const Signal &s, const 
   in.min_samples = 256;
   if (!a.has("--from") && !a.has("--keep-sliding") && meta.t_sliding_end)
     in.from = *meta.t_sliding_end;
-  Signal o = load_named(in, meta);
-  if (std::fabs(o.rate / s.rate - 1) > 1e-9 || o.x.size() != s.x.size())
-    throw Error("diagnose: " + what + " holds " + std::to_string(o.x.size()) + " samples at " +
-                format_number(o.rate, 10) + " Hz, the record " + std::to_string(s.x.size()) +
-                " at " + format_number(s.rate, 10) +
-                " Hz: the two channels must be recorded together (same rate and samples)");
-  if (o.x == s.x) throw Error("diagnose: " + what + " holds the record's own samples: " + name_it);
-  return o;
+  return load_companion(in, meta, s, {"diagnose", what, "record", name_it});
 }
 
 }  // namespace
