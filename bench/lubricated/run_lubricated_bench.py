@@ -10,10 +10,15 @@ Two measures, as bench/resistance: wall time (the fastest of ROUNDS interleaved 
 a shared machine only ever slows a run down) and, if valgrind is installed, instructions in
 the time loop (callgrind, noise-free): over the first 2000 steps (the run-up: the balls still
 slide) and per step in steady rolling (runs to 15 and 17 ms, their difference over 2000 steps).
+Wall time too in both phases: over the first STEPS steps (the deck's 20 ms, three quarters of
+it run-up: the film still thin, its metallic fraction computed) and per step in steady rolling
+(in each round, runs of STEPS and STEPS + STEADY steps, their difference over STEADY steps).
+The ratios to the dry mode are the medians of each round's (the rounds interleave the modes, so
+a drift in the machine's speed cancels), the table's times the fastest.
 Usage:
 
-  bench/lubricated/run_lubricated_bench.py [--steps 20000] [--rounds 5] [--no-callgrind]
-                                           [--reference EXE]
+  bench/lubricated/run_lubricated_bench.py [--steps 20000] [--steady 40000] [--rounds 5]
+                                           [--no-callgrind] [--reference EXE]
 
 --reference EXE also runs the lubricated mode with another build (e.g. one before a speed
 change) and prints the largest relative difference of each lubricated column over the run: the
@@ -24,6 +29,7 @@ import math
 import os
 import re
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -87,16 +93,30 @@ def kernel_set():
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--steps", type=int, default=20000)
+    p.add_argument("--steady", type=int, default=40000,
+                   help="steps beyond --steps for the steady rolling wall time (0: none)")
     p.add_argument("--rounds", type=int, default=5)
     p.add_argument("--no-callgrind", action="store_true")
     p.add_argument("--reference", metavar="EXE", help="another ohmdem build to compare with")
     a = p.parse_args()
     tend = a.steps * 1e-6
     with tempfile.TemporaryDirectory(prefix="bench_lub_") as wd:
-        t = {m: math.inf for m in MODES}
+        rounds = []  # per round and mode: s/step over the first steps, and in steady rolling
         for _ in range(a.rounds):
+            r = {}
             for m in MODES:
-                t[m] = min(t[m], loop_time(run(wd, m, tend)[1]) / a.steps)
+                short = loop_time(run(wd, m, tend)[1])
+                steady_step = math.nan
+                if a.steady > 0:
+                    long = loop_time(run(wd, m, tend + a.steady * 1e-6, name=m + "_long")[1])
+                    steady_step = (long - short) / a.steady
+                r[m] = (short / a.steps, steady_step)
+            rounds.append(r)
+        t = {m: min(r[m][0] for r in rounds) for m in MODES}
+        wall_steady = ({m: min(r[m][1] for r in rounds) for m in MODES} if a.steady > 0 else {})
+
+        def paired(m, phase):  # the median over the rounds of m's time over the dry mode's
+            return statistics.median(r[m][phase] / r["dry"][phase] for r in rounds)
         steady = {m: read_signal(os.path.join(wd, m, "signal.txt"), t0=0.015) for m in MODES}
         errors = {}
         if a.reference:
@@ -115,23 +135,29 @@ def main():
     def mean(m, c):
         return float(steady[m][c].mean())
 
-    print(f"SKF 6208, F = 320 N, 500 rad/s, {a.steps} steps, one core; wall: fastest of "
-          f"{a.rounds} interleaved runs; instructions: callgrind, the first 2000 steps and "
+    print(f"SKF 6208, F = 320 N, 500 rad/s, {a.steps} steps, one core; wall: {a.rounds} "
+          f"interleaved rounds (the fastest; x dry: the median of the rounds' ratios), the first "
+          f"{a.steps} steps and steady rolling (the {a.steady} after them); instructions: callgrind, the first 2000 steps and "
           f"steady rolling; batched contact kernel: {kernel_set()}")
     print(f"{'mode':<11} {'s/step':>9} {'x mech':>7} {'x dry':>6} {'eval/mech':>10} "
-          f"{'instr/step':>11} {'x dry':>6} {'eval/mech':>10} {'steady':>9} {'x dry':>6}")
+          + (f"{'steady':>9} {'x dry':>6} " if wall_steady else "")
+          + f"{'instr/step':>11} {'x dry':>6} {'eval/mech':>10} {'steady':>9} {'x dry':>6}")
     mech, mech_ir = t["mechanics"], ir.get("mechanics")
     for m in MODES:
         ev = "-" if m == "mechanics" else f"{(t[m] - mech) / mech:.1%}"
-        row = f"{m:<11} {t[m]:>9.3e} {t[m] / mech:>7.2f} {t[m] / t['dry']:>6.2f} {ev:>10}"
+        row = f"{m:<11} {t[m]:>9.3e} {t[m] / mech:>7.2f} {paired(m, 0):>6.2f} {ev:>10}"
+        if wall_steady:
+            row += f" {wall_steady[m]:>9.3e} {paired(m, 1):>6.2f}"
         if ir:
             ev = "-" if m == "mechanics" else f"{(ir[m] - mech_ir) / mech_ir:.1%}"
             row += (f" {ir[m]:>11.0f} {ir[m] / ir['dry']:>6.2f} {ev:>10}"
                     f" {ir_steady[m]:>9.0f} {ir_steady[m] / ir_steady['dry']:>6.2f}")
         print(row)
     eval_wall = (t["lubricated"] - mech) / (t["dry"] - mech)
-    line = (f"lubricated / dry: step {t['lubricated'] / t['dry']:.2f}x (wall), evaluation "
-            f"alone {eval_wall:.2f}x (wall)")
+    line = (f"lubricated / dry: step {paired('lubricated', 0):.2f}x (wall, the first "
+            f"{a.steps} steps), evaluation alone {eval_wall:.2f}x (wall, the fastest runs)")
+    if wall_steady:
+        line += f"; step {paired('lubricated', 1):.2f}x (wall, steady rolling)"
     if ir:
         line += (f"; step {ir['lubricated'] / ir['dry']:.2f}x, evaluation alone "
                  f"{(ir['lubricated'] - mech_ir) / (ir['dry'] - mech_ir):.2f}x (instructions, "

@@ -6,7 +6,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "common/constants.h"
 #include "common/estrin.h"
@@ -14,6 +13,7 @@
 #include "common/fast_erfc.h"
 #include "common/fast_exp_log.h"
 #include "lubrication/exp_small.h"
+#include "lubrication/fraction_bounds.h"
 #include "lubrication/gap_forms.h"
 
 namespace ohmdem::lubrication {
@@ -22,15 +22,7 @@ using gap_forms::form_mean;
 using gap_forms::FormMean;
 
 namespace {
-// 2^-k for 0 <= k <= 1022, from the exponent bits.
-double pow2_neg(int k)
-{
-  const std::uint64_t bits = static_cast<std::uint64_t>(1023 - k) << 52;
-  double x;
-  std::memcpy(&x, &bits, sizeof x);
-  return x;
-}
-const double kSqrtHalf = std::sqrt(0.5), kSqrtPi = std::sqrt(kPi);
+const double kSqrtHalf = std::sqrt(0.5);
 }  // namespace
 
 RaceAdmittance::RaceAdmittance(const RaceInput &in) : in_(in)
@@ -145,19 +137,16 @@ void RaceAdmittance::contact(double fn, double speed, double g_dry, double reces
   const double leak = area_h * inv_resistivity_;
   // The metallic fraction, or 0 when it cannot matter (race_admittance.h).
   const double xm = (recess > 0.0 ? c.gap * inv_sigma_ : c.lambda) * kSqrtHalf;
-  // (2^-54 needs x > 5.9: below 5.5 the bound is not worth its exponential.) From x = 6 a
-  // cheaper bound first, without the exponential: e^(-x^2) <= 2^-k, k = floor(x^2 / ln 2)
-  // (taken a hair low), and 1/(x sqrt(pi)) < 0.1, so bound < 0.1 2^-k; only where that does
-  // not settle it, the bound itself (the same decision: the cheap one is never smaller).
-  bool negligible = false;
-  if (xm >= 6.0) {
-    const double k = std::min(std::floor(xm * xm * (1.4426950408889634 * (1.0 - 1e-12))), 1000.0);
-    const double cheap = 0.1 * pow2_neg(static_cast<int>(k));
-    negligible = cheap <= 0x1p-54 && cheap * g_dry <= 1e-17 * leak;
-  }
-  if (!negligible && xm > 5.5) {
-    const double bound = exp_fast(-xm * xm) / (xm * kSqrtPi);
-    negligible = bound <= 0x1p-54 && bound * g_dry <= 1e-17 * leak;
+  // (fraction_bounds.h; 2^-54 needs x > 5.9: below 5.5 the bound is not worth its
+  // exponential.) From x = 6 the cheap bound first, then the bound itself where that does not
+  // settle it (the same decision: the cheap one is never smaller), unless it cannot pass.
+  namespace fb = fraction_bounds;
+  bool negligible = false, hopeless = false;
+  if (xm > 5.5) {
+    const double k = fb::exponent(xm);
+    if (xm >= 6.0) negligible = fb::negligible(fb::cheap(k), g_dry, leak);
+    hopeless = !negligible && fb::cannot_pass(xm, k, g_dry, leak);
+    if (!negligible && !hopeless) negligible = fb::negligible(fb::bound(xm), g_dry, leak);
   }
   c.metallic = negligible ? 0.0 : erfc_fast(xm);
   const double free = 1.0 - c.metallic;

@@ -173,21 +173,32 @@ struct RaceLanes {
     const I film = (h > 0.0) & (area > 0.0);
     const V area_h = select<kIsa>(film, area / select<kIsa>(film, h, splat<V>(1.0)), splat<V>(0.0));
     const V leak = area_h * k.inv_resistivity;
-    // The metallic fraction, or 0 when it cannot matter: the cheap bound from x = 6 ...
+    // The metallic fraction, or 0 when it cannot matter: the cheap bound from x = 6, unless
+    // the bound cannot pass, ...
     const V xm = select<kIsa>(recess > 0.0, gap * k.inv_sigma, lambda) * kSqrtHalf;
     const I big = xm >= 6.0;
-    I negligible = big & 0;
-    if (lanes::any<kIsa>(big)) {
+    // A padded group's padding lanes [m, kWidth) (records dropped) need no fraction: left to
+    // them, the padding contact's thin film would take every padded group through erfc.
+    V index;
+    for (int l = 0; l < kWidth; ++l) index[l] = l;
+    I negligible = index >= static_cast<double>(m);
+    const I tail = ~negligible & (xm > 5.5);
+    I hopeless = tail & 0;
+    if (lanes::any<kIsa>(tail)) {
       // min(floor(v), 1000) as floor(min(v, 1000)), the floor through 2^52 (0 <= v <= 1000).
       const V v =
           lanes::min<kIsa>(xm * xm * (1.4426950408889634 * (1.0 - 1e-12)), splat<V>(1000.0));
       const V shifted = v + 0x1p52;
       const I e = ((I)shifted - (I)splat<V>(0x1p52)) + ((shifted - 0x1p52) > v);
       const V cheap = 0.1 * (V)((Uint<V>)(1023 - e) << 52);  // 0.1 pow2_neg(e)
-      negligible = big & (cheap <= 0x1p-54) & (cheap * g_dry <= 1e-17 * leak);
+      negligible |= big & (cheap <= 0x1p-54) & (cheap * g_dry <= 1e-17 * leak);
+      // ... unless the bound's lower bound 2^-(e+2) / (1.7725 x) already fails a test.
+      const V low = (V)((Uint<V>)(1021 - e) << 52), scale = (1.7725 * 1.0001) * xm;
+      hopeless = tail & ~negligible & (v < 1000.0) &
+                 ((low > 0x1p-54 * scale) | (low * g_dry > 1e-17 * leak * scale));
     }
     // ... then the bound itself from 5.5.
-    const I bound_lanes = ~negligible & (xm > 5.5);
+    const I bound_lanes = ~negligible & ~hopeless & (xm > 5.5);
     if (lanes::any<kIsa>(bound_lanes)) {
       const V e = -xm * xm;
       const I fast = bound_lanes & (e > -708.0) & (e < 709.0);  // exp_fast's range
