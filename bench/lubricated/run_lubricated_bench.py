@@ -135,10 +135,12 @@ def main():
     def mean(m, c):
         return float(steady[m][c].mean())
 
+    phases = (f"the first {a.steps} steps" + (f" and steady rolling (the {a.steady} after them)"
+                                              if wall_steady else ""))
     print(f"SKF 6208, F = 320 N, 500 rad/s, {a.steps} steps, one core; wall: {a.rounds} "
-          f"interleaved rounds (the fastest; x dry: the median of the rounds' ratios), the first "
-          f"{a.steps} steps and steady rolling (the {a.steady} after them); instructions: callgrind, the first 2000 steps and "
-          f"steady rolling; batched contact kernel: {kernel_set()}")
+          f"interleaved rounds (the fastest; x dry: the median of the rounds' ratios), {phases}; "
+          f"instructions: callgrind, the first 2000 steps and steady rolling; batched contact "
+          f"kernel: {kernel_set()}")
     print(f"{'mode':<11} {'s/step':>9} {'x mech':>7} {'x dry':>6} {'eval/mech':>10} "
           + (f"{'steady':>9} {'x dry':>6} " if wall_steady else "")
           + f"{'instr/step':>11} {'x dry':>6} {'eval/mech':>10} {'steady':>9} {'x dry':>6}")
