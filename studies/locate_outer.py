@@ -12,15 +12,20 @@ it) is nearest the record's (every 0.5 deg at the first stage's size, then the s
 at the two best angles, then the angle to 0.25 deg: the misfit is too rugged in the angle to
 descend), refines the branches within 3 margins of the best to 1/8 deg and then 1/16 deg, the
 size again at each new angle, and keeps the branch whose best run fits best, when it beats the
-runner-up by a chi2 margin of more than --margin (200: the scatter of an independent 0.3 s of
-the same scene reaches 200 in doc/report/sizing/template/branch.md; chosen on the cases of
-blind.md and held fixed since). Else the branch is not determined, and the candidates within
-the margin are listed; when they are two mirror images about the load line (a pit about half a
-ball spacing from it), the pit's distance from the load line is given.
+runner-up by a chi2 margin of more than --margin (the largest chi2 between two independent
+realizations of one scene: 200 for folds at diagnose's grid period, in
+doc/report/sizing/template/branch.md, chosen on the cases of blind.md and held fixed since; 250
+for folds at the fine period, scatter_*_fine.md). Else the branch is not determined, and the
+candidates within the margin are listed; when they are two mirror images about the load line (a
+pit about half a ball spacing from it), the pit's distance from the load line is given. The
+record and the runs are folded at the grid's period up to 0.375 s of record and at the fine one
+beyond (--fold-period auto): the grid's smear, which differs from window to window, outgrows
+the margin on long records (two realizations of 1.2 s: chi2 up to 1136), the fine period's
+does not (155).
 
   studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
-      [--var NAME VALUE ...] [--zone 63] [--margin 200] [--seed 8] [--format json|text]
-      [--window 2] [--keep-runs] RECORD OUT
+      [--var NAME VALUE ...] [--zone 63] [--margin CHI2] [--fold-period auto|grid|fine]
+      [--seed 8] [--format json|text] [--window 2] [--keep-runs] RECORD OUT
 
 RECORD: a record written by `ohmdem-post acquire` (its '#' header holds the chain: column,
 scale, anti-alias low-pass, rate, noise, ADC). --metadata: the scene's run.json (bearing, speed,
@@ -29,8 +34,8 @@ deck: inputs/bearing_6208/in.bearing unless --deck). The runs, their acquisition
 kept under OUT (a second call reuses them; the runs' 1 MHz signals are deleted once acquired
 unless --keep-runs); OUT/locate.json holds the answer, also printed.
 About 30-40 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing; 120-200
-a record): 4-6 minutes on one core for the 6208's 0.3 s records. doc/ohmdem-post.md, "The outer
-pit's branch".
+a record): 4-6 minutes on one core for the 6208's 0.3 s records, 20-25 for 1.2 s ones.
+doc/ohmdem-post.md, "The outer pit's branch".
 """
 import argparse
 import json
@@ -45,7 +50,11 @@ import fold_compare
 # in.bearing's radial load pushes the outer ring along -y: the balls at +y (90 deg on the race)
 # carry it; diagnose's angles are from there, positive in the balls' direction of travel
 ZONE_CENTRE_DEG = 90.0
-MARGIN = 200.0
+# the margin by the folds' period: the largest chi2 between two independent realizations of
+# one scene (studies/branch_check.py --scatter, 15 scenes): grid folds 200 at 0.3 s
+# (branch.md; 1136 at 1.2 s, where the grid's smear differs from window to window), fine folds
+# 247 at 0.3 s and 155 at 1.2 s (doc/report/sizing/template/scatter_*.md)
+MARGINS = {"grid": 200.0, "fine": 250.0}
 ZONE_DEG = 63.0
 # each branch's runs lie within the phase's interval moved onto it, widened by this much either
 # side (the phase's centroid lies up to 2.8 deg off the pit in heldout_angles*.md)
@@ -56,6 +65,9 @@ REFINE_SPAN = 3.0
 # the best run's chi2 per bin beyond which no run of the scene is like the record (the records
 # of branch.md and blind.md: 0.1-6.5 per bin at the true branch)
 MAX_CHI2_PER_BIN = 20.0
+# grid folds: the length (s) up to which two realizations of a scene stay within the margin
+# (0.3 s: 10-200 in branch.md; 1.2 s: up to 1136, the smear of the grid's period)
+GRID_LENGTH_S = 0.375
 # the lowest rate whose held-out records the margin was checked on (20 and 50 kHz: none placed on
 # a wrong branch; at 10 kHz one of 12 was): below it a placement carries a caution
 CHECKED_RATE = 2e4
@@ -172,12 +184,13 @@ class Scene:
                 for f in os.listdir(sim):
                     if f == "signal.txt" or f.startswith("restart."):
                         os.remove(os.path.join(sim, f))
-        path = acq[:-4] + ".fold"
+        path = acq[:-4] + ("" if self.a.fold_period == "grid" else ".fine") + ".fold"
         if not os.path.exists(path) and not os.path.exists(path + ".none"):
             r = common.post(["diagnose", "--no-size", "--format", "json", "--column", self.name,
                              "--metadata", os.path.join(sim, "run.json"), "--from",
-                             repr(self.t_from), "--assume-defect", "outer", "--pulse-fold-out",
-                             path + ".part", acq], who="locate_outer", allow_fail=True)
+                             repr(self.t_from), "--assume-defect", "outer", "--fold-period",
+                             self.a.fold_period, "--pulse-fold-out", path + ".part", acq],
+                            who="locate_outer", allow_fail=True)
             if r.returncode != 0:
                 # a run the chain cannot fold (its period a near whole number of samples, as
                 # studies/template_bank.py skips): no fold, said once and kept
@@ -193,12 +206,21 @@ class Scene:
 
 
 def first_stage(a, record_fold):
-    """diagnose's template fit on the record: its JSON."""
+    """diagnose's template fit on the record: its JSON (the record's fold as the bank's, for
+    the branches' starting sizes)."""
     args = ["diagnose", "--format", "json", "--column", a.column, "--metadata", a.metadata,
             "--from", repr(a.t_from), "--assume-defect", "outer", "--pulse-fold-out", record_fold]
     if a.bank:
         args += ["--size-method", "template", "--template-bank", a.bank]
     return json.loads(common.post(args + [a.record], who="locate_outer").stdout)
+
+
+def record_fold_as_runs(a, path):
+    """The record folded as the runs are (--fold-period), for the comparisons."""
+    common.post(["diagnose", "--no-size", "--format", "json", "--column", a.column, "--metadata",
+                 a.metadata, "--from", repr(a.t_from), "--assume-defect", "outer",
+                 "--fold-period", a.fold_period, "--pulse-fold-out", path, a.record],
+                who="locate_outer")
 
 
 def decide(found, margin, bins, spacing):
@@ -221,6 +243,15 @@ def decide(found, margin, bins, spacing):
                    f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
                    f"realization of the same record reaches it); modulo the ball spacing "
                    f"{spacing:.4g} deg")
+
+
+def fold_and_margin(length_s, fold_period, margin):
+    """The folds' period for a record of length_s (auto: grid up to GRID_LENGTH_S, as checked
+    on held-out records in sessions 16-18; fine beyond, where the grid's smear outgrows the
+    margin) and the margin (that period's calibration unless given)."""
+    if fold_period == "auto":
+        fold_period = "grid" if length_s <= GRID_LENGTH_S else "fine"
+    return fold_period, MARGINS[fold_period] if margin is None else margin
 
 
 def mirror_pair(found, margin):
@@ -250,11 +281,17 @@ def main(argv):
     ap.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"))
     ap.add_argument("--zone", type=float, default=ZONE_DEG,
                     help="branches within this many deg of the load line")
-    ap.add_argument("--margin", type=float, default=MARGIN)
+    ap.add_argument("--margin", type=float, default=None,
+                    help="the chi2 margin (default: 200 for grid folds, 250 for fine ones)")
     ap.add_argument("--seed", type=int, default=8, help="the runs' acquisition noise seed")
     ap.add_argument("--format", choices=("json", "text"), default="json")
     ap.add_argument("--keep-runs", action="store_true",
                     help="keep each run's signal and restart files (~100 MB a run)")
+    ap.add_argument("--fold-period", choices=("auto", "fine", "grid"), default="auto",
+                    help="how the record and the runs are folded for the comparisons (diagnose's "
+                    "--fold-period): auto (default) grid up to %g s of record (as checked on "
+                    "held-out records in sessions 16-18), fine beyond (the grid's smear outgrows "
+                    "the margin there)" % GRID_LENGTH_S)
     ap.add_argument("--window", type=float, default=WINDOW_DEG,
                     help="deg added either side of the phase's interval on each branch")
     a = ap.parse_args(argv)
@@ -263,10 +300,11 @@ def main(argv):
             fail(f"{what}: no such file '{path}'")
     if a.bank and not os.path.isfile(a.bank):
         fail(f"--bank: no such file '{a.bank}'")
-    if not (a.zone > 0 and a.margin >= 0 and a.window >= 0):
+    if not (a.zone > 0 and (a.margin is None or a.margin >= 0) and a.window >= 0):
         fail("--zone expects deg > 0, --margin a chi2 >= 0 and --window deg >= 0")
     chain, start, end, name = read_chain(a.record)
     a.t_from = start if a.t_from is None else a.t_from
+    a.fold_period, a.margin = fold_and_margin(end - a.t_from, a.fold_period, a.margin)
     a.column = a.column or name
     with open(a.metadata) as f:
         meta = json.load(f)
@@ -281,7 +319,15 @@ def main(argv):
     spacing = 360.0 / nb
     phase = float(d["position_deg"])
     lo, hi = d.get("position_interval_deg") or [phase, phase]
-    rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
+    # the bank's starting sizes compare the bank with the record folded as the bank was; the
+    # runs, the record folded as they are
+    rec_bank = fold_compare.prepared(fold_compare.read_fold(record_fold))
+    if a.fold_period == "grid":
+        rec = rec_bank
+    else:
+        record_fold = os.path.join(a.out, f"record.{a.fold_period}.fold")
+        record_fold_as_runs(a, record_fold)
+        rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
     bins = int(0.9 * len(rec[0]))
     bin_s = fold_compare.read_header(record_fold).get("bin (s)")
     if bin_s is None:
@@ -307,7 +353,7 @@ def main(argv):
         # branch.md): so that every branch is searched from a size fit for it
         sizes0 = [size0] if size0 is not None else []
         if bank:
-            own = fold_compare.bank_best_size(bank, bin_s, rec, abs(centre))
+            own = fold_compare.bank_best_size(bank, bin_s, rec_bank, abs(centre))
             if size0 is None or abs(math.log(own / size0)) > math.log(1.15):
                 sizes0.append(own)
         runs = {}
@@ -337,8 +383,13 @@ def main(argv):
     if placed and rate < CHECKED_RATE:
         note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the margin does not hold (at 10 kHz "
                  "one of 12 held-out pits was placed a ball spacing off: doc/ohmdem-post.md)")
+    if placed and a.fold_period == "grid" and end - a.t_from > GRID_LENGTH_S:
+        note += (f"; caution: folds at the grid's period on a record longer than "
+                 f"{GRID_LENGTH_S:g} s differ by their smear beyond the margin "
+                 "(doc/ohmdem-post.md)")
     ordered = sorted(found)
-    result = {"position_reference": "load direction", "phase_deg": phase,
+    result = {"position_reference": "load direction", "fold_period": a.fold_period,
+              "record_length_s": round(end - a.t_from, 6), "phase_deg": phase,
               "phase_interval_deg": [lo, hi], "ball_spacing_deg": spacing,
               "window_deg": [-half, half],
               "first_stage_size_deg": d.get("size_deg"), "margin": a.margin, "bins": bins,

@@ -20,7 +20,8 @@ constexpr std::size_t kMinPasses = 32;
 
 }  // namespace
 
-FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int oversample)
+FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int oversample,
+                       FoldPeriod how)
 {
   if (!(rate > 0 && f > 0 && oversample >= 1))
     throw std::invalid_argument("pulse fold: rate, defect frequency and oversampling must be > 0");
@@ -33,7 +34,11 @@ FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int 
              "relative to it";
     return p;
   }
-  const double period = rate / refine_repetition(x, rate, f);  // samples
+  const double f_grid = refine_repetition(x, rate, f);
+  // fine: the harmonics below 0.4 rate (an acquisition chain's anti-alias cut-off)
+  const double period =
+      rate / (how == FoldPeriod::fine ? refine_repetition_fine(x, rate, f_grid, 0.4 * rate)
+                                      : f_grid);  // samples
   const auto bins = static_cast<std::size_t>(std::floor(period * oversample));
   p.passes = static_cast<std::size_t>(static_cast<double>(x.size()) / period);
   if (!(period >= 4) || p.passes < kMinPasses) {
@@ -112,6 +117,7 @@ FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int 
   }
   p.bin_s = 1 / (rate * oversample);
   p.period_s = period / rate;
+  p.how = how;
   p.valid = true;
   return p;
 }

@@ -332,7 +332,8 @@ FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseO
     p.note = l.method;
     return p;
   }
-  return fold_pulse(s.x, s.rate, r.f);
+  return fold_pulse(s.x, s.rate, r.f, kTemplateOversample,
+                    o.fine_fold_period ? FoldPeriod::fine : FoldPeriod::grid);
 }
 
 LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
@@ -358,7 +359,8 @@ LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const 
                      "({diagnose.template_bank})");
     return l;
   }
-  const FoldedPulse p = fold_pulse(s.x, s.rate, r.f);
+  const FoldedPulse p = fold_pulse(s.x, s.rate, r.f, kTemplateOversample,
+                                   o.fine_fold_period ? FoldPeriod::fine : FoldPeriod::grid);
   const TemplateFit f = fit_templates(p, *o.template_bank);
   l = take_size(l, r, o.geometry, f);
   if (l.valid && std::isfinite(f.angle_deg)) {

@@ -28,6 +28,11 @@ namespace ohmdem::post {
 // Fine bins per sample of the fold: 4 keeps ~30 samples per bin over 130 passes (0.3 s).
 constexpr int kTemplateOversample = 4;
 
+// The fold's period: refine_repetition's grid (the committed banks' folds: up to 1/40 of a
+// period of drift over the record, a smear of the fold that differs from record to record), or
+// refined further on the harmonics' power (refine_repetition_fine: under 1/10^4).
+enum class FoldPeriod { grid, fine };
+
 // The record folded at its defect period, relative to its level (x / mean - 1), rotated so
 // that the pulse's entry (the largest rise over one sample) lies at a quarter of the period.
 struct FoldedPulse {
@@ -35,13 +40,14 @@ struct FoldedPulse {
   std::string note;         // why not
   double bin_s = 0;         // width of a bin (s): 1 / (rate x oversample)
   double period_s = 0;      // the refined defect period (s)
+  FoldPeriod how = FoldPeriod::grid;  // how it was refined
   std::size_t passes = 0;   // defect passes folded
   std::size_t entry = 0;    // the entry's bin (a quarter of the bins)
   std::vector<double> y;    // mean per bin
   std::vector<double> se;   // its standard error
 };
 FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f,
-                       int oversample = kTemplateOversample);
+                       int oversample = kTemplateOversample, FoldPeriod how = FoldPeriod::grid);
 
 // Simulated folds at known sizes (deg) and angles from the load direction (deg; one angle, 0,
 // when the scene has no load zone to place the pit in). Sizes x angles must form a full grid.

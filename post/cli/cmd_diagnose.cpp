@@ -181,6 +181,11 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--pulse-fold-out", "FILE",
            "write the record's pulse fold at the defect's frequency (relative to the level, per "
            "1/4 sample: lines 'Y SE'), from which studies/template_bank.py makes a bank");
+  a.option("--fold-period", "grid|fine",
+           "the period the record is folded at for --size-method template and --pulse-fold-out: "
+           "grid (the repetition of highest contrast on a grid whose step drifts the fold by "
+           "1/20 period over the record) or fine (then refined on the first harmonics' power, "
+           "to under 1/10^4 period); default: the --template-bank's '# fold period:', else grid");
   a.option("--width-curve", "FILE",
            "the model's width curve from simulations of the same scene through the record's "
            "chain: lines 'SIZE_DEG WIDTH_S' (the pulses' entry-to-exit width, JSON "
@@ -248,6 +253,19 @@ int run_diagnose(const std::vector<std::string> &argv)
     bank = read_template_bank(a.get("--template-bank"));
     check_bank(*bank, s, input_options(a).files.at(0), o.geometry.name, "", o.load);
     o.template_bank = &bank->bank;
+    o.fine_fold_period = bank->fine_fold_period;
+  }
+  if (a.has("--fold-period")) {
+    const std::string how = a.get("--fold-period");
+    if (how != "grid" && how != "fine")
+      throw Error("diagnose: --fold-period must be grid or fine, got '" + how + "'");
+    // a record folded otherwise than its bank's templates would differ from them by the smear
+    if (bank && (how == "fine") != bank->fine_fold_period)
+      throw Error("diagnose: --fold-period " + how +
+                  ": the --template-bank's folds were made at the " +
+                  (bank->fine_fold_period ? "fine" : "grid") +
+                  " period (its '# fold period:' line; absent: grid): fold the record alike");
+    o.fine_fold_period = how == "fine";
   }
   if (a.has("--size-curve"))  // accel-curve: the passes' energy against size, else the area
     read_curve(a.get("--size-curve"), "--size-curve", accel_curve ? "ENERGY_V2S" : "AREA_S",

@@ -68,6 +68,10 @@ BankFile read_template_bank(const std::string &path)
       if (key == "load") b.load = v;
       if (key == "lowpass") b.lowpass = filter_part(v);
       if (key == "sampling rate (Hz)") b.rate = number(path, key, v);
+      if (key == "fold period") {
+        if (v != "grid" && v != "fine") bad(path, "the fold period must be grid or fine");
+        b.fine_fold_period = v == "fine";
+      }
       if (key == "bin (s)") b.bank.bin_s = number(path, key, v), has_bin = true;
       if (key == "model error") {
         b.bank.model_error = number(path, key, v);
@@ -177,6 +181,7 @@ void write_fold(const std::string &path, const FoldedPulse &p, const std::string
       << "# lowpass: " << record_lowpass(record_path) << "\n"
       << "# bin (s): " << p.bin_s << "\n"
       << "# period (s): " << p.period_s << "\n"
+      << "# fold period: " << (p.how == FoldPeriod::fine ? "fine" : "grid") << "\n"
       << "# passes: " << p.passes << "\n"
       << "# Y SE\n";
   for (std::size_t j = 0; j < p.y.size(); ++j) out << p.y[j] << ' ' << p.se[j] << '\n';

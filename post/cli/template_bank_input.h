@@ -22,6 +22,8 @@ struct BankFile {
   TemplateBank bank;
   std::string bearing, defect, load, lowpass;
   double rate = 0;
+  // '# fold period: grid|fine' (absent: grid, the banks made before it was stated)
+  bool fine_fold_period = false;
 };
 
 // Throws Error naming --template-bank and the expected form on any malformed line.

@@ -121,6 +121,15 @@ def margin_rule(lo):
     mirror[2] = (19.5, 13.84, 13.715, 0.89, 38)
     mirror[3] = (120.0, 41.53, 41.53, 0.85, 30)
     check(lo.mirror_pair(mirror, 200) is None, "a third branch within the margin: no pair")
+    # the folds' period and margin by the record's length (session 23's calibration: grid folds
+    # of two realizations differ by up to chi2 200 at 0.3 s and 1136 at 1.2 s, fine ones 247
+    # and 155)
+    for args, want in (((0.3, "auto", None), ("grid", 200.0)),
+                       ((1.2, "auto", None), ("fine", 250.0)),
+                       ((0.3, "fine", None), ("fine", 250.0)),
+                       ((1.2, "grid", 300.0), ("grid", 300.0))):
+        got = lo.fold_and_margin(*args)
+        check(got == want, f"fold_and_margin{args}: {got}")
 
 
 def one_record(a, tmp):
@@ -153,6 +162,9 @@ def one_record(a, tmp):
     lo_, hi_ = d["position_interval_deg"]
     check(lo_ <= d["position_deg"] <= hi_ and hi_ - lo_ < 10, f"its interval: [{lo_}, {hi_}]")
     check(len(d["candidates"]) == 2 and d["runs_made"] > 4, "two branches searched, with runs")
+    check(d["fold_period"] == "grid" and d["margin"] == 200
+          and abs(d["record_length_s"] - 0.3) < 1e-3,
+          f"a 0.3 s record: grid folds, margin 200: {d['fold_period']}, {d['margin']}")
     with open(os.path.join(tmp, "out", "locate.json")) as f:
         check(json.load(f) == d, "OUT/locate.json holds the printed answer")
     big = [f for _, _, fs in os.walk(os.path.join(tmp, "out")) for f in fs if f == "signal.txt"]

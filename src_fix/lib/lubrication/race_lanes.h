@@ -182,9 +182,9 @@ struct RaceLanes {
     V index;
     for (int l = 0; l < kWidth; ++l) index[l] = l;
     I negligible = index >= static_cast<double>(m);
-    const I tail = ~negligible & (xm > 5.5);
-    I hopeless = tail & 0;
-    if (lanes::any<kIsa>(tail)) {
+    const I far = ~negligible & (xm > 5.5);  // real lanes where the tail bound applies
+    I hopeless = far & 0;
+    if (lanes::any<kIsa>(far)) {
       // min(floor(v), 1000) as floor(min(v, 1000)), the floor through 2^52 (0 <= v <= 1000).
       const V v =
           lanes::min<kIsa>(xm * xm * (1.4426950408889634 * (1.0 - 1e-12)), splat<V>(1000.0));
@@ -194,7 +194,7 @@ struct RaceLanes {
       negligible |= big & (cheap <= 0x1p-54) & (cheap * g_dry <= 1e-17 * leak);
       // ... unless the bound's lower bound 2^-(e+2) / (1.7725 x) already fails a test.
       const V low = (V)((Uint<V>)(1021 - e) << 52), scale = (1.7725 * 1.0001) * xm;
-      hopeless = tail & ~negligible & (v < 1000.0) &
+      hopeless = far & ~negligible & (v < 1000.0) &
                  ((low > 0x1p-54 * scale) | (low * g_dry > 1e-17 * leak * scale));
     }
     // ... then the bound itself from 5.5.

@@ -4,12 +4,15 @@
 // a bank of folds of pulses of known lengths, a record of a length the bank does not hold.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "bearing/diagnose.h"
 #include "bearing/pulse_template.h"
 #include "bearing/template_angle.h"
+#include "dsp/pulses.h"
 #include "pulse_records.h"
 
 namespace ohmdem::post {
@@ -51,6 +54,34 @@ TEST(PulseTemplate, FoldPutsTheEntryAtAQuarterAndKeepsTheJump)
   const double peak = *std::max_element(p.y.begin(), p.y.end());
   EXPECT_NEAR(peak, 0.45 / (1 + 0.45 * 200e-6 * kF), 0.02);
   EXPECT_GE(p.passes, 120u);
+}
+
+// A record whose repetition lies 0.4 of refine_repetition's step past the f it is given: the
+// grid's fold drifts by 0.4/20 of a period over the record (a smear of ~1 sample at 20 kHz); the
+// fine period is the generator's (theory: the record is made at f_true) to 1e-3 of a step, and
+// its fold the sharper. A flat record gives no power: f is kept.
+TEST(PulseTemplate, FinePeriodIsTheRecordsOwnBetweenTheGridsSteps)
+{
+  const double rate = 2e4;
+  const Signal probe = test_records::pulse_record(200e-6, kF, rate);
+  // the grid's relative step (dsp/pulses.cpp): 1/20 of a period of drift over the record
+  const double eps = 0.05 / (static_cast<double>(probe.x.size()) * kF / rate);
+  const double f_true = kF * (1 + 0.4 * eps);
+  const Signal s = test_records::pulse_record(200e-6, f_true, rate);
+  const FoldedPulse grid = fold_pulse(s.x, s.rate, kF);
+  const FoldedPulse fine = fold_pulse(s.x, s.rate, kF, kTemplateOversample, FoldPeriod::fine);
+  ASSERT_TRUE(grid.valid && fine.valid) << grid.note << fine.note;
+  EXPECT_EQ(grid.how, FoldPeriod::grid);
+  EXPECT_EQ(fine.how, FoldPeriod::fine);
+  const double grid_err = std::fabs(1 / (grid.period_s * f_true) - 1) / eps;
+  const double fine_err = std::fabs(1 / (fine.period_s * f_true) - 1) / eps;
+  EXPECT_GT(grid_err, 0.3);  // a case the grid steps past
+  EXPECT_LT(fine_err, 1e-3);
+  EXPECT_GT(*std::max_element(fine.y.begin(), fine.y.end()),
+            *std::max_element(grid.y.begin(), grid.y.end()));
+  const std::vector<double> flat(6000, 0.05);
+  EXPECT_EQ(refine_repetition_fine(flat, rate, kF, 0.4 * rate), kF);
+  EXPECT_EQ(refine_repetition_fine({}, rate, kF, 0.4 * rate), kF);
 }
 
 TEST(PulseTemplate, SizesAHeldOutPulseBetweenTheBanksAtEveryRate)

@@ -305,6 +305,41 @@ TEST(Cli, DiagnoseRefusesABadTemplateBank)
           "the angle error must lie in [0, 180) deg");
   // a template at another angle (15 deg) for one size only: sizes x angles no longer a full grid
   refused("bank_partial.txt", good + "2 15 8 0 0 0 0 0 0 0 0 1 1 1 1 1 1 1 1\n", "a full grid");
+  refused("bank_fold_period.txt", replaced("# load: force", "# load: force\n# fold period: exact"),
+          "the fold period must be grid or fine");
+}
+
+// The fold's period (issue 26): --fold-period fine states itself in the fold it writes, a bank
+// without a '# fold period:' line was folded on the grid and refuses a record folded otherwise,
+// a bank that states fine folds the record alike by itself, and a bad value names the option.
+TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  const std::string bank = data + "bank_inner_force_r20000_low.txt";
+  const std::string base = "diagnose " + data + "inner_2_force_p90_20kHz.txt --column V " +
+                           "--metadata " + data + "inner_2_force_p90.json --format json " +
+                           "--assume-defect inner";
+  const std::string fold = ohmdem::test::temp_dir().string() + "/fold_period.txt";
+  const CliRun fine = run(base + " --no-size --fold-period fine --pulse-fold-out " + fold);
+  ASSERT_EQ(fine.status, 0) << fine.out;
+  EXPECT_NE(test::slurp(fold).find("# fold period: fine\n"), std::string::npos);
+  const CliRun grid = run(base + " --no-size --pulse-fold-out " + fold);
+  ASSERT_EQ(grid.status, 0) << grid.out;
+  EXPECT_NE(test::slurp(fold).find("# fold period: grid\n"), std::string::npos);
+  const CliRun mixed =
+      run(base + " --size-method template --template-bank " + bank + " --fold-period fine");
+  EXPECT_NE(mixed.status, 0);
+  EXPECT_NE(mixed.out.find("folds were made at the grid period"), std::string::npos) << mixed.out;
+  std::string text = test::slurp(bank);
+  text.replace(text.find("# load: force"), 13, "# load: force\n# fold period: fine");
+  const CliRun stated = run(base + " --size-method template --template-bank " +
+                            test::write_temp("bank_fine.txt", text) + " --pulse-fold-out " + fold);
+  ASSERT_EQ(stated.status, 0) << stated.out;
+  EXPECT_NE(test::slurp(fold).find("# fold period: fine\n"), std::string::npos);
+  const CliRun bad = run(base + " --fold-period exact");
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.out.find("--fold-period must be grid or fine, got 'exact'"), std::string::npos)
+      << bad.out;
 }
 
 TEST(Cli, DiagnoseCsvAndTable)
