@@ -82,7 +82,8 @@ def main(argv):
         d = one(a.out, angle, size, a.rate, a.bank, a.mismatch, a.length)
         ok = d["branch_determined"]
         err = (d["position_deg"] - angle + 180) % 360 - 180 if ok else None
-        best = min(d["candidates"], key=lambda x: x["chi2"])
+        ranked = sorted(d["candidates"], key=lambda x: x["chi2"])
+        best = ranked[0]
         rows.append({"angle_deg": angle, "size_deg": size, "phase_deg": d["phase_deg"],
                      "position_deg": d["position_deg"], "error_deg": err,
                      "interval": d["position_interval_deg"], "determined": ok,
@@ -90,7 +91,10 @@ def main(argv):
                      "best_size_deg": best["best_run_size_deg"],
                      "mirror_distance_deg": d.get("distance_from_load_deg"),
                      "runs": sum(x["runs"] for x in d["candidates"]), "note": d["note"],
-                     "fold_period": d["fold_period"], "margin_used": d["margin"]})
+                     "fold_period": d["fold_period"], "margin_used": d["margin"],
+                     # placed or not: the best run's angle and chi2, and the runner-up's
+                     "best_run_deg": best["best_run_deg"], "best_chi2": best["chi2"],
+                     "next_chi2": ranked[1]["chi2"] if len(ranked) > 1 else None})
         print(rows[-1], flush=True)
         common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows, quoted=("note",))
     folds = "/".join(sorted({r["fold_period"] for r in rows}))
@@ -108,15 +112,17 @@ def main(argv):
              + (f"; the record's scene with {a.mismatch[0]} = {a.mismatch[1]}, the runs' (as the "
                 f"user states it) {a.mismatch[2]}" if a.mismatch else "") + ".",
              "", "| pit (deg from load, size) | phase (deg) | placed (deg) | interval | error (deg) "
-             "| chi2 margin | runs | note |", "|---" * 8 + "|"]
+             "| chi2 margin | best run (deg): chi2, runner-up's | runs | note |", "|---" * 9 + "|"]
     for r in rows:
         iv = "-" if not r["interval"] else f"[{r['interval'][0]:.1f}, {r['interval'][1]:.1f}]"
         lines.append(
             f"| {r['angle_deg']:g}, {r['size_deg']:g} | {r['phase_deg']:.1f} | "
             + ("not determined" if not r["determined"] else f"{r['position_deg']:.2f}")
             + f" | {iv} | " + ("-" if r["error_deg"] is None else f"{r['error_deg']:+.2f}")
-            + f" | {'-' if r['margin'] is None else format(r['margin'], '.0f')} | {r['runs']} | "
-            f"{r['note']} |")
+            + f" | {'-' if r['margin'] is None else format(r['margin'], '.0f')} | "
+            f"{r['best_run_deg']:g}: {r['best_chi2']:.0f}, "
+            + ("-" if r["next_chi2"] is None else f"{r['next_chi2']:.0f}")
+            + f" | {r['runs']} | {r['note']} |")
     n = len(rows)
     placed = sum(r["determined"] for r in rows)
     right = sum(bool(r["within_15"]) for r in rows)
