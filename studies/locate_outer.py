@@ -319,15 +319,12 @@ def main(argv):
     spacing = 360.0 / nb
     phase = float(d["position_deg"])
     lo, hi = d.get("position_interval_deg") or [phase, phase]
-    # the bank's starting sizes compare the bank with the record folded as the bank was; the
-    # runs, the record folded as they are
+    # the bank's starting sizes compare the bank with the record folded as the bank was (the
+    # first stage's fold); the runs, the record folded as they are
     rec_bank = fold_compare.prepared(fold_compare.read_fold(record_fold))
-    if a.fold_period == "grid":
-        rec = rec_bank
-    else:
-        record_fold = os.path.join(a.out, f"record.{a.fold_period}.fold")
-        record_fold_as_runs(a, record_fold)
-        rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
+    record_fold = os.path.join(a.out, f"record.{a.fold_period}.fold")
+    record_fold_as_runs(a, record_fold)
+    rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
     bins = int(0.9 * len(rec[0]))
     bin_s = fold_compare.read_header(record_fold).get("bin (s)")
     if bin_s is None:
