@@ -57,8 +57,9 @@ struct DiagnoseOptions {
   double width_rel_error = 0;        // its own relative error, as curve_rel_error
   // the model's pulse templates (bearing/pulse_template.h) for the template-fit size, or none
   const TemplateBank *template_bank = nullptr;
-  // the record's fold (template fit, --pulse-fold-out) at refine_repetition_fine's period
-  // instead of the grid's (bearing/pulse_template.h FoldPeriod); a bank states its own
+  // the record's fold (the template fit's, and the one written out) at the period of
+  // refine_repetition_fine instead of the grid's (pulse_template.h FoldPeriod); a bank states
+  // its own
   bool fine_fold_period = false;
   double false_alarm = 1e-3;         // per detection test
   const Signal *baseline = nullptr;  // healthy reference record (same rate), or none
