@@ -4,9 +4,11 @@
 (`diagnose --pulse-fold-out`: 'Y SE' per quarter sample, the entry at a quarter of the period)
 against a run's, the load zone's first two harmonics removed (pulse_template.cpp's
 without_cycle), aligned within two samples (sub-bin) and a constant fitted; chi2 in units of both
-folds' standard errors (the averaged pulse's). And the search of the runs of one place nearest a
-record, along the size and the angle. Used by studies/branch_check.py (is the branch in the
-record?) and studies/locate_outer.py (the outer pit's branch, the second stage after diagnose).
+folds' standard errors (the averaged pulse's), over the fold or over the pulse's window alone
+(pulse_window(): a straight line fitted there instead of the constant). And the search of the
+runs of one place nearest a record, along the size and the angle. Used by
+studies/branch_check.py (is the branch in the record?) and studies/locate_outer.py (the outer
+pit's branch, the second stage after diagnose).
 """
 import math
 
@@ -18,6 +20,13 @@ OVERSAMPLE = 4  # fold bins per sample
 MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
 # the search's steps: sizes 8 % apart, angles 0.5 deg apart (within 3 deg of the start)
 SIZE_STEP, ANGLE_STEP = 1.08, 0.5
+# the pulse's window in the fold, in periods (the entry at 0.25): from 0.1 before the entry to
+# 0.25 after, or twice the ball's time over the pit when longer. Two realizations of one scene
+# differ mostly outside it, in the load zone's slow cycle, which without_cycle's two harmonics
+# (fitted on the fold's last 40 %) leave a few standard errors a bin apart: chi2 up to 1402 over
+# the whole fold of two 1.2 s realizations, 73 in the window with a line fitted
+# (doc/report/sizing/template/scatter_*.md)
+WINDOW_FROM, WINDOW_AFTER = 0.15, 0.25
 
 
 def read_header(path):
@@ -85,9 +94,17 @@ def shifted(y, base):
     return (1 - u) * y[i0] + u * y[(i0 + 1) % n], u
 
 
-def misfit(rec, tmpl, n, shift, bin_s, model, scale_free):
+def pulse_window(size_deg, nb):
+    """The pulse's window (fractions of the fold's period) for a pit of size_deg on a race of nb
+    balls: a ball crosses it in size_deg nb / 360 of the outer race's ball-pass period."""
+    crossing = size_deg * nb / 360.0
+    return WINDOW_FROM, min(0.25 + max(WINDOW_AFTER, 2 * crossing), 0.9)
+
+
+def misfit(rec, tmpl, n, shift, bin_s, model, scale_free, window=None):
     """chi2 of rec (shifted) against tmpl over n bins, a constant (and with scale_free a scale
-    of tmpl) fitted; returns chi2, the residual, the weights, the scale."""
+    of tmpl) fitted; with window (from, to: fractions of the period) over the bins there alone,
+    a line fitted. Returns chi2, the residual, the weights (0 outside the window), the scale."""
     yr, u = shifted(rec[0], shift)
     ser, _ = shifted(rec[1], shift)
     yt, st = tmpl[0][:n], tmpl[1][:n]
@@ -97,37 +114,54 @@ def misfit(rec, tmpl, n, shift, bin_s, model, scale_free):
         slope = 0.5 * (np.r_[yt[1:], yt[-1]] - np.r_[yt[0], yt[:-1]])
         var = var + (MODEL_REL * yt) ** 2 + (MODEL_JITTER_S / bin_s * slope) ** 2
     w = 1 / var
-    a = np.c_[np.ones(n), yt] if scale_free else np.ones((n, 1))
+    a = np.ones((n, 1))
+    if window:
+        u = np.arange(n) / len(rec[0])
+        w = np.where((u >= window[0]) & (u < window[1]), w, 0.0)
+        a = np.c_[a, u - 0.5 * (window[0] + window[1])]
+    if scale_free:
+        a = np.c_[a, yt]
     target = yr if scale_free else yr - yt
     coef = np.linalg.solve(a.T @ (w[:, None] * a), a.T @ (w * target))
     r = target - a @ coef
-    return float(np.sum(w * r * r)), r, w, (coef[1] if scale_free else 1.0)
+    return float(np.sum(w * r * r)), r, w, (coef[-1] if scale_free else 1.0)
 
 
-def compare(rec, tmpl, bin_s, model=False, scale_free=False):
-    """The least misfit over shifts within two samples (every bin, then the parabola)."""
+def compared_bins(rec, tmpl, window=None):
+    """How many bins compare() counts: 0.9 of the shorter fold, or those of them in the window."""
+    n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
+    if not window:
+        return n
+    u = np.arange(n) / len(rec[0])
+    return int(np.sum((u >= window[0]) & (u < window[1])))
+
+
+def compare(rec, tmpl, bin_s, model=False, scale_free=False, window=None):
+    """The least misfit over shifts within two samples (every bin, then the parabola); window:
+    over the pulse's window alone (pulse_window())."""
     n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
     reach = 2 * OVERSAMPLE
-    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free)[0] for k in range(-reach, reach + 1)]
+    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free, window)[0]
+         for k in range(-reach, reach + 1)]
     i = int(np.argmin(c))
     s = float(i - reach)
     if 0 < i < len(c) - 1:
         curv = c[i - 1] - 2 * c[i] + c[i + 1]
         if curv > 0:
             s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv
-            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free)[0] < c[i]:
+            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free, window)[0] < c[i]:
                 s = s2
-    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free)
+    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free, window)
     z = r * np.sqrt(w)
     k = int(np.argmax(np.abs(z)))
-    return {"dprime": math.sqrt(chi2), "n": n, "max": float(abs(z[k])),
-            "max_at_us": (k - len(rec[0]) / 4) * bin_s * 1e6, "shift_us": s * bin_s * 1e6,
-            "scale": scale}
+    return {"dprime": math.sqrt(chi2), "n": compared_bins(rec, tmpl, window),
+            "max": float(abs(z[k])), "max_at_us": (k - len(rec[0]) / 4) * bin_s * 1e6,
+            "shift_us": s * bin_s * 1e6, "scale": scale}
 
 
-def chi2_noise(rec, tmpl, bin_s):
+def chi2_noise(rec, tmpl, bin_s, window=None):
     """compare()'s chi2 (the standard errors alone)."""
-    return compare(rec, tmpl, bin_s)["dprime"] ** 2
+    return compare(rec, tmpl, bin_s, window=window)["dprime"] ** 2
 
 
 def log_vertex(sizes, chi2):

@@ -10,18 +10,20 @@ widened by --window deg either side) within --zone deg of the load line, samples
 window for the run whose fold (acquired through the record's own chain, as its header states
 it) is nearest the record's (every 0.5 deg at the first stage's size, then the size 8 % apart
 at the two best angles, then the angle to 0.25 deg: the misfit is too rugged in the angle to
-descend), refines the branches within 3 margins of the best to 1/8 deg and then 1/16 deg, the
+descend), refines the branches within chi2 600 of the best to 1/8 deg and then 1/16 deg, the
 size again at each new angle, and keeps the branch whose best run fits best, when it beats the
-runner-up by a chi2 margin of more than --margin (the largest chi2 between two independent
-realizations of one scene: 200 for folds at diagnose's grid period, in
-doc/report/sizing/template/branch.md, chosen on the cases of blind.md and held fixed since; 250
-for folds at the fine period, scatter_*_fine.md). Else the branch is not determined, and the
+runner-up by a chi2 margin of more than --margin. The folds are compared over the pulse's window
+(fold_compare.pulse_window(): from 0.1 period before the entry to 0.25 after, a line fitted),
+where two realizations of one scene differ least; the margin is the largest chi2 between two
+independent realizations of one scene there, over 51 scenes (pits of 0.3-3 deg, -30 to 57.5
+deg from the load line: doc/report/sizing/template/scatter_*.md). Else the branch is not
+determined, and the
 candidates within the margin are listed; when they are two mirror images about the load line (a
 pit about half a ball spacing from it), the pit's distance from the load line is given. The
 record and the runs are folded at the grid's period up to 0.375 s of record and at the fine one
 beyond (--fold-period auto): the grid's smear, which differs from window to window, outgrows
-the margin on long records (two realizations of 1.2 s: chi2 up to 1136), the fine period's
-does not (155).
+the margin on long records (two realizations of 1.2 s, over the whole fold: chi2 up to 1136
+at the grid's period, 155 at the fine one, on 15 scenes).
 
   studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
       [--var NAME VALUE ...] [--zone 63] [--margin CHI2] [--fold-period auto|grid|fine]
@@ -51,19 +53,21 @@ import fold_compare
 # carry it; diagnose's angles are from there, positive in the balls' direction of travel
 ZONE_CENTRE_DEG = 90.0
 # the margin by the folds' period: the largest chi2 between two independent realizations of
-# one scene (studies/branch_check.py --scatter, 15 scenes): grid folds 200 at 0.3 s
-# (branch.md; 1136 at 1.2 s, where the grid's smear differs from window to window), fine folds
-# 247 at 0.3 s and 155 at 1.2 s (doc/report/sizing/template/scatter_*.md)
-MARGINS = {"grid": 200.0, "fine": 250.0}
+# one scene in the pulse's window (studies/branch_check.py --scatter, 51 scenes:
+# doc/report/sizing/template/scatter_*.md), rounded up to a ten: grid folds 44 at 0.3 s, fine
+# folds 40 at 0.3 s and 73 at 1.2 s (over the whole fold: 345, 433 and 1402)
+MARGINS = {"grid": 50.0, "fine": 80.0}
 ZONE_DEG = 63.0
 # each branch's runs lie within the phase's interval moved onto it, widened by this much either
 # side (the phase's centroid lies up to 2.8 deg off the pit in heldout_angles*.md)
 WINDOW_DEG = 2.0
-# branches whose best scanned run lies within this many margins of the best branch's are refined
-# (fold_compare.refine()): their best lies up to 0.25 deg off the scan's grid
-REFINE_SPAN = 3.0
+# branches whose best scanned run lies within this chi2 of the best branch's (or 3 margins, if
+# more) are refined (fold_compare.refine()): their best lies up to 0.25 deg off the scan's grid,
+# which cost it up to a few hundred over the whole fold (chi2 296-956 at +-0.5 deg from the pit
+# on the test's 1.5 deg pit), the span kept when the margins fell
+REFINE_SPAN = 600.0
 # the best run's chi2 per bin beyond which no run of the scene is like the record (the records
-# of branch.md and blind.md: 0.1-6.5 per bin at the true branch)
+# of branch.md and blind.md: 0.1-6.5 per bin at the true branch over the whole fold)
 MAX_CHI2_PER_BIN = 20.0
 # grid folds: the length (s) up to which two realizations of a scene stay within the margin
 # (0.3 s: 10-200 in branch.md; 1.2 s: up to 1136, the smear of the grid's period)
@@ -282,7 +286,7 @@ def main(argv):
     ap.add_argument("--zone", type=float, default=ZONE_DEG,
                     help="branches within this many deg of the load line")
     ap.add_argument("--margin", type=float, default=None,
-                    help="the chi2 margin (default: 200 for grid folds, 250 for fine ones)")
+                    help="the chi2 margin (default: 50 for grid folds, 80 for fine ones)")
     ap.add_argument("--seed", type=int, default=8, help="the runs' acquisition noise seed")
     ap.add_argument("--format", choices=("json", "text"), default="json")
     ap.add_argument("--keep-runs", action="store_true",
@@ -325,7 +329,6 @@ def main(argv):
     record_fold = os.path.join(a.out, f"record.{a.fold_period}.fold")
     record_fold_as_runs(a, record_fold)
     rec = fold_compare.prepared(fold_compare.read_fold(record_fold))
-    bins = int(0.9 * len(rec[0]))
     bin_s = fold_compare.read_header(record_fold).get("bin (s)")
     if bin_s is None:
         fail(f"{record_fold}: diagnose's fold states no '# bin (s):'")
@@ -337,6 +340,11 @@ def main(argv):
         fail("the first stage gives no size to begin the runs at (" +
              str(d.get("size_note", d.get("size_method", ""))) + "): give a --bank for the "
              "record's chain (studies/template_bank.py writes one)")
+    # the folds are compared over the pulse's window, for the first stage's size (else the bank's
+    # largest: a window too long only adds bins)
+    size_w = size0 if size0 is not None else max(k[0] for k in bank)
+    window = fold_compare.pulse_window(size_w, nb)
+    bins = fold_compare.compared_bins(rec, rec, window)
     half = 0.5 * (hi - lo) + a.window
     ks = [k for k in range(-nb, nb + 1) if abs(phase + k * spacing) <= a.zone]
     if not ks:
@@ -358,7 +366,8 @@ def main(argv):
         def chi2_at(ang, sz, runs=runs):
             if (ang, sz) not in runs:
                 fo = scene.fold(ang, sz)  # None: a run without a fold counts as no fit
-                runs[(ang, sz)] = math.inf if fo is None else fold_compare.chi2_noise(rec, fo, bin_s)
+                runs[(ang, sz)] = (math.inf if fo is None else
+                                   fold_compare.chi2_noise(rec, fo, bin_s, window))
             return runs[(ang, sz)]
         chi2, sz, ang = fold_compare.scan(chi2_at, centre - half, centre + half, sizes0)
         branches[round(centre, 2)] = (chi2_at, runs, centre - half, centre + half)
@@ -369,7 +378,7 @@ def main(argv):
     # best sampled run lies up to 0.25 deg off its minimum, which costs it up to a few hundred
     best = min(found)[0]
     for i, (chi2, centre, ang, sz, _) in enumerate(found):
-        if chi2 - best <= REFINE_SPAN * a.margin:
+        if chi2 - best <= max(REFINE_SPAN, 3 * a.margin):
             chi2_at, runs, b_lo, b_hi = branches[centre]
             chi2, sz, ang = fold_compare.refine(chi2_at, (chi2, sz, ang), b_lo, b_hi)
             found[i] = (chi2, centre, ang, sz, len(runs))
@@ -390,6 +399,7 @@ def main(argv):
               "phase_interval_deg": [lo, hi], "ball_spacing_deg": spacing,
               "window_deg": [-half, half],
               "first_stage_size_deg": d.get("size_deg"), "margin": a.margin, "bins": bins,
+              "pulse_window": [round(v, 4) for v in window],
               "candidates": [{"branch_deg": f[1], "best_run_deg": f[2], "best_run_size_deg": f[3],
                               "chi2": round(f[0], 3), "runs": f[4]}
                              for f in sorted(found, key=lambda f: f[1])],
