@@ -5,8 +5,8 @@
 Parts without runs: the chain read from a record's header repeats the record sample for sample;
 the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its noise, one 10 %
 higher does not; over the pulse's window a slow cycle after the pulse does not count); the
-refinement of a branch's best to 1/16 deg on a narrow misfit; the margin
-rule and the mirror pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the
+refinement of a branch's best to 1/16 deg on a narrow misfit; the margin rule and the mirror
+pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the
 branches 27.7 deg apart: this record's best run of the other branch has chi2 428 against 10 for
 its own in the pulse's window, studies/locate_outer.py on the same record in session 24),
 acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to 1 deg; and
@@ -77,8 +77,8 @@ def folds_compare(fc):
     check(c_higher > 0.9 * n + 0.7 * extra,
           f"a pulse 10 % higher does not: chi2 {c_higher:.0f} (bins + {extra:.0f})")
     # the pulse's window (0.15-0.5 of the period for a 1.5 deg pit on 13 balls): a slow cycle
-    # outside the pulse (the third harmonic, which without_cycle leaves, 5 se high) counts over
-    # the whole fold, not in the window, where a line takes what of it lies there; the pulse 10 %
+    # after it (a third harmonic, 5 se high, from half the period on: what without_cycle leaves
+    # between two realizations) counts over the whole fold, not in the window; the pulse 10 %
     # higher still does
     window = fc.pulse_window(1.5, 13)
     check(window == (0.15, 0.5), f"the window of a 1.5 deg pit on 13 balls: {window}")
