@@ -23,8 +23,8 @@ SIZE_STEP, ANGLE_STEP = 1.08, 0.5
 # the pulse's window in the fold, in periods (the entry at 0.25): from 0.1 before the entry to
 # 0.25 after, or twice the ball's time over the pit when longer. Two realizations of one scene
 # differ mostly outside it, in the load zone's slow cycle, which without_cycle's two harmonics
-# (fitted on the fold's last 40 %) leave a few standard errors a bin apart: chi2 up to 1402 over
-# the whole fold of two 1.2 s realizations, 73 in the window with a line fitted
+# (fitted on the fold's first 10 % and last 30 %) leave a few standard errors a bin apart: chi2
+# up to 1402 over the whole fold of two 1.2 s realizations, 73 in the window with a line fitted
 # (doc/report/sizing/template/scatter_*.md)
 WINDOW_FROM, WINDOW_AFTER = 0.15, 0.25
 

@@ -17,13 +17,12 @@ runner-up by a chi2 margin of more than --margin. The folds are compared over th
 where two realizations of one scene differ least; the margin is the largest chi2 between two
 independent realizations of one scene there, over 51 scenes (pits of 0.3-3 deg, -30 to 57.5
 deg from the load line: doc/report/sizing/template/scatter_*.md). Else the branch is not
-determined, and the
-candidates within the margin are listed; when they are two mirror images about the load line (a
-pit about half a ball spacing from it), the pit's distance from the load line is given. The
-record and the runs are folded at the grid's period up to 0.375 s of record and at the fine one
-beyond (--fold-period auto): the grid's smear, which differs from window to window, outgrows
-the margin on long records (two realizations of 1.2 s, over the whole fold: chi2 up to 1136
-at the grid's period, 155 at the fine one, on 15 scenes).
+determined, and the candidates within the margin are listed; when they are two mirror images
+about the load line (a pit about half a ball spacing from it), the pit's distance from the load
+line is given. The record and the runs are folded at the grid's period up to 0.375 s of record
+and at the fine one beyond (--fold-period auto): the grid's smear, which differs from window to
+window, outgrows the margin on long records (two realizations of 1.2 s, over the whole fold:
+chi2 up to 1136 at the grid's period, 155 at the fine one, on 15 scenes).
 
   studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
       [--var NAME VALUE ...] [--zone 63] [--margin CHI2] [--fold-period auto|grid|fine]
