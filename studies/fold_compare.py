@@ -20,6 +20,8 @@ OVERSAMPLE = 4  # fold bins per sample
 MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
 # the search's steps: sizes 8 % apart, angles 0.5 deg apart (within 3 deg of the start)
 SIZE_STEP, ANGLE_STEP = 1.08, 0.5
+# dense(): how far either side of a branch's refined best its runs are all looked at (deg)
+DENSE_SPAN_DEG = 0.5
 # the pulse's window in the fold, in periods (the entry at 0.25): from 0.1 before the entry to
 # 0.25 after, or twice the ball's time over the pit when longer. Two realizations of one scene
 # differ mostly outside it, in the load zone's slow cycle, which without_cycle's two harmonics
@@ -312,4 +314,38 @@ def refine(chi2_at, best, lo, hi, steps=(ANGLE_STEP / 4, ANGLE_STEP / 8)):
                 break
         if best[2] != at:
             best = min(best, size_line(chi2_at, best[2], best[1]) + (best[2],))
+    return best
+
+
+def rescan(chi2_at, best, lo, hi, step=ANGLE_STEP / 2):
+    """A branch's best run (chi2, size, angle) when scan() sampled the angles at a size off the
+    pit's: there the misfit may hardly depend on the angle (a 0.7 deg pit sampled at 0.8 deg:
+    chi2 200-300 over 3.5 deg, its own angle's neighbours not the lowest), and the angle scan()
+    kept is chance. The angle again every `step` over [lo, hi] at the best size; from a better
+    run, the size there (size_line()) and refine(). Returns (chi2, size, angle)."""
+    sz = best[1]
+    n = max(int(math.floor((hi - lo) / step + 1e-9)), 0)
+    mid = 0.5 * (lo + hi)
+    angles = [round(mid + step * (k - n / 2), 2) for k in range(n + 1)]
+    found = min((chi2_at(a, sz), sz, a) for a in angles)
+    if found >= best:
+        return best
+    found = min(found, size_line(chi2_at, found[2], sz) + (found[2],))
+    return min(best, refine(chi2_at, found, lo, hi))
+
+
+def dense(chi2_at, best, lo, hi, span=DENSE_SPAN_DEG, step=ANGLE_STEP / 8):
+    """A refined best run (chi2, size, angle) checked against every run `step` apart within `span`
+    deg either side at its size (within [lo, hi]): the misfit is rugged at 1/16 deg (each run its
+    own realization), so refine()'s walk can stop on a local minimum up to ~60 above the branch's
+    least (doc/ohmdem-post.md). When a run there fits better, the size again at its angle
+    (size_line()). Returns (chi2, size, angle)."""
+    at, sz = best[2], best[1]
+    n = int(round(span / step))
+    for k in range(-n, n + 1):
+        b = round(at + k * step, 3)
+        if k and lo - 1e-9 <= b <= hi + 1e-9:
+            best = min(best, (chi2_at(b, sz), sz, b))
+    if best[2] != at:
+        best = min(best, size_line(chi2_at, best[2], sz) + (best[2],))
     return best

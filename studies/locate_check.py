@@ -16,7 +16,7 @@ is told VALUE (--var), as when the user knows the scene only roughly (F 336 320:
 5 % above the stated one).
 
 Writes OUT/locate_check.csv and OUT/locate_check.md (one row per case, written as it goes); each
-case's runs under OUT/<case>/ (4-6 minutes a case on one core).
+case's runs under OUT/<case>/ (5-7 minutes a case on one core).
 """
 import argparse
 import json

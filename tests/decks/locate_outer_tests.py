@@ -5,9 +5,10 @@
 Parts without runs: the chain read from a record's header repeats the record sample for sample;
 the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its noise, one 10 %
 higher does not; over the pulse's window a slow cycle after the pulse does not count); the
-refinement of a branch's best to 1/16 deg on a narrow misfit; the margin rule and the mirror
-pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the
-branches 27.7 deg apart: this record's best run of the other branch has chi2 428 against 10 for
+refinement of a branch's best to 1/16 deg on a narrow misfit; the rescan at the best size when
+the scan's size was off; the dense look past a local minimum of a rugged misfit; the margin rule
+and the mirror pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the branches
+27.7 deg apart: this record's best run of the other branch has chi2 428 against 10 for
 its own in the pulse's window, studies/locate_outer.py on the same record in session 24),
 acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to 1 deg; and
 the errors of a record not from acquire and of a scene without a radial load.
@@ -123,6 +124,55 @@ def refine_narrows(fc):
           f"refine keeps to its window: {ang:g} deg at its edge 19.5")
 
 
+def dense_finds(fc):
+    # a rugged misfit (each run its own realization): a local minimum at 20.0 deg where refine()
+    # stops, the branch's least 0.375 deg away, 70 lower; dense() looks at every 1/16 deg within
+    # 0.5 deg and finds it, then the size there; never outside [lo, hi] nor beyond 0.5 deg
+    calls = []
+
+    def chi2_at(ang, sz):
+        calls.append((ang, sz))
+        floor = 30 if abs(ang - 20.375) < 1e-6 else 100 if abs(ang - 20.0) < 1e-6 else 150
+        return floor + 400 * math.log(sz / 1.37) ** 2
+
+    start = (chi2_at(20.0, 1.37), 1.37, 20.0)
+    refined = fc.refine(chi2_at, start, 17.5, 22.5)
+    check(refined[2] == 20.0, f"refine stops on the local minimum: {refined}")
+    del calls[:]
+    c, sz, ang = fc.dense(chi2_at, refined, 17.5, 22.5)
+    check(ang == 20.375 and abs(sz / 1.37 - 1) < 0.04 and c < 31,
+          f"dense: {ang:g} deg, {sz:g} deg of pit, chi2 {c:.1f} (the least: 20.375, 1.37, 30)")
+    check(all(19.5 - 1e-9 <= a <= 20.5 + 1e-9 for a, _ in calls[:16]) and len(calls) > 16,
+          "dense looks within 0.5 deg, then the size at the new angle")
+    del calls[:]
+    c, sz, ang = fc.dense(chi2_at, refined, 19.0, 20.25)
+    check(ang == 20.0 and calls and all(a <= 20.25 for a, _ in calls),
+          f"dense keeps to its window: {ang:g} deg, the least beyond its edge 20.25")
+
+
+def rescan_finds(fc):
+    # the pit's angle sharp only at its size (0.1 deg wide, a local minimum 2.3 deg away): scan()
+    # at a size 14 % off keeps the local minimum, refine() stays there (chi2 105, over a margin
+    # of 50); rescan() at the best size every 0.25 deg finds the pit's basin and refines into it
+    calls = []
+
+    def chi2_at(ang, sz):
+        calls.append((ang, sz))
+        basin = 100 if abs(ang - 18.0) < 1e-6 else 250 * min(1, (ang - 20.3) ** 2 / 0.01)
+        return 5 + basin + 2000 * math.log(sz / 0.7) ** 2
+
+    lo, hi = 17.5, 22.5
+    best = fc.refine(chi2_at, fc.scan(chi2_at, lo, hi, [0.8]), lo, hi)
+    check(best[2] == 18.0 and best[0] > 50, f"scan and refine keep the local minimum: {best}")
+    c, sz, ang = fc.rescan(chi2_at, best, lo, hi)
+    check(abs(ang - 20.3) <= 1 / 16 and abs(sz / 0.7 - 1) < 0.04 and c < 10,
+          f"rescan: {ang:g} deg, {sz:g} deg of pit, chi2 {c:.1f} (the pit: 20.3, 0.7)")
+    del calls[:]
+    got = fc.rescan(chi2_at, best, 17.5, 19.5)
+    check(got == best and calls and all(17.5 <= a <= 19.5 for a, _ in calls),
+          f"rescan keeps to its window and its best when nothing fits better: {got}")
+
+
 def margin_rule(lo):
     placed, note = lo.decide([(350.0, -7.5, -7.5, 1.5, 10), (100.0, 20.2, 20.0, 1.5, 12)],
                              200, 175, 27.69)
@@ -180,9 +230,9 @@ def one_record(a, tmp):
     d = json.loads(r.stdout)
     print(json.dumps({k: d[k] for k in ("position_deg", "note", "candidates")}))
     # on its branch, within 1 deg: the pulse's window places the angle less sharply than the
-    # whole fold did (19.398 in session 24; 20.023 over the whole fold in session 17), since
-    # part of the angle's signature lies in the load zone's cycle after the pulse, which is
-    # also where two realizations of the scene differ
+    # whole fold did (19.648 in session 25, 19.398 before its second look; 20.023 over the whole
+    # fold in session 17), since part of the angle's signature lies in the load zone's cycle
+    # after the pulse, which is also where two realizations of the scene differ
     check(d["branch_determined"] and abs(d["position_deg"] - 20.0) <= 1.0,
           f"the pit 20 deg from the load placed on its branch, within 1 deg: {d['position_deg']}")
     lo_, hi_ = d["position_interval_deg"]
@@ -221,6 +271,8 @@ def main():
         chain_repeats(a.post, locate_outer, tmp)
         folds_compare(fold_compare)
         refine_narrows(fold_compare)
+        rescan_finds(fold_compare)
+        dense_finds(fold_compare)
         margin_rule(locate_outer)
         one_record(a, tmp)
     finish()
