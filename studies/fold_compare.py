@@ -268,6 +268,13 @@ def size_line(chi2_at, angle, size0, limit=12):
     return min((c, sz) for sz, c in tried.items())
 
 
+def angle_grid(lo, hi, step):
+    """Angles `step` apart centred in [lo, hi] (to 0.01 deg), as scan() and rescan() sample."""
+    n = max(int(math.floor((hi - lo) / step + 1e-9)), 0)
+    mid = 0.5 * (lo + hi)
+    return [round(mid + step * (k - n / 2), 2) for k in range(n + 1)]
+
+
 def scan(chi2_at, lo, hi, sizes0, keep=2):
     """The run nearest a record within the window [lo, hi] deg (the misfit is rugged in the
     angle, with local minima ~1-2 deg apart, so it is sampled, not descended): every ANGLE_STEP
@@ -275,9 +282,7 @@ def scan(chi2_at, lo, hi, sizes0, keep=2):
     (size_line()); at the best of them the angle again ANGLE_STEP / 2 either side (kept within
     the window), at its size. chi2_at(angle, size) as search()'s. Returns (chi2, size, angle)
     of the best run."""
-    n = max(int(math.floor((hi - lo) / ANGLE_STEP + 1e-9)), 0)
-    mid = 0.5 * (lo + hi)
-    angles = [round(mid + ANGLE_STEP * (k - n / 2), 2) for k in range(n + 1)]
+    angles = angle_grid(lo, hi, ANGLE_STEP)
     first = sorted((chi2_at(a, round(s, 3)), a, s) for s in sizes0 for a in angles)
     starts = []
     for _, a, s in first:
@@ -324,10 +329,7 @@ def rescan(chi2_at, best, lo, hi, step=ANGLE_STEP / 2):
     kept is chance. The angle again every `step` over [lo, hi] at the best size; from a better
     run, the size there (size_line()) and refine(). Returns (chi2, size, angle)."""
     sz = best[1]
-    n = max(int(math.floor((hi - lo) / step + 1e-9)), 0)
-    mid = 0.5 * (lo + hi)
-    angles = [round(mid + step * (k - n / 2), 2) for k in range(n + 1)]
-    found = min((chi2_at(a, sz), sz, a) for a in angles)
+    found = min((chi2_at(a, sz), sz, a) for a in angle_grid(lo, hi, step))
     if found >= best:
         return best
     found = min(found, size_line(chi2_at, found[2], sz) + (found[2],))
