@@ -55,6 +55,11 @@ def one(out, angle, size, rate, bank, mismatch=None, length=LENGTH):
     return json.loads(r.stdout)
 
 
+def p_text(p):
+    """' (p 0.45)' for a branch's p-value, '' where none is calibrated."""
+    return "" if p is None else f" (p {p:.2g})"
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", default=",".join(f"{a:g}:{s:g}" for a, s in CASES),
@@ -95,9 +100,17 @@ def main(argv):
                      "pulse_window": "-".join(f"{v:g}" for v in d["pulse_window"]),
                      # placed or not: the best run's angle and chi2, and the runner-up's
                      "best_run_deg": best["best_run_deg"], "best_chi2": best["chi2"],
-                     "next_chi2": ranked[1]["chi2"] if len(ranked) > 1 else None})
+                     "next_chi2": ranked[1]["chi2"] if len(ranked) > 1 else None,
+                     # the p-values (locate_outer.own_branch_p(); None where not calibrated)
+                     "best_p": best["p_value"],
+                     "next_p": ranked[1]["p_value"] if len(ranked) > 1 else None,
+                     # whether the best run lies on the pit's branch (placed or not): the
+                     # calibration of locate_outer.OWN_BRANCH reads it
+                     "best_on_pit_branch": abs((best["best_run_deg"] - angle + 180) % 360 - 180)
+                     < 0.5 * d["ball_spacing_deg"]})
         print(rows[-1], flush=True)
-        common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows, quoted=("note",))
+        common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows,
+                         quoted=("note", "interval"))
     folds = "/".join(sorted({r["fold_period"] for r in rows}))
     margins = "/".join(f"{m:g}" for m in sorted({r["margin_used"] for r in rows}))
     windows = "/".join(sorted({r["pulse_window"] for r in rows}))
@@ -115,7 +128,8 @@ def main(argv):
              + (f"; the record's scene with {a.mismatch[0]} = {a.mismatch[1]}, the runs' (as the "
                 f"user states it) {a.mismatch[2]}" if a.mismatch else "") + ".",
              "", "| pit (deg from load, size) | phase (deg) | placed (deg) | interval | error (deg) "
-             "| chi2 margin | best run (deg): chi2, runner-up's | runs | note |", "|---" * 9 + "|"]
+             "| chi2 margin | best run (deg): chi2 (p), runner-up's | runs | note |",
+             "|---" * 9 + "|"]
     for r in rows:
         iv = "-" if not r["interval"] else f"[{r['interval'][0]:.1f}, {r['interval'][1]:.1f}]"
         lines.append(
@@ -123,8 +137,8 @@ def main(argv):
             + ("not determined" if not r["determined"] else f"{r['position_deg']:.2f}")
             + f" | {iv} | " + ("-" if r["error_deg"] is None else f"{r['error_deg']:+.2f}")
             + f" | {'-' if r['margin'] is None else format(r['margin'], '.0f')} | "
-            f"{r['best_run_deg']:g}: {r['best_chi2']:.0f}, "
-            + ("-" if r["next_chi2"] is None else f"{r['next_chi2']:.0f}")
+            f"{r['best_run_deg']:g}: {r['best_chi2']:.0f}{p_text(r['best_p'])}, "
+            + ("-" if r["next_chi2"] is None else f"{r['next_chi2']:.0f}{p_text(r['next_p'])}")
             + f" | {r['runs']} | {r['note']} |")
     n = len(rows)
     placed = sum(r["determined"] for r in rows)

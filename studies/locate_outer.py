@@ -14,11 +14,15 @@ within chi2 600 of the best to 1/8 deg and then 1/16 deg, the size again at each
 branches within the margin and 2 x 63 of the best are looked at again (one whose best run fits
 worse than the margin every 0.25 deg over its window at its best size, then each every 1/16 deg
 within 0.5 deg of its best run), and it keeps the branch whose best run fits best, when it beats
-the runner-up by a chi2 margin of more than --margin. The folds are compared over the pulse's
-window (fold_compare.pulse_window(): from 0.1 period before the entry to 0.25 after, a line
-fitted), where two realizations of one scene differ least; the margin is the largest chi2 between
-two independent realizations of one scene there, over 51 scenes (pits of 0.3-3 deg, -30 to 57.5 deg
-from the load line: doc/report/sizing/template/scatter_*.md). Else the branch is not determined,
+the runner-up by a chi2 margin of more than --margin, or, on records like those its p-values were
+calibrated on (grid folds of up to 0.375 s at 20 kHz), when it is the one branch whose best run
+fits as the pit's own branch does (p >= 0.1) and every other's p-value is below 0.01 (the chance
+that the pit's own branch fits as badly: from its best run's chi2 on 16 held-out records). The
+folds are compared over the pulse's window (fold_compare.pulse_window(): from 0.1 period before
+the entry to 0.25 after, a line fitted), where two realizations of one scene differ least; the
+margin is the largest chi2 between two independent realizations of one scene there, over 51
+scenes (pits of 0.3-3 deg, -30 to 57.5 deg from the load line:
+doc/report/sizing/template/scatter_*.md). Else the branch is not determined,
 and the candidates within the margin are listed; when they are two mirror images about the load
 line (a pit about half a ball spacing from it), the pit's distance from the load line is given. The
 record and the runs are folded at the grid's period up to 0.375 s of record and at the fine one
@@ -48,6 +52,8 @@ import os
 import re
 import sys
 
+from scipy import stats
+
 import common
 import fold_compare
 
@@ -76,6 +82,24 @@ SEARCH_MISS = 63.0
 # the best run's chi2 per bin beyond which no run of the scene is like the record (the records
 # of branch.md and blind.md: 0.1-6.5 per bin at the true branch over the whole fold)
 MAX_CHI2_PER_BIN = 20.0
+# the pit's own branch: ln chi2 of its best run after the whole search (scan, refine, second
+# look), over the 16 held-out 0.3 s records of doc/report/sizing/template/locate_check_rescan.csv
+# and locate_check_s25{a,b,c}.csv (20 kHz, 16 bits, low noise, grid folds, the pulse's window; in
+# all 16 the best run lay on the pit's branch): chi2 1.9-22.9, median 4.9, below one realization's
+# scatter (median ~20) since the best of ~30-80 runs fits both the pit and the record's own
+# realization; the logs' mean and sd (Shapiro-Wilk on them: p 0.61). A branch's p-value is the
+# chance that the pit's own branch fits as badly or worse: Student's t with 15 degrees of freedom
+# on the logs, the predictive distribution of one more record from 16
+OWN_BRANCH = {"mean": 1.607, "sd": 0.664, "records": 16}
+# the p-values hold for records like the calibration's: grid folds of up to GRID_LENGTH_S at
+# this rate (elsewhere the margin decides alone)
+CALIBRATED_RATE = 2e4
+# a branch whose p-value is below REJECT_P is not the pit's: a placement on the one branch left is
+# wrong only when the pit's own was rejected, in REJECT_P of records; the one left must fit as the
+# pit's own usually does (p >= CONSISTENT_P), so that two branches near REJECT_P's chi2 (~30) do
+# not decide on a difference of a few
+REJECT_P = 0.01
+CONSISTENT_P = 0.1
 # grid folds: the length (s) up to which two realizations of a scene stay within the margin
 # (0.3 s: 10-200 in branch.md; 1.2 s: up to 1136, the smear of the grid's period)
 GRID_LENGTH_S = 0.375
@@ -234,9 +258,29 @@ def record_fold_as_runs(a, path):
                 who="locate_outer")
 
 
-def decide(found, margin, bins, spacing):
-    """The branch from each candidate's best run: found = [(chi2, branch, angle, size, runs)].
-    Returns (whether the best of `found` by chi2 is placed, the note)."""
+def own_branch_p(chi2, own=None):
+    """The p-value of a branch whose best run has this chi2: the chance that the pit's own
+    branch fits as badly or worse (own: the calibration, OWN_BRANCH unless given)."""
+    own = own or OWN_BRANCH
+    if chi2 <= 0:
+        return 1.0
+    n = own["records"]
+    z = (math.log(chi2) - own["mean"]) / (own["sd"] * math.sqrt(1 + 1 / n))
+    return float(stats.t.sf(z, n - 1))
+
+
+def p_values_hold(fold_period, rate, length_s):
+    """Whether own_branch_p() is calibrated for a record with this chain: grid folds of up to
+    GRID_LENGTH_S at CALIBRATED_RATE."""
+    return (fold_period == "grid" and length_s <= GRID_LENGTH_S
+            and abs(rate - CALIBRATED_RATE) <= 1e-6 * CALIBRATED_RATE)
+
+
+def decide(found, margin, bins, spacing, p_values=False):
+    """The branch from each candidate's best run: found = [(chi2, branch, angle, size, runs)];
+    by the margin, and with p_values (own_branch_p()) also when every other branch fits worse
+    than the pit's own branch does in all but REJECT_P of records. Returns (whether the best of
+    `found` by chi2 is placed, the note)."""
     found = sorted(found)
     best = found[0]
     if best[0] / bins > MAX_CHI2_PER_BIN:
@@ -249,11 +293,20 @@ def decide(found, margin, bins, spacing):
     if gap > margin:
         return True, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
                       f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
+    ps = [own_branch_p(f[0]) for f in found]
+    if p_values and ps[0] >= CONSISTENT_P and max(ps[1:]) < REJECT_P:
+        return True, (f"the only branch whose best run fits as the pit's own branch does (p "
+                      f"{ps[0]:.2g}); every other fits worse than the pit's own in all but "
+                      f"{REJECT_P:.0%} of records (the next, at {found[1][1]:g} deg: chi2 "
+                      f"{found[1][0]:.0f}, p {ps[1]:.1g})")
     close = [f for f in found if f[0] - best[0] <= margin]
-    return False, ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
-                   f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
-                   f"realization of the same record reaches it); modulo the ball spacing "
-                   f"{spacing:.4g} deg")
+    note = ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
+            f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
+            f"realization of the same record reaches it)")
+    if p_values:
+        note += ("; their p-values " + ", ".join(f"{p:.2g}" for p in ps[:len(close)]) +
+                 f" (placed when the best's >= {CONSISTENT_P:g} and every other's < {REJECT_P:g})")
+    return False, note + f"; modulo the ball spacing {spacing:.4g} deg"
 
 
 def fold_and_margin(length_s, fold_period, margin):
@@ -407,8 +460,9 @@ def main(argv):
             print(f"locate_outer: branch {centre:.2f} deg looked at again: best run {ang:g} "
                   f"deg, {sz:g} deg of pit, chi2 {chi2:.0f} ({len(runs)} runs)", file=sys.stderr,
                   flush=True)
-    placed, note = decide(found, a.margin, bins, spacing)
     rate = float(chain[chain.index("--rate") + 1])
+    calibrated = p_values_hold(a.fold_period, rate, end - a.t_from)
+    placed, note = decide(found, a.margin, bins, spacing, p_values=calibrated)
     if placed and rate < CHECKED_RATE:
         note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the margin does not hold (at 10 kHz "
                  "one of 12 held-out pits was placed a ball spacing off: doc/ohmdem-post.md)")
@@ -424,8 +478,10 @@ def main(argv):
               "first_stage_size_deg": d.get("size_deg"), "margin": a.margin, "bins": bins,
               "pulse_window": [round(v, 4) for v in window],
               "candidates": [{"branch_deg": f[1], "best_run_deg": f[2], "best_run_size_deg": f[3],
-                              "chi2": round(f[0], 3), "runs": f[4]}
+                              "chi2": round(f[0], 3), "runs": f[4],
+                              "p_value": own_branch_p(f[0]) if calibrated else None}
                              for f in sorted(found, key=lambda f: f[1])],
+              "p_values_calibrated": calibrated,
               "runs_made": scene.runs}
     if not placed:
         result.update(position_deg=None, position_interval_deg=None, branch_determined=False,
@@ -461,7 +517,8 @@ def main(argv):
         print(f"outer pit: {pos}\n  {note}")
         for c in result["candidates"]:
             print(f"  branch {c['branch_deg']:g} deg: best run {c['best_run_deg']:g} deg, "
-                  f"{c['best_run_size_deg']:g} deg of pit, chi2 {c['chi2']:.0f} ({c['runs']} runs)")
+                  f"{c['best_run_size_deg']:g} deg of pit, chi2 {c['chi2']:.0f} ({c['runs']} runs"
+                  + ("" if c["p_value"] is None else f", p {c['p_value']:.2g}") + ")")
 
 
 if __name__ == "__main__":

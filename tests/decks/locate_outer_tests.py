@@ -14,6 +14,7 @@ acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) 
 the errors of a record not from acquire and of a scene without a radial load.
 Usage: locate_outer_tests.py --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR"""
 import argparse
+import csv
 import json
 import math
 import os
@@ -205,6 +206,54 @@ def margin_rule(lo):
         check(got == want, f"fold_and_margin{args}: {got}")
 
 
+def p_rule(lo, src):
+    """The p-values of the branches (locate_outer.own_branch_p()) and the placement they allow."""
+    # the calibration, recomputed from the committed held-out tables it names: the pit's own
+    # branch's best run, ln chi2 over the 16 records (in every one the best run is on it)
+    chi2 = []
+    for name in ("rescan", "s25a", "s25b", "s25c"):
+        path = os.path.join(src, "doc", "report", "sizing", "template", f"locate_check_{name}.csv")
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        check(all(r["best_on_pit_branch"] == "True" for r in rows),
+              f"{name}: every best run on the pit's branch")
+        chi2 += [float(r["best_chi2"]) for r in rows]
+    logs = np.log(chi2)
+    own = lo.OWN_BRANCH
+    check(own["records"] == len(logs) == 16 and abs(own["mean"] - logs.mean()) < 1e-3
+          and abs(own["sd"] - logs.std(ddof=1)) < 1e-3,
+          f"OWN_BRANCH is the tables' fit: {own} vs {len(logs)}, {logs.mean():.4f}, "
+          f"{logs.std(ddof=1):.4f}")
+    # the p-value is the predictive one: were ln chi2 normal, a 17th record drawn like 16 fitted
+    # ones has p < 0.01 in 1 % of draws (Monte Carlo, 20000 draws: sd of the rate 0.0007)
+    rng = np.random.default_rng(26)
+    draws = rng.normal(1.6, 0.7, size=(20000, 17))
+    low = [lo.own_branch_p(math.exp(d[16]), {"mean": d[:16].mean(), "sd": d[:16].std(ddof=1),
+                                             "records": 16}) < 0.01 for d in draws]
+    check(0.008 <= np.mean(low) <= 0.012, f"p < 0.01 in {np.mean(low):.4f} of draws (0.01)")
+    check(lo.own_branch_p(0.0) == 1.0 and lo.own_branch_p(math.inf) == 0.0
+          and abs(lo.own_branch_p(math.exp(own["mean"])) - 0.5) < 1e-12,
+          "p 1 at chi2 0, 0 at inf, 0.5 at the calibration's median")
+    # held-out -6.25/0.35 (locate_check_s25b.md): its branch 5.5, the next 34 (p 0.0065), the
+    # rest 284 and up: the margin (29 < 50) does not place it, the p-values do
+    found = [(5.472, -6.27, -6.272, 0.35, 55), (34.258, 21.4, 21.5, 0.4, 43),
+             (284.4, -33.9, -33.9, 0.3, 40)]
+    placed, note = lo.decide(found, 50, 68, 27.69, p_values=True)
+    check(placed and "p 0.45" in note and "p 0.007" in note, "p-values place it: " + note)
+    placed, note = lo.decide(found, 50, 68, 27.69)
+    check(not placed and "p-values" not in note, "the margin alone does not: " + note)
+    # two branches near the rejection's chi2 (~30): the best at p 0.03 is not placed on a
+    # difference of a few; nor one whose runner-up fits like the pit's own (p 0.11)
+    for pair in ((20.0, 35.0), (10.3, 11.8)):
+        placed, note = lo.decide([(pair[0], 1.0, 1.0, 0.5, 40), (pair[1], 28.7, 28.7, 0.5, 40)],
+                                 50, 68, 27.69, p_values=True)
+        check(not placed and "their p-values" in note, f"{pair}: not placed: " + note)
+    for args, want in ((("grid", 2e4, 0.3), True), (("fine", 2e4, 1.2), False),
+                       (("grid", 1e4, 0.3), False), (("grid", 5e4, 0.3), False),
+                       (("grid", 2e4, 1.2), False)):
+        check(lo.p_values_hold(*args) == want, f"p_values_hold{args} = {want}")
+
+
 def one_record(a, tmp):
     env = dict(os.environ, OHMDEM=a.exe, POST=a.post, OMPI_MCA_ess_singleton_isolated="1")
     sim = os.path.join(tmp, "sim")
@@ -238,6 +287,8 @@ def one_record(a, tmp):
     lo_, hi_ = d["position_interval_deg"]
     check(lo_ <= d["position_deg"] <= hi_ and hi_ - lo_ < 10, f"its interval: [{lo_}, {hi_}]")
     check(len(d["candidates"]) == 2 and d["runs_made"] > 4, "two branches searched, with runs")
+    check(d["p_values_calibrated"] and all(0 <= c["p_value"] <= 1 for c in d["candidates"]),
+          "a 20 kHz record of 0.3 s: each branch's p-value")
     check(d["fold_period"] == "grid" and d["margin"] == 50
           and abs(d["record_length_s"] - 0.3) < 1e-3 and d["pulse_window"] == [0.15, 0.5],
           f"a 0.3 s record: grid folds, margin 50, the pulse's window: {d['fold_period']}, "
@@ -274,6 +325,7 @@ def main():
         rescan_finds(fold_compare)
         dense_finds(fold_compare)
         margin_rule(locate_outer)
+        p_rule(locate_outer, a.src)
         one_record(a, tmp)
     finish()
 
