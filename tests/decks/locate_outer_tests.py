@@ -7,7 +7,8 @@ the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its n
 higher does not; over the pulse's window a slow cycle after the pulse does not count); the
 refinement of a branch's best to 1/16 deg on a narrow misfit; the rescan at the best size when
 the scan's size was off; the dense look past a local minimum of a rugged misfit; the margin rule
-and the mirror pair. Then one run: a 1.5 deg pit 20 deg from the load direction (the branches
+and the mirror pair; the branches' p-values (their calibration recomputed from the committed
+tables, the predictive p's rate by Monte Carlo, the placement they allow). Then one run: a 1.5 deg pit 20 deg from the load direction (the branches
 27.7 deg apart: this record's best run of the other branch has chi2 428 against 10 for
 its own in the pulse's window, studies/locate_outer.py on the same record in session 24),
 acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to 1 deg; and
