@@ -60,6 +60,11 @@ def p_text(p):
     return "" if p is None else f" (p {p:.2g})"
 
 
+def on_pit(candidate, angle, d):
+    """Whether a candidate's best run lies on the pit's branch (within half a ball spacing)."""
+    return abs((candidate["best_run_deg"] - angle + 180) % 360 - 180) < 0.5 * d["ball_spacing_deg"]
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", default=",".join(f"{a:g}:{s:g}" for a, s in CASES),
@@ -106,8 +111,11 @@ def main(argv):
                      "next_p": ranked[1]["p_value"] if len(ranked) > 1 else None,
                      # whether the best run lies on the pit's branch (placed or not): the
                      # calibration of locate_outer.OWN_BRANCH reads it
-                     "best_on_pit_branch": abs((best["best_run_deg"] - angle + 180) % 360 - 180)
-                     < 0.5 * d["ball_spacing_deg"]})
+                     "best_on_pit_branch": on_pit(best, angle, d),
+                     # the pit's own branch's best run (the p-values' calibration), wherever it
+                     # ranks
+                     "pit_branch_chi2": min((x["chi2"] for x in ranked if on_pit(x, angle, d)),
+                                            default=None)})
         print(rows[-1], flush=True)
         common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows,
                          quoted=("note", "interval"))
@@ -119,16 +127,16 @@ def main(argv):
              + (f" --rate {a.rate:g} --bank BANK" if a.rate != 2e4 else "")
              + (" --mismatch " + " ".join(a.mismatch) if a.mismatch else "")
              + ("" if a.length == LENGTH else f" --length {a.length:g}")
-             + f" OUT` ({a.rate / 1e3:g} kHz, {a.length:g} s records, "
-             "16 bits, low noise, acquisition seed 7; the runs: seed 8; locate_outer.py's defaults: "
+             + f" OUT` ({a.rate / 1e3:g} kHz, {a.length:g} s records, 16 bits, low noise, "
+             "acquisition seed 7; the runs: seed 8; locate_outer.py's defaults: "
              f"{folds} folds compared over the pulse's window ({windows} of the period), margin "
              f"{margins}, zone 63 deg, --window 2 deg; the first stage's bank: "
-             + (os.path.basename(a.bank) + " made for this check" if a.rate != 2e4 else
+             + (os.path.basename(a.bank) if a.bank else
                 "the committed bank_outer_radial_r20000_low.txt") + ")"
              + (f"; the record's scene with {a.mismatch[0]} = {a.mismatch[1]}, the runs' (as the "
                 f"user states it) {a.mismatch[2]}" if a.mismatch else "") + ".",
-             "", "| pit (deg from load, size) | phase (deg) | placed (deg) | interval | error (deg) "
-             "| chi2 margin | best run (deg): chi2 (p), runner-up's | runs | note |",
+             "", "| pit (deg from load, size) | phase (deg) | placed (deg) | interval "
+             "| error (deg) | chi2 margin | best run (deg): chi2 (p), runner-up's | runs | note |",
              "|---" * 9 + "|"]
     for r in rows:
         iv = "-" if not r["interval"] else f"[{r['interval'][0]:.1f}, {r['interval'][1]:.1f}]"

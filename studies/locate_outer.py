@@ -12,23 +12,24 @@ record's (every 0.5 deg at the first stage's size, then the size 8 % apart at th
 then the angle to 0.25 deg: the misfit is too rugged in the angle to descend), refines the branches
 within chi2 600 of the best to 1/8 deg and then 1/16 deg, the size again at each new angle; the
 branches within the margin and 2 x 63 of the best are looked at again (one whose best run fits
-worse than the margin every 0.25 deg over its window at its best size, then each every 1/16 deg
-within 0.5 deg of its best run), and it keeps the branch whose best run fits best, when it beats
-the runner-up by a chi2 margin of more than --margin, or, on records like those its p-values were
-calibrated on (grid folds of up to 0.375 s at 20 kHz), when it is the one branch whose best run
-fits as the pit's own branch does (p >= 0.1) and every other's p-value is below 0.01 (the chance
-that the pit's own branch fits as badly: from its best run's chi2 on 16 held-out records). The
-folds are compared over the pulse's window (fold_compare.pulse_window(): from 0.1 period before
-the entry to 0.25 after, a line fitted), where two realizations of one scene differ least; the
-margin is the largest chi2 between two independent realizations of one scene there, over 51
-scenes (pits of 0.3-3 deg, -30 to 57.5 deg from the load line:
-doc/report/sizing/template/scatter_*.md). Else the branch is not determined,
-and the candidates within the margin are listed; when they are two mirror images about the load
-line (a pit about half a ball spacing from it), the pit's distance from the load line is given. The
-record and the runs are folded at the grid's period up to 0.375 s of record and at the fine one
-beyond (--fold-period auto): the grid's smear, which differs from window to window, outgrows the
-margin on long records (two realizations of 1.2 s, over the whole fold: chi2 up to 1136 at the
-grid's period, 155 at the fine one, on 15 scenes).
+worse than the margin, or than 50 per 68 bins of the window, every 0.25 deg over its window at
+its best size, then each every 1/16 deg within 0.5 deg of its best run), and it keeps the branch
+whose best run fits best, when it beats the runner-up by a chi2 margin of more than --margin, or,
+on records like those its p-values were calibrated on (grid folds of up to 0.375 s at 20 and 50
+kHz), when it is the one branch whose best run fits as the pit's own branch does (p >= 0.1) and
+every other's p-value is below 0.01 (the chance that the pit's own branch fits as badly: from its
+best run's chi2 on 16 held-out 20 kHz records, a chi2 per bin, checked on 12 at 50 kHz). The folds
+are compared over the pulse's window (fold_compare.pulse_window(): from 0.1 period before the
+entry to 0.25 after, a line fitted), where two realizations of one scene differ least; the margin
+is the largest chi2 between two independent realizations of one scene there, over 51 scenes (pits
+of 0.3-3 deg, -30 to 57.5 deg from the load line), at the record's rate
+(doc/report/sizing/template/scatter_*.md: 50 at 20 kHz, 1210 at 50 kHz). Else the branch is not
+determined, and the candidates within the margin are listed; when they are two mirror images about
+the load line (a pit about half a ball spacing from it), the pit's distance from the load line is
+given. The record and the runs are folded at the grid's period up to 0.375 s of record and at the
+fine one beyond (--fold-period auto): the grid's smear, which differs from window to window,
+outgrows the margin on long records (two realizations of 1.2 s, over the whole fold: chi2 up to
+1136 at the grid's period, 155 at the fine one, on 15 scenes).
 
   studies/locate_outer.py --metadata RUN_JSON [--bank FILE] [--from S] [--column V] [--deck DECK]
       [--var NAME VALUE ...] [--zone 63] [--margin CHI2] [--fold-period auto|grid|fine]
@@ -60,11 +61,14 @@ import fold_compare
 # in.bearing's radial load pushes the outer ring along -y: the balls at +y (90 deg on the race)
 # carry it; diagnose's angles are from there, positive in the balls' direction of travel
 ZONE_CENTRE_DEG = 90.0
-# the margin by the folds' period: the largest chi2 between two independent realizations of
-# one scene in the pulse's window (studies/branch_check.py --scatter, 51 scenes:
-# doc/report/sizing/template/scatter_*.md), rounded up to a ten: grid folds 44 at 0.3 s, fine
-# folds 40 at 0.3 s and 73 at 1.2 s (over the whole fold: 345, 433 and 1402)
-MARGINS = {"grid": 50.0, "fine": 80.0}
+# the margin by the folds' period and the record's rate (Hz): the largest chi2 between two
+# independent realizations of one scene in the pulse's window (studies/branch_check.py --scatter,
+# 51 scenes: doc/report/sizing/template/scatter_*.md), rounded up to a ten: at 20 kHz grid folds
+# 44 at 0.3 s, fine folds 40 at 0.3 s and 73 at 1.2 s (over the whole fold: 345, 433 and 1402);
+# at 50 kHz grid folds 1210 at 0.3 s (the 3 deg pit 30 deg from the load line; the other 50
+# scenes up to 118): the wider anti-alias filter keeps the pit's edges, which differ between
+# realizations by more than the passes' scatter within one
+MARGINS = {"grid": {2e4: 50.0, 5e4: 1210.0}, "fine": {2e4: 80.0}}
 ZONE_DEG = 63.0
 # each branch's runs lie within the phase's interval moved onto it, widened by this much either
 # side (the phase's centroid lies up to 2.8 deg off the pit in heldout_angles*.md)
@@ -89,11 +93,15 @@ MAX_CHI2_PER_BIN = 20.0
 # scatter (median ~20) since the best of ~30-80 runs fits both the pit and the record's own
 # realization; the logs' mean and sd (Shapiro-Wilk on them: p 0.61). A branch's p-value is the
 # chance that the pit's own branch fits as badly or worse: Student's t with 15 degrees of freedom
-# on the logs, the predictive distribution of one more record from 16
-OWN_BRANCH = {"mean": 1.607, "sd": 0.664, "records": 16}
+# on the logs, the predictive distribution of one more record from 16. In units of the chi2 over
+# the calibration's 68 bins of the pulse's window: a record folded into other bins is scaled to
+# them (session 27: 12 held-out 50 kHz records, 170 bins, their ln chi2 so scaled agree with the
+# 16 (Welch's t p 0.86, Levene's p 0.095; unscaled Welch's p 0.019):
+# doc/report/sizing/template/locate_check_r50000_s27{a,b}.csv)
+OWN_BRANCH = {"mean": 1.607, "sd": 0.664, "records": 16, "bins": 68}
 # the p-values hold for records like the calibration's: grid folds of up to GRID_LENGTH_S at
-# this rate (elsewhere the margin decides alone)
-CALIBRATED_RATE = 2e4
+# these rates (elsewhere the margin decides alone)
+CALIBRATED_RATES = (2e4, 5e4)
 # a branch whose p-value is below REJECT_P is not the pit's: a placement on the one branch left is
 # wrong only when the pit's own was rejected, in REJECT_P of records; the one left must fit as the
 # pit's own usually does (p >= CONSISTENT_P), so that two branches near REJECT_P's chi2 (~30) do
@@ -258,12 +266,15 @@ def record_fold_as_runs(a, path):
                 who="locate_outer")
 
 
-def own_branch_p(chi2, own=None):
-    """The p-value of a branch whose best run has this chi2: the chance that the pit's own
-    branch fits as badly or worse (own: the calibration, OWN_BRANCH unless given)."""
+def own_branch_p(chi2, own=None, bins=None):
+    """The p-value of a branch whose best run has this chi2 over `bins` bins (the calibration's
+    unless given): the chance that the pit's own branch fits as badly or worse (own: the
+    calibration, OWN_BRANCH unless given)."""
     own = own or OWN_BRANCH
     if chi2 <= 0:
         return 1.0
+    if bins:
+        chi2 *= own.get("bins", OWN_BRANCH["bins"]) / bins
     n = own["records"]
     z = (math.log(chi2) - own["mean"]) / (own["sd"] * math.sqrt(1 + 1 / n))
     return float(stats.t.sf(z, n - 1))
@@ -271,9 +282,9 @@ def own_branch_p(chi2, own=None):
 
 def p_values_hold(fold_period, rate, length_s):
     """Whether own_branch_p() is calibrated for a record with this chain: grid folds of up to
-    GRID_LENGTH_S at CALIBRATED_RATE."""
+    GRID_LENGTH_S at one of CALIBRATED_RATES."""
     return (fold_period == "grid" and length_s <= GRID_LENGTH_S
-            and abs(rate - CALIBRATED_RATE) <= 1e-6 * CALIBRATED_RATE)
+            and any(abs(rate - r) <= 1e-6 * r for r in CALIBRATED_RATES))
 
 
 def decide(found, margin, bins, spacing, p_values=False):
@@ -293,8 +304,8 @@ def decide(found, margin, bins, spacing, p_values=False):
     if gap > margin:
         return True, (f"the branch whose best run fits best, by a chi2 margin of {gap:.0f} "
                       f"(> {margin:g}) over the branch at {found[1][1]:g} deg")
-    ps = [own_branch_p(f[0]) for f in found]
-    if p_values and ps[0] >= CONSISTENT_P and max(ps[1:]) < REJECT_P:
+    ps = [own_branch_p(f[0], bins=bins) for f in found] if p_values else []
+    if ps and ps[0] >= CONSISTENT_P and max(ps[1:]) < REJECT_P:
         return True, (f"the only branch whose best run fits as the pit's own branch does (p "
                       f"{ps[0]:.2g}); every other fits worse than the pit's own in all but "
                       f"{REJECT_P:.0%} of records (the next, at {found[1][1]:g} deg: chi2 "
@@ -303,28 +314,52 @@ def decide(found, margin, bins, spacing, p_values=False):
     note = ("not determined: the branches at " + ", ".join(f"{f[1]:g}" for f in close) +
             f" deg fit within a chi2 margin of {margin:g} (the scatter of an independent "
             f"realization of the same record reaches it)")
-    if p_values:
+    if ps:
         note += ("; their p-values " + ", ".join(f"{p:.2g}" for p in ps[:len(close)]) +
                  f" (placed when the best's >= {CONSISTENT_P:g} and every other's < {REJECT_P:g})")
     return False, note + f"; modulo the ball spacing {spacing:.4g} deg"
 
 
-def fold_and_margin(length_s, fold_period, margin):
+def margin_at(fold_period, rate):
+    """The margin for folds of this period on a record at this rate (Hz), and whether that pair
+    was calibrated: else the calibration at the lowest calibrated rate at or above it (the
+    highest beyond them all), the largest of the two periods' when its own is not there (the
+    scatter between realizations grows with the rate)."""
+    rates = sorted({r for m in MARGINS.values() for r in m})
+    at = next((r for r in rates if r >= rate * (1 - 1e-6)), rates[-1])
+    own = MARGINS[fold_period]
+    margin = own[at] if at in own else max(m[at] for m in MARGINS.values() if at in m)
+    return margin, at in own and abs(at - rate) <= 1e-6 * at
+
+
+def fold_and_margin(length_s, fold_period, margin, rate=2e4):
     """The folds' period for a record of length_s (auto: grid up to GRID_LENGTH_S, as checked
     on held-out records in sessions 16-18; fine beyond, where the grid's smear outgrows the
-    margin) and the margin (that period's calibration unless given)."""
+    margin) and the margin (margin_at() that period and rate unless given)."""
     if fold_period == "auto":
         fold_period = "grid" if length_s <= GRID_LENGTH_S else "fine"
-    return fold_period, MARGINS[fold_period] if margin is None else margin
+    return fold_period, margin_at(fold_period, rate)[0] if margin is None else margin
 
 
-def mirror_pair(found, margin):
+def rescan_above(fold_period, margin, bins):
+    """The chi2 above which a branch's best run is looked at again over its whole window: worse
+    than the margin, and than the 20 kHz margin per bin of the pulse's window (the pit's own
+    branch fits alike per bin at 20 and 50 kHz, OWN_BRANCH; the 50 kHz margin, 1210, is set by
+    one large pit's realizations and would leave a branch's best at chi2 212 where its pit fits
+    at 5 unsearched)."""
+    per_bin = MARGINS[fold_period][2e4] * max(1.0, bins / OWN_BRANCH["bins"])
+    return min(margin, per_bin)
+
+
+def mirror_pair(found, margin, bins=None):
     """The best runs' angles when the branches within the margin are two whose best runs are
     mirror images about the load line (within ANGLE_STEP): a pit at about half the ball
     spacing from it, where the phase has a branch on either side at the same distance, which a
-    symmetric radial load does not tell apart. None otherwise."""
+    symmetric radial load does not tell apart. With bins (the p-values calibrated), a branch
+    whose p-value is below REJECT_P is not counted. None otherwise."""
     found = sorted(found)
-    close = [f for f in found if f[0] - found[0][0] <= margin]
+    close = [f for f in found if f[0] - found[0][0] <= margin
+             and (bins is None or own_branch_p(f[0], bins=bins) >= REJECT_P)]
     if len(close) == 2 and abs(close[0][2] + close[1][2]) <= fold_compare.ANGLE_STEP:
         return close[0][2], close[1][2]
     return None
@@ -346,7 +381,9 @@ def main(argv):
     ap.add_argument("--zone", type=float, default=ZONE_DEG,
                     help="branches within this many deg of the load line")
     ap.add_argument("--margin", type=float, default=None,
-                    help="the chi2 margin (default: 50 for grid folds, 80 for fine ones)")
+                    help="the chi2 margin (default: the calibration for the folds' period and the "
+                    "record's rate: 50 for grid folds, 80 for fine ones at 20 kHz; 1210 for grid "
+                    "folds at 50 kHz)")
     ap.add_argument("--seed", type=int, default=8, help="the runs' acquisition noise seed")
     ap.add_argument("--format", choices=("json", "text"), default="json")
     ap.add_argument("--keep-runs", action="store_true",
@@ -368,7 +405,9 @@ def main(argv):
         fail("--zone expects deg > 0, --margin a chi2 >= 0 and --window deg >= 0")
     chain, start, end, name = read_chain(a.record)
     a.t_from = start if a.t_from is None else a.t_from
-    a.fold_period, a.margin = fold_and_margin(end - a.t_from, a.fold_period, a.margin)
+    rate = float(chain[chain.index("--rate") + 1])
+    margin_given = a.margin is not None
+    a.fold_period, a.margin = fold_and_margin(end - a.t_from, a.fold_period, a.margin, rate)
     a.column = a.column or name
     with open(a.metadata) as f:
         meta = json.load(f)
@@ -450,22 +489,26 @@ def main(argv):
     # that may be off the pit's; then each densely around its best, since refine()'s walk can
     # stop on a local minimum of the rugged misfit, up to SEARCH_MISS above the branch's least
     best = min(found)[0]
+    unlike = rescan_above(a.fold_period, a.margin, bins)
     for i, (chi2, centre, ang, sz, _) in enumerate(found):
         if chi2 - best <= a.margin + 2 * SEARCH_MISS:
             chi2_at, runs, b_lo, b_hi = branches[centre]
-            if chi2 > a.margin:
+            if chi2 > unlike:
                 chi2, sz, ang = fold_compare.rescan(chi2_at, (chi2, sz, ang), b_lo, b_hi)
             chi2, sz, ang = fold_compare.dense(chi2_at, (chi2, sz, ang), b_lo, b_hi)
             found[i] = (chi2, centre, ang, sz, len(runs))
             print(f"locate_outer: branch {centre:.2f} deg looked at again: best run {ang:g} "
                   f"deg, {sz:g} deg of pit, chi2 {chi2:.0f} ({len(runs)} runs)", file=sys.stderr,
                   flush=True)
-    rate = float(chain[chain.index("--rate") + 1])
     calibrated = p_values_hold(a.fold_period, rate, end - a.t_from)
     placed, note = decide(found, a.margin, bins, spacing, p_values=calibrated)
     if placed and rate < CHECKED_RATE:
         note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the margin does not hold (at 10 kHz "
                  "one of 12 held-out pits was placed a ball spacing off: doc/ohmdem-post.md)")
+    if placed and rate >= CHECKED_RATE and not (margin_given or margin_at(a.fold_period, rate)[1]):
+        note += (f"; caution: the margin ({a.margin:g}) was not calibrated for {a.fold_period} "
+                 f"folds at {rate / 1e3:g} kHz: the nearest calibration above it (the scatter "
+                 "between realizations grows with the rate)")
     if placed and a.fold_period == "grid" and end - a.t_from > GRID_LENGTH_S:
         note += (f"; caution: folds at the grid's period on a record longer than "
                  f"{GRID_LENGTH_S:g} s differ by their smear beyond the margin "
@@ -479,14 +522,14 @@ def main(argv):
               "pulse_window": [round(v, 4) for v in window],
               "candidates": [{"branch_deg": f[1], "best_run_deg": f[2], "best_run_size_deg": f[3],
                               "chi2": round(f[0], 3), "runs": f[4],
-                              "p_value": own_branch_p(f[0]) if calibrated else None}
+                              "p_value": own_branch_p(f[0], bins=bins) if calibrated else None}
                              for f in sorted(found, key=lambda f: f[1])],
               "p_values_calibrated": calibrated,
               "runs_made": scene.runs}
     if not placed:
         result.update(position_deg=None, position_interval_deg=None, branch_determined=False,
                       position_modulo_deg=spacing)
-        pair = mirror_pair(found, a.margin)
+        pair = mirror_pair(found, a.margin, bins if calibrated else None)
         if pair:
             dist = 0.5 * (abs(pair[0]) + abs(pair[1]))
             result.update(distance_from_load_deg=round(dist, 3), mirror_positions_deg=list(pair))

@@ -19,11 +19,13 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
 
 import numpy as np
+from scipy import stats
 
 from deck_checks import check, finish
 
@@ -175,7 +177,7 @@ def rescan_finds(fc):
           f"rescan keeps to its window and its best when nothing fits better: {got}")
 
 
-def margin_rule(lo):
+def margin_rule(lo, src):
     placed, note = lo.decide([(350.0, -7.5, -7.5, 1.5, 10), (100.0, 20.2, 20.0, 1.5, 12)],
                              200, 175, 27.69)
     check(placed is True and "margin of 250" in note, "a margin of 250 > 200 places: " + note)
@@ -196,12 +198,46 @@ def margin_rule(lo):
     mirror[2] = (19.5, 13.84, 13.715, 0.89, 38)
     mirror[3] = (120.0, 41.53, 41.53, 0.85, 30)
     check(lo.mirror_pair(mirror, 200) is None, "a third branch within the margin: no pair")
-    # the folds' period and margin by the record's length (session 24's calibration,
-    # doc/report/sizing/template/scatter_*.md: in the pulse's window, grid folds of two
-    # realizations differ by up to chi2 44 at 0.3 s, fine ones 40 at 0.3 s and 73 at 1.2 s)
+    # with the p-values (held-out 50 kHz -27.75/0.9, locate_check_r50000_s27a.md: margin 1210),
+    # a third branch within the margin but rejected (chi2 563 over 170 bins, p < 0.01) does not
+    # hide the mirror pair (20 and 28)
+    wide = [(19.983, 27.73, 27.668, 0.903, 39), (27.708, -27.66, -27.66, 0.912, 33),
+            (562.84, 0.03, -0.282, 0.786, 38)]
+    check(lo.mirror_pair(wide, 1210) is None and
+          lo.mirror_pair(wide, 1210, 170) == (27.668, -27.66), "a rejected branch is not counted")
+    # the folds' period and margin by the record's length and rate (sessions 24 and 27): the
+    # margins are the committed scatter tables' largest chi2 in the pulse's window, rounded up to
+    # a ten (doc/report/sizing/template/scatter_*.md: at 20 kHz grid folds 44 at 0.3 s, fine
+    # ones 40 at 0.3 s and 73 at 1.2 s; at 50 kHz grid folds 1210 at 0.3 s)
+    tables = {("grid", 2e4): ["scatter_0.3_grid.md"],
+              ("fine", 2e4): ["scatter_0.3_fine.md", "scatter_1.2_fine.md"],
+              ("grid", 5e4): ["scatter_0.3_grid_r50000.md"]}
+    for (period, rate), names in tables.items():
+        worst = 0.0
+        for name in names:
+            path = os.path.join(src, "doc", "report", "sizing", "template", name)
+            with open(path) as f:
+                m = re.search(r"([0-9.]+) in the pulse's window\.\s*$", f.read())
+            worst = max(worst, float(m.group(1)))
+        want = 10 * math.ceil(worst / 10)
+        check(lo.MARGINS[period][rate] == want and lo.margin_at(period, rate) == (want, True),
+              f"margin {period} {rate:g} Hz: {lo.MARGINS[period][rate]} vs the tables' {want}")
+    # not calibrated: the lowest calibrated rate at or above (the scatter grows with the rate),
+    # the highest beyond them, the other period's where its own is missing
+    for args, want in ((("grid", 1e4), (50.0, False)), (("grid", 3e4), (1210.0, False)),
+                       (("grid", 1e5), (1210.0, False)), (("fine", 5e4), (1210.0, False)),
+                       (("fine", 1e4), (80.0, False))):
+        check(lo.margin_at(*args) == want, f"margin_at{args}: {lo.margin_at(*args)}")
+    # a branch is looked at again over its window above the margin, or above the 20 kHz margin
+    # per 68 bins of the pulse's window where the margin is larger (50 kHz: 50 x 170 / 68)
+    for args, want in ((("grid", 50.0, 68), 50.0), (("grid", 1210.0, 170), 125.0),
+                       (("fine", 80.0, 68), 80.0), (("grid", 300.0, 68), 50.0),
+                       (("grid", 50.0, 34), 50.0)):
+        check(lo.rescan_above(*args) == want, f"rescan_above{args}: {lo.rescan_above(*args)}")
     for args, want in (((0.3, "auto", None), ("grid", 50.0)),
                        ((1.2, "auto", None), ("fine", 80.0)),
                        ((0.3, "fine", None), ("fine", 80.0)),
+                       ((0.3, "auto", None, 5e4), ("grid", 1210.0)),
                        ((1.2, "grid", 300.0), ("grid", 300.0))):
         got = lo.fold_and_margin(*args)
         check(got == want, f"fold_and_margin{args}: {got}")
@@ -250,9 +286,28 @@ def p_rule(lo, src):
                                  50, 68, 27.69, p_values=True)
         check(not placed and "their p-values" in note, f"{pair}: not placed: " + note)
     for args, want in ((("grid", 2e4, 0.3), True), (("fine", 2e4, 1.2), False),
-                       (("grid", 1e4, 0.3), False), (("grid", 5e4, 0.3), False),
-                       (("grid", 2e4, 1.2), False)):
+                       (("grid", 1e4, 0.3), False), (("grid", 5e4, 0.3), True),
+                       (("grid", 2e4, 1.2), False), (("grid", 3e4, 0.3), False)):
         check(lo.p_values_hold(*args) == want, f"p_values_hold{args} = {want}")
+    # a chi2 per bin: over 170 bins (a 50 kHz fold's window) as over 68 at 2.5 times less
+    check(abs(lo.own_branch_p(25.0, bins=170) - lo.own_branch_p(10.0)) < 1e-12
+          and lo.own_branch_p(10.0, bins=68) == lo.own_branch_p(10.0),
+          "own_branch_p scales the chi2 to the calibration's bins")
+    # session 27's check at 50 kHz (locate_check_r50000_s27{a,b}.csv, 12 held-out records): the
+    # pit's own branch's best chi2 scaled to 68 bins agrees with the 16 at 20 kHz (Welch's t and
+    # Levene's test at 0.05, as fixed before the runs); unscaled it does not (Welch's p 0.019)
+    at50 = []
+    for name in ("r50000_s27a", "r50000_s27b"):
+        path = os.path.join(src, "doc", "report", "sizing", "template", f"locate_check_{name}.csv")
+        with open(path, newline="") as f:
+            at50 += [float(r["pit_branch_chi2"]) for r in csv.DictReader(f)]
+    scaled = np.log(at50) - math.log(170 / 68)
+    welch = stats.ttest_ind(scaled, logs, equal_var=False).pvalue
+    levene = stats.levene(scaled, logs, center="median").pvalue
+    raw = stats.ttest_ind(np.log(at50), logs, equal_var=False).pvalue
+    check(len(at50) == 12 and welch > 0.05 and levene > 0.05 and raw < 0.05,
+          f"50 kHz: {len(at50)} records, scaled Welch p {welch:.3f}, Levene p {levene:.3f}; "
+          f"unscaled Welch p {raw:.3f}")
 
 
 def one_record(a, tmp):
@@ -325,7 +380,7 @@ def main():
         refine_narrows(fold_compare)
         rescan_finds(fold_compare)
         dense_finds(fold_compare)
-        margin_rule(locate_outer)
+        margin_rule(locate_outer, a.src)
         p_rule(locate_outer, a.src)
         one_record(a, tmp)
     finish()
