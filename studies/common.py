@@ -13,6 +13,7 @@ the shell drivers of bench/:   eval "$(/usr/bin/python3 studies/common.py --shel
 import csv
 import importlib.util
 import io
+import json
 import os
 import re
 import shlex
@@ -186,6 +187,17 @@ def run(cmd, log=None, who="study", mpi=None, cwd=None):
     if r.returncode != 0:
         sys.exit(f"{who}: failed ({r.returncode}): {' '.join(cmd)}"
                  + (f"; see {log}" if log else ""))
+
+
+def finished(run_dir):
+    """Whether the run in RUN_DIR ended: its run.json is written at the start, so a run stopped
+    halfway (killed, a full disk) has one too, with another status, and must be run again
+    rather than read as a cached run."""
+    try:
+        with open(os.path.join(run_dir, "run.json")) as f:
+            return json.load(f).get("status") == "finished"
+    except (OSError, ValueError):
+        return False
 
 
 def post(args, who="study", allow_fail=False):

@@ -78,7 +78,7 @@ def simulate(out, sizes):
     sweep (2 partitions when 2 processes are there; a rerun skips the finished cases)."""
     sims = {}
     healthy = os.path.join(out, "sim", "healthy")
-    if not os.path.exists(os.path.join(healthy, "run.json")):
+    if not common.finished(healthy):
         os.makedirs(healthy, exist_ok=True)
         cmd = common.deck_command(common.BEARING_DECK, [
             "-var", "out", healthy, "-log", os.path.join(healthy, "log.liggghts"),

@@ -115,7 +115,10 @@ def main(argv):
                      # the pit's own branch's best run (the p-values' calibration), wherever it
                      # ranks
                      "pit_branch_chi2": min((x["chi2"] for x in ranked if on_pit(x, angle, d)),
-                                            default=None)})
+                                            default=None),
+                     # the bins the chi2s are over (the pulse's window; own_branch_p() scales
+                     # a chi2 to the calibration's)
+                     "bins": d["bins"]})
         print(rows[-1], flush=True)
         common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows,
                          quoted=("note", "interval"))

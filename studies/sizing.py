@@ -74,7 +74,7 @@ def simulate(out, case, tend, extra=None):
     extra = extra or {}
     d = os.path.join(out, "sim", f"{defect}_{size:g}_{load}_p{position:g}"
                      + "".join(f"_{k}{v}" for k, v in sorted(extra.items())))
-    if not os.path.exists(os.path.join(d, "run.json")):
+    if not common.finished(d):
         os.makedirs(d, exist_ok=True)
         cmd = common.deck_command(common.BEARING_DECK, [
             "-var", "out", d, "-log", os.path.join(d, "log.liggghts"), "-screen", "none"] +

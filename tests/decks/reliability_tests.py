@@ -80,6 +80,14 @@ def newest_restarts(out):
                   reverse=True)
 
 
+def studies_common(a):
+    """studies/common.py, whose finished() the studies' run caches ask (a run stopped halfway is
+    run again, not read)."""
+    sys.path.insert(0, os.path.join(a.src, "studies"))
+    import common
+    return common
+
+
 def test_kill_resume(a, work):
     common = ["-var", "tend", "0.03", "-var", "restart_every", "3000", "-screen", "none"]
     full = os.path.join(work, "full")
@@ -96,6 +104,8 @@ def test_kill_resume(a, work):
     files = newest_restarts(killed)
     check(len(files) == 2, f"kill_resume: killed after the restart files {files}")
     check(status_of(killed) == "running", "kill_resume: run.json of the killed run: running")
+    check(not studies_common(a).finished(killed),
+          "kill_resume: the studies' run cache does not take the killed run as done")
     with open(os.path.join(killed, "signal.txt")) as f:
         rows_killed = sum(1 for l in f if not l.startswith("#"))
     with open(os.path.join(full, "signal.txt")) as f:
@@ -114,6 +124,7 @@ def test_kill_resume(a, work):
           f"(exit {r.returncode}): {[l for l in r.stdout.splitlines() if 'ERROR' in l]}")
     check("stale lock" in r.stdout, "kill_resume: the killed run's lock is found stale")
     check(status_of(killed) == "finished", "kill_resume: run.json finished after the resume")
+    check(studies_common(a).finished(killed), "kill_resume: the studies' run cache takes it now")
     with open(os.path.join(full, "signal.txt"), "rb") as f:
         want = f.read()
     with open(os.path.join(killed, "signal.txt"), "rb") as f:
