@@ -320,8 +320,9 @@ def margin_at(fold_period, rate):
     periods' there."""
     own = MARGINS[fold_period]
     rates = sorted({r for m in MARGINS.values() for r in m})
-    if any(abs(r - rate) <= 1e-6 * r for r in own):
-        return next(own[r] for r in own if abs(r - rate) <= 1e-6 * r), True
+    calibrated = [r for r in own if abs(r - rate) <= 1e-6 * r]
+    if calibrated:
+        return own[calibrated[0]], True
     below = [r for r in rates if r <= rate * (1 + 1e-6)][-1:]
     above = [r for r in rates if r >= rate * (1 - 1e-6)][:1]
 

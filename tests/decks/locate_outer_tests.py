@@ -247,6 +247,25 @@ def margin_rule(lo, src):
         check(got == want, f"fold_and_margin{args}: {got}")
 
 
+def held_out_chi2(src, names, calibration_bins):
+    """The pit's own branch's best chi2 in the committed locate_check_<name>.csv tables, and
+    its ln scaled to the calibration's bins (own_branch_p()'s chi2 per bin)."""
+    chi2, scaled = [], []
+    for name in names:
+        path = os.path.join(src, "doc", "report", "sizing", "template", f"locate_check_{name}.csv")
+        with open(path, newline="") as f:
+            for r in csv.DictReader(f):
+                chi2.append(float(r["pit_branch_chi2"]))
+                scaled.append(math.log(chi2[-1] * calibration_bins / float(r["bins"])))
+    return chi2, scaled
+
+
+def agreement(x, logs):
+    """Welch's t and Levene's (median) p-values of x against the calibration's logs."""
+    return (stats.ttest_ind(x, logs, equal_var=False).pvalue,
+            stats.levene(x, logs, center="median").pvalue)
+
+
 def p_rule(lo, src):
     """The p-values of the branches (locate_outer.own_branch_p()) and the placement they allow."""
     # the calibration, recomputed from the committed held-out tables it names: the pit's own
@@ -300,16 +319,8 @@ def p_rule(lo, src):
     # session 27's check at 50 kHz (locate_check_r50000_s27{a,b}.csv, 12 held-out records): the
     # pit's own branch's best chi2 scaled to 68 bins agrees with the 16 at 20 kHz (Welch's t and
     # Levene's test at 0.05, as fixed before the runs); unscaled it does not (Welch's p 0.019)
-    at50, bins = [], []
-    for name in ("r50000_s27a", "r50000_s27b"):
-        path = os.path.join(src, "doc", "report", "sizing", "template", f"locate_check_{name}.csv")
-        with open(path, newline="") as f:
-            for r in csv.DictReader(f):
-                at50.append(float(r["pit_branch_chi2"]))
-                bins.append(float(r["bins"]))
-    scaled = np.log(at50) - np.log(np.array(bins) / own["bins"])
-    welch = stats.ttest_ind(scaled, logs, equal_var=False).pvalue
-    levene = stats.levene(scaled, logs, center="median").pvalue
+    at50, scaled = held_out_chi2(src, ("r50000_s27a", "r50000_s27b"), own["bins"])
+    welch, levene = agreement(scaled, logs)
     raw = stats.ttest_ind(np.log(at50), logs, equal_var=False).pvalue
     check(len(at50) == 12 and welch > 0.05 and levene > 0.05 and raw < 0.05,
           f"50 kHz: {len(at50)} records, scaled Welch p {welch:.3f}, Levene p {levene:.3f}; "
@@ -317,15 +328,8 @@ def p_rule(lo, src):
     # session 28's check at 10 kHz (locate_check_r10000_s28{a,b}.csv, 12 held-out records, the
     # same test fixed before the runs, no second look): the scaled chi2 differs from the 16 (at
     # least one of the two tests rejects), so the p-values are not used at 10 kHz
-    at10, scaled10 = [], []
-    for name in ("r10000_s28a", "r10000_s28b"):
-        path = os.path.join(src, "doc", "report", "sizing", "template", f"locate_check_{name}.csv")
-        with open(path, newline="") as f:
-            for r in csv.DictReader(f):
-                at10.append(float(r["pit_branch_chi2"]))
-                scaled10.append(math.log(at10[-1] * own["bins"] / float(r["bins"])))
-    welch = stats.ttest_ind(scaled10, logs, equal_var=False).pvalue
-    levene = stats.levene(scaled10, logs, center="median").pvalue
+    at10, scaled = held_out_chi2(src, ("r10000_s28a", "r10000_s28b"), own["bins"])
+    welch, levene = agreement(scaled, logs)
     check(len(at10) == 12 and min(welch, levene) < 0.05 and not lo.p_values_hold("grid", 1e4, 0.3),
           f"10 kHz: {len(at10)} records, scaled Welch p {welch:.3f}, Levene p {levene:.3f}: "
           "the p-values off")
