@@ -60,6 +60,17 @@ def p_text(p):
     return "" if p is None else f" (p {p:.2g})"
 
 
+def dist_err(d, angle):
+    """The error of a record's distance from the load line (deg; None where not given)."""
+    dist = d.get("distance_from_load_deg")
+    return None if dist is None else dist - abs(angle)
+
+
+def covered(interval, value):
+    """Whether the interval [low, high] holds the value (None: no interval)."""
+    return None if not interval else interval[0] <= value <= interval[1]
+
+
 def on_pit(candidate, angle, d):
     """Whether a candidate's best run lies on the pit's branch (within half a ball spacing)."""
     return abs((candidate["best_run_deg"] - angle + 180) % 360 - 180) < 0.5 * d["ball_spacing_deg"]
@@ -99,7 +110,13 @@ def main(argv):
                      "interval": d["position_interval_deg"], "determined": ok,
                      "within_15": ok and abs(err) <= 15, "margin": d.get("chi2_margin"),
                      "best_size_deg": best["best_run_size_deg"],
-                     "mirror_distance_deg": d.get("distance_from_load_deg"),
+                     # not placed: the distance from the load line, either side, its
+                     # interval, its error against the pit's and whether the interval holds it
+                     "distance_deg": d.get("distance_from_load_deg"),
+                     "distance_interval": d.get("distance_interval_deg"),
+                     "distance_error_deg": dist_err(d, angle),
+                     "distance_covered": covered(d.get("distance_interval_deg"), abs(angle)),
+                     "mirror_pair": "mirror_positions_deg" in d,
                      "runs": sum(x["runs"] for x in d["candidates"]), "note": d["note"],
                      "fold_period": d["fold_period"], "margin_used": d["margin"],
                      "pulse_window": "-".join(f"{v:g}" for v in d["pulse_window"]),
@@ -121,7 +138,7 @@ def main(argv):
                      "bins": d["bins"]})
         print(rows[-1], flush=True)
         common.write_csv(os.path.join(a.out, f"locate_check{tag}.csv"), rows,
-                         quoted=("note", "interval"))
+                         quoted=("note", "interval", "distance_interval"))
     folds = "/".join(sorted({r["fold_period"] for r in rows}))
     margins = "/".join(f"{m:g}" for m in sorted({r["margin_used"] for r in rows}))
     windows = "/".join(sorted({r["pulse_window"] for r in rows}))
@@ -139,14 +156,18 @@ def main(argv):
              + (f"; the record's scene with {a.mismatch[0]} = {a.mismatch[1]}, the runs' (as the "
                 f"user states it) {a.mismatch[2]}" if a.mismatch else "") + ".",
              "", "| pit (deg from load, size) | phase (deg) | placed (deg) | interval "
-             "| error (deg) | chi2 margin | best run (deg): chi2 (p), runner-up's | runs | note |",
-             "|---" * 9 + "|"]
+             "| error (deg) | not placed: distance from the load line (deg), interval, error "
+             "| chi2 margin | best run (deg): chi2 (p), runner-up's | runs | note |",
+             "|---" * 10 + "|"]
     for r in rows:
         iv = "-" if not r["interval"] else f"[{r['interval'][0]:.1f}, {r['interval'][1]:.1f}]"
         lines.append(
             f"| {r['angle_deg']:g}, {r['size_deg']:g} | {r['phase_deg']:.1f} | "
             + ("not determined" if not r["determined"] else f"{r['position_deg']:.2f}")
             + f" | {iv} | " + ("-" if r["error_deg"] is None else f"{r['error_deg']:+.2f}")
+            + " | " + ("-" if r["distance_deg"] is None else
+                       f"{r['distance_deg']:.2f} [{r['distance_interval'][0]:.1f}, "
+                       f"{r['distance_interval'][1]:.1f}] {r['distance_error_deg']:+.2f}")
             + f" | {'-' if r['margin'] is None else format(r['margin'], '.0f')} | "
             f"{r['best_run_deg']:g}: {r['best_chi2']:.0f}{p_text(r['best_p'])}, "
             + ("-" if r["next_chi2"] is None else f"{r['next_chi2']:.0f}{p_text(r['next_p'])}")
@@ -155,11 +176,21 @@ def main(argv):
     placed = sum(r["determined"] for r in rows)
     right = sum(bool(r["within_15"]) for r in rows)
     wrong = placed - right
-    mirror = sum(r["mirror_distance_deg"] is not None for r in rows)
+    mirror = sum(r["mirror_pair"] for r in rows)
+    dist = [r for r in rows if r["distance_deg"] is not None]
     lines += ["", f"Placed {placed}/{n}; within 15 deg: {right}/{n}; placed on a wrong branch: "
               f"{wrong}/{n}; not determined: {n - placed}/{n}"
-              + (f" (of which {mirror} given as a distance from the load line, either side)"
-                 if mirror else "") + "."]
+              + (f" (of which {mirror} a mirror pair)" if mirror else "") + "."]
+    if dist:
+        worst = max(abs(r["distance_error_deg"]) for r in dist)
+        lines.append(
+            f"Not placed but given as a distance from the load line, either side: {len(dist)}/{n}"
+            f"; within 15 deg: {sum(abs(r['distance_error_deg']) <= 15 for r in dist)}"
+            f"/{len(dist)} (the largest error {worst:.2f} deg); the interval holds the pit's "
+            f"distance in {sum(r['distance_covered'] for r in dist)}/{len(dist)}, "
+            f"{min(r['distance_interval'][1] - r['distance_interval'][0] for r in dist):.1f}-"
+            f"{max(r['distance_interval'][1] - r['distance_interval'][0] for r in dist):.1f} "
+            "deg wide.")
     with open(os.path.join(a.out, f"locate_check{tag}.md"), "w") as f:
         f.write("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -350,18 +350,54 @@ def rescan_above(fold_period, margin, bins):
     return min(margin, per_bin)
 
 
-def mirror_pair(found, margin, bins=None):
-    """The best runs' angles when the branches within the margin are two whose best runs are
-    mirror images about the load line (within ANGLE_STEP): a pit at about half the ball
-    spacing from it, where the phase has a branch on either side at the same distance, which a
-    symmetric radial load does not tell apart. With bins (the p-values calibrated), a branch
-    whose p-value is below REJECT_P is not counted. None otherwise."""
+def close_branches(found, margin, bins=None):
+    """The candidates left when no branch is placed, best first: the best and the branches
+    within the margin of it; with bins (the p-values calibrated), not those whose p-value is
+    below REJECT_P (they fit worse than the pit's own branch does in all but REJECT_P of
+    records)."""
     found = sorted(found)
-    close = [f for f in found if f[0] - found[0][0] <= margin
-             and (bins is None or own_branch_p(f[0], bins=bins) >= REJECT_P)]
+    return found[:1] + [f for f in found[1:] if f[0] - found[0][0] <= margin
+                        and (bins is None or own_branch_p(f[0], bins=bins) >= REJECT_P)]
+
+
+def mirror_pair(found, margin, bins=None):
+    """The best runs' angles when the branches left (close_branches()) are two whose best runs
+    are mirror images about the load line (within ANGLE_STEP): a pit at about half the ball
+    spacing from it, where the phase has a branch on either side at the same distance, which a
+    symmetric radial load does not tell apart. None otherwise."""
+    close = close_branches(found, margin, bins)
     if len(close) == 2 and abs(close[0][2] + close[1][2]) <= fold_compare.ANGLE_STEP:
         return close[0][2], close[1][2]
     return None
+
+
+def branch_interval(at, phase, interval, spacing):
+    """The interval of a best run at `at` deg: the phase's interval moved onto its branch,
+    widened to the run's angle +- ANGLE_STEP (the phase's centroid lies up to ~2-3 deg off the
+    pit on the held-out cases)."""
+    k = round((at - phase) / spacing) * spacing
+    return [min(interval[0] + k, at - fold_compare.ANGLE_STEP),
+            max(interval[1] + k, at + fold_compare.ANGLE_STEP)]
+
+
+def distance_from_load(found, margin, bins, spacing, phase, interval, p_values=False):
+    """When no branch is placed: the pit's distance from the load line, either side (deg), by
+    its best run, and the interval that holds every branch left (close_branches()). The radial
+    load is symmetric about its line, so the branches that fit alike are mostly the pit's own
+    and the one nearest its mirror image (on the 7 held-out 20 kHz records not placed, the
+    best run within 0.61 deg of the pit's distance: locate_check_s29_not_placed.md in
+    doc/report/sizing/template); where two branches at unlike distances are left, the interval
+    spans both. None when no run is like the record (decide()) or, with
+    p_values, when the best run itself is rejected."""
+    close = close_branches(found, margin, bins if p_values else None)
+    if close[0][0] / bins > MAX_CHI2_PER_BIN or (
+            p_values and own_branch_p(close[0][0], bins=bins) < REJECT_P):
+        return None
+    ends = []
+    for f in close:
+        lo, hi = branch_interval(f[2], phase, interval, spacing)
+        ends += [0.0 if lo <= 0 <= hi else min(abs(lo), abs(hi)), max(abs(lo), abs(hi))]
+    return abs(close[0][2]), [min(ends), max(ends)]
 
 
 def main(argv):
@@ -527,21 +563,31 @@ def main(argv):
               "runs_made": scene.runs}
     if not placed:
         result.update(position_deg=None, position_interval_deg=None, branch_determined=False,
-                      position_modulo_deg=spacing)
+                      position_modulo_deg=spacing, distance_from_load_deg=None,
+                      distance_interval_deg=None)
+        dist = distance_from_load(found, a.margin, bins, spacing, phase, (lo, hi), calibrated)
         pair = mirror_pair(found, a.margin, bins if calibrated else None)
         if pair:
-            dist = 0.5 * (abs(pair[0]) + abs(pair[1]))
-            result.update(distance_from_load_deg=round(dist, 3), mirror_positions_deg=list(pair))
-            note += (f"; the two are mirror images about the load line: the pit lies {dist:.2f} "
-                     "deg from it, on a side a symmetric radial load does not tell")
+            result.update(mirror_positions_deg=list(pair))
+            note += ("; the two are mirror images about the load line: on a side a symmetric "
+                     "radial load does not tell")
+        if dist:
+            result.update(distance_from_load_deg=round(dist[0], 3),
+                          distance_interval_deg=[round(v, 3) for v in dist[1]])
+            note += (f"; the pit lies {dist[0]:.2f} deg from the load line, either side "
+                     f"([{dist[1][0]:.2f}, {dist[1][1]:.2f}] holds every branch left)")
+            if rate < CHECKED_RATE:
+                note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the best run may lie on "
+                         "another branch (the held-out 10 kHz -21.25/2.6: a ball spacing off, "
+                         "in the interval: doc/ohmdem-post.md)")
+        elif calibrated and min(found)[0] / bins <= MAX_CHI2_PER_BIN:
+            note += (f"; no distance from the load line either: every branch fits worse than "
+                     f"the pit's own does in all but {REJECT_P:.0%} of records")
     else:
-        # the best run's angle (to the search's step), its interval holding the phase's on
-        # that branch too (the phase's centroid lies up to ~2-3 deg off on the held-out cases)
-        k = round((ordered[0][2] - phase) / spacing) * spacing
+        # the best run's angle (to the search's step) and its branch's interval
         at = ordered[0][2]
-        result.update(position_deg=at, position_interval_deg=[
-                          min(lo + k, at - fold_compare.ANGLE_STEP),
-                          max(hi + k, at + fold_compare.ANGLE_STEP)],
+        result.update(position_deg=at,
+                      position_interval_deg=branch_interval(at, phase, (lo, hi), spacing),
                       branch_determined=True, best_run_size_deg=ordered[0][3],
                       chi2_margin=(ordered[1][0] - ordered[0][0]) if len(ordered) > 1 else None)
     result["note"] = note
@@ -551,8 +597,11 @@ def main(argv):
     if a.format == "json":
         print(json.dumps(result, indent=1))
     else:
-        pos = ("not determined" + (f" (±{result['distance_from_load_deg']:.1f} deg: mirror "
-                                   "images)" if "mirror_positions_deg" in result else "")
+        dist = result.get("distance_from_load_deg")
+        pos = ("not determined" + ("" if dist is None else (
+                   f"; {dist:.1f} deg from the load line either side "
+                   f"[{result['distance_interval_deg'][0]:.1f}, "
+                   f"{result['distance_interval_deg'][1]:.1f}]"))
                if not placed else
                f"{result['position_deg']:.1f} deg [{result['position_interval_deg'][0]:.1f}, "
                f"{result['position_interval_deg'][1]:.1f}] from the load direction")

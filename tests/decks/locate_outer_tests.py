@@ -7,12 +7,13 @@ the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its n
 higher does not; over the pulse's window a slow cycle after the pulse does not count); the
 refinement of a branch's best to 1/16 deg on a narrow misfit; the rescan at the best size when
 the scan's size was off; the dense look past a local minimum of a rugged misfit; the margin rule
-and the mirror pair; the branches' p-values (their calibration recomputed from the committed
-tables, the predictive p's rate by Monte Carlo, the placement they allow). Then one run: a 1.5 deg pit 20 deg from the load direction (the branches
-27.7 deg apart: this record's best run of the other branch has chi2 428 against 10 for
-its own in the pulse's window, studies/locate_outer.py on the same record in session 24),
-acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to 1 deg; and
-the errors of a record not from acquire and of a scene without a radial load.
+and the mirror pair; the distance from the load line of a pit not placed; the branches'
+p-values (their calibration recomputed from the committed tables, the predictive p's rate by
+Monte Carlo, the placement they allow). Then one run: a 1.5 deg pit 20 deg from the load
+direction (the branches 27.7 deg apart: this record's best run of the other branch has chi2 428
+against 10 for its own in the pulse's window, studies/locate_outer.py on the same record in
+session 24), acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to
+1 deg; and the errors of a record not from acquire and of a scene without a radial load.
 Usage: locate_outer_tests.py --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR"""
 import argparse
 import csv
@@ -266,6 +267,47 @@ def agreement(x, logs):
             stats.levene(x, logs, center="median").pvalue)
 
 
+def distance_rule(lo):
+    """Not placed: the pit's distance from the load line, either side, and the interval that
+    holds every branch left (the numbers worked by hand from the phase's interval, each best
+    run's branch and ANGLE_STEP 0.5 deg)."""
+    spacing = 360 / 13
+    # the held-out 21.25/0.37 at 20 kHz (locate_check_s27_old.md): phase -4.484 deg, its
+    # interval [-5.159, -3.808]; best runs at 21.21 (chi2 5.3) and -6.48 (26.7, p 0.014) are
+    # left, -34.18 (99) is beyond the margin of 50. 21.21 lies on the branch one spacing up:
+    # [22.533, 23.884] widened to 21.21 - 0.5 = 20.71; -6.48 on the phase's own: [-6.98,
+    # -3.808], 3.808-6.98 deg from the load line; together 3.808-23.884
+    found = [(4011.4, -59.87, -57.37, 0.4, 31), (99.2, -32.18, -34.179, 0.46, 82),
+             (26.686, -4.48, -6.48, 0.31, 46), (5.326, 23.21, 21.21, 0.365, 46),
+             (1040.9, 50.9, 48.65, 0.655, 32)]
+    phase, interval = -4.4838, (-5.1593, -3.8083)
+    dist, (d_lo, d_hi) = lo.distance_from_load(found, 50, 68, spacing, phase, interval, True)
+    check(dist == 21.21 and abs(d_lo - 3.808) < 1e-3 and abs(d_hi - 23.884) < 1e-3,
+          f"two branches at unlike distances: 21.21 [3.808, 23.884]: {dist} [{d_lo}, {d_hi}]")
+    # the runner-up rejected (its chi2 raised to 40 over 68 bins: p < 0.01) leaves the best's
+    # branch alone: [20.71, 23.884]
+    found[2] = (40.0, -4.48, -6.48, 0.31, 46)
+    check(lo.own_branch_p(40.0, bins=68) < lo.REJECT_P, "chi2 40 over 68 bins: rejected")
+    dist, (d_lo, d_hi) = lo.distance_from_load(found, 50, 68, spacing, phase, interval, True)
+    check(abs(d_lo - 20.71) < 1e-9 and abs(d_hi - 23.884) < 1e-3,
+          f"a rejected branch does not widen it: [{d_lo}, {d_hi}]")
+    # without the p-values (another rate) the margin alone: the runner-up is left again
+    dist, (d_lo, d_hi) = lo.distance_from_load(found, 50, 68, spacing, phase, interval, False)
+    check(abs(d_lo - 3.808) < 1e-3, f"without p-values the margin alone: {d_lo}")
+    # a branch across the load line: its interval holds 0 deg from it
+    dist, (d_lo, d_hi) = lo.distance_from_load([(3.0, 0.5, 0.1, 0.4, 30), (9.0, 28.2, 27.9,
+                                                0.4, 30)], 50, 68, spacing, 0.5, (-1.0, 2.0),
+                                               False)
+    check(dist == 0.1 and d_lo == 0.0 and abs(d_hi - 29.692) < 1e-3,
+          f"across the load line: 0.1 [0, 29.692]: {dist} [{d_lo}, {d_hi}]")
+    # none: the best rejected (the held-out 50 kHz 43.25/0.75, chi2 91.8 over 170 bins, p
+    # 0.005), or no run like the record (more than 20 chi2 a bin)
+    check(lo.distance_from_load([(91.775, 43.34, 43.34, 0.75, 30)], 1210, 170, spacing, 15.6,
+                                (15.0, 16.0), True) is None, "the best rejected: no distance")
+    check(lo.distance_from_load([(1500.0, 43.34, 43.34, 0.75, 30)], 50, 68, spacing, 15.6,
+                                (15.0, 16.0), False) is None, "no run like the record: none")
+
+
 def p_rule(lo, src):
     """The p-values of the branches (locate_outer.own_branch_p()) and the placement they allow."""
     # the calibration, recomputed from the committed held-out tables it names: the pit's own
@@ -406,6 +448,7 @@ def main():
         rescan_finds(fold_compare)
         dense_finds(fold_compare)
         margin_rule(locate_outer, a.src)
+        distance_rule(locate_outer)
         p_rule(locate_outer, a.src)
         one_record(a, tmp)
     finish()
