@@ -336,6 +336,21 @@ def rescan(chi2_at, best, lo, hi, step=ANGLE_STEP / 2):
     return min(best, refine(chi2_at, found, lo, hi))
 
 
+def sweep(chi2_at, best, lo, hi, size_lo, size_hi):
+    """A branch's best run (chi2, size, angle) when it may have been searched from sizes far
+    from the pit's: the misfit is rugged in the size too (the 10 kHz held-out -21.25/2.6 at
+    -20.985 deg: chi2 982 at 2.39 deg of pit, 152 at 2.58, 2264 at 2.79), so size_line()'s
+    walk from a start stops on the first least. The size every SIZE_STEP over [size_lo,
+    size_hi] at the best angle; from a better run, refine() and dense(). Returns (chi2, size,
+    angle)."""
+    n = int(math.ceil(math.log(size_hi / size_lo) / math.log(SIZE_STEP) - 1e-9))
+    sizes = [round(size_lo * SIZE_STEP ** k, 3) for k in range(n + 1)]
+    found = min((chi2_at(best[2], sz), sz, best[2]) for sz in sizes)
+    if found >= best:
+        return best
+    return min(best, dense(chi2_at, refine(chi2_at, found, lo, hi), lo, hi))
+
+
 def dense(chi2_at, best, lo, hi, span=DENSE_SPAN_DEG, step=ANGLE_STEP / 8):
     """A refined best run (chi2, size, angle) checked against every run `step` apart within `span`
     deg either side at its size (within [lo, hi]): the misfit is rugged at 1/16 deg (each run its

@@ -6,7 +6,8 @@ Parts without runs: the chain read from a record's header repeats the record sam
 the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its noise, one 10 %
 higher does not; over the pulse's window a slow cycle after the pulse does not count); the
 refinement of a branch's best to 1/16 deg on a narrow misfit; the rescan at the best size when
-the scan's size was off; the dense look past a local minimum of a rugged misfit; the margin rule
+the scan's size was off; the dense look past a local minimum of a rugged misfit; the size
+swept when a search began far from the pit's size; the margin rule
 and the mirror pair; the distance from the load line of a pit not placed; the branches'
 p-values (their calibration recomputed from the committed tables, the predictive p's rate by
 Monte Carlo, the placement they allow). Then one run: a 1.5 deg pit 20 deg from the load
@@ -176,6 +177,37 @@ def rescan_finds(fc):
     got = fc.rescan(chi2_at, best, 17.5, 19.5)
     check(got == best and calls and all(17.5 <= a <= 19.5 for a, _ in calls),
           f"rescan keeps to its window and its best when nothing fits better: {got}")
+
+
+def sweep_finds(fc):
+    # a misfit rugged in the size (as the 10 kHz -21.25/2.6's own branch: 982 at 2.39 deg of pit,
+    # 152 at 2.58, 2264 at 2.79): a local least at 1.28 deg where size_line() from 1.2 stops, the
+    # pit's narrow basin at 2.6 deg (8 % wide) and 0.25 deg off the best angle. sweep() tries the
+    # size every 8 % (to 3 decimals) over the bank's 0.22-4 deg at the best angle, then refines into
+    # the basin
+    calls = []
+
+    def chi2_at(ang, sz):
+        calls.append((ang, sz))
+        if abs(math.log(sz / 2.6)) < 0.04:
+            return 1 + 2500 * (ang + 21.235) ** 2
+        return 980 + 300 * math.log(sz / 1.28) ** 2 + 1000 * (ang + 20.985) ** 2
+
+    lo, hi = -23.5, -18.5
+    c, sz = fc.size_line(chi2_at, -20.985, 1.2)
+    check(abs(sz / 1.28 - 1) < 0.05 and c > 900, f"size_line stops at the local least: {sz:g}")
+    best = (c, sz, -20.985)
+    del calls[:]
+    c, sz, ang = fc.sweep(chi2_at, best, lo, hi, 0.22, 4.0)
+    ladder = sorted({s for a, s in calls if a == -20.985})
+    check(ladder[0] == 0.22 and ladder[-1] >= 4.0 and len(ladder) >= 38
+          and max(b / a for a, b in zip(ladder, ladder[1:])) < 1.085,
+          f"sweep: {len(ladder)} sizes 8 % apart over 0.22-4 deg at the best angle")
+    check(abs(sz / 2.6 - 1) < 0.04 and abs(ang + 21.235) <= 1 / 16 and c < 10,
+          f"sweep: {ang:g} deg, {sz:g} deg of pit, chi2 {c:.1f} (the pit: -21.235, 2.6)")
+    check(all(lo <= a <= hi for a, _ in calls), "sweep keeps to its window")
+    flat = fc.sweep(lambda a, s: 500.0, (400.0, 1.28, -20.985), lo, hi, 0.22, 4.0)
+    check(flat == (400.0, 1.28, -20.985), f"nothing better: the best kept: {flat}")
 
 
 def margin_rule(lo, src):
@@ -447,6 +479,7 @@ def main():
         refine_narrows(fold_compare)
         rescan_finds(fold_compare)
         dense_finds(fold_compare)
+        sweep_finds(fold_compare)
         margin_rule(locate_outer, a.src)
         distance_rule(locate_outer)
         p_rule(locate_outer, a.src)
