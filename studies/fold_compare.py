@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 OVERSAMPLE = 4  # fold bins per sample
+EMPTY_FACTOR = 1e3  # an empty fold bin's error over the largest other's (diagnose's fold)
 # the fit's allowance for two runs' differences (compare(model=True)): 2 % of the pulse, 5 us of
 # timing per bin
 MODEL_REL, MODEL_JITTER_S = 0.02, 5e-6
@@ -86,6 +87,15 @@ def without_cycle(y, se, harmonics=2, before=0.15):
     return y - a[:, 1:] @ coef[1:]
 
 
+def empty_bins(se):
+    """The bins no pass fell in (a period near a whole number of samples): diagnose's fold gives
+    them EMPTY_FACTOR times the largest other bin's error (post/bearing/pulse_template.h,
+    bins_without_passes: the same rule). A boolean mask."""
+    top = float(np.max(se))
+    high, low = se >= (1 - 1e-3) * top, se <= 2 * top / EMPTY_FACTOR
+    return high if low.any() and bool(np.all(high | low)) else np.zeros(len(se), bool)
+
+
 def shifted(y, base):
     """y read at j + base (linear interpolation, circular), for j = 0..len-1."""
     n = len(y)
@@ -121,12 +131,25 @@ def misfit(rec, tmpl, n, shift, bin_s, model, scale_free, window=None):
         u = np.arange(n) / len(rec[0])
         w = np.where((u >= window[0]) & (u < window[1]), w, 0.0)
         a = np.c_[a, u - 0.5 * (window[0] + window[1])]
+    # bins either fold has no pass in weigh nothing, and the chi2 is scaled to the bins compared:
+    # a fold whose filled bins meet the other's empty ones would otherwise fit with no misfit
+    # (diagnose's template fit read a 2.86 deg inner pit as 3.7 so), and one with half its bins
+    # empty at half the chi2 of its rivals
+    counted = int(np.count_nonzero(w))
+    er, et = empty_bins(rec[1]), empty_bins(tmpl[1])
+    if er.any() or et.any():
+        near = np.floor(np.arange(n) + shift + 0.5).astype(int) % len(rec[1])  # as shifted()
+        w = np.where(er[near] | et[:n], 0.0, w)
+    informative = int(np.count_nonzero(w))
     if scale_free:
         a = np.c_[a, yt]
     target = yr if scale_free else yr - yt
+    if informative <= a.shape[1]:
+        return math.inf, np.zeros(n), w, 1.0
     coef = np.linalg.solve(a.T @ (w[:, None] * a), a.T @ (w * target))
     r = target - a @ coef
-    return float(np.sum(w * r * r)), r, w, (coef[-1] if scale_free else 1.0)
+    chi2 = float(np.sum(w * r * r)) * counted / informative
+    return chi2, r, w, (coef[-1] if scale_free else 1.0)
 
 
 def compared_bins(rec, tmpl, window=None):
@@ -147,7 +170,7 @@ def compare(rec, tmpl, bin_s, model=False, scale_free=False, window=None):
          for k in range(-reach, reach + 1)]
     i = int(np.argmin(c))
     s = float(i - reach)
-    if 0 < i < len(c) - 1:
+    if 0 < i < len(c) - 1 and math.isfinite(c[i - 1] + c[i + 1]):
         curv = c[i - 1] - 2 * c[i] + c[i + 1]
         if curv > 0:
             s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv

@@ -84,6 +84,10 @@ def fold(out, defect, size, load, angle, rate, noise):
         if r.returncode != 0:
             return None
     head = fold_compare.read_header(path)
+    # a period near a whole number of samples leaves bins no pass fell in: a template with
+    # them would fit a record's own empty bins with no misfit, so the bank goes without it
+    if int(head.get("bins no pass fell in", "0")) > 0:
+        return None
     return (head.get("lowpass", ""), head["bin (s)"]) + fold_compare.read_fold(path, text=True)
 
 

@@ -84,7 +84,7 @@ FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int 
   // an empty bin: the line between its filled neighbours, weighing nothing in a fit
   double big = 0;
   for (std::size_t b = 0; b < bins; ++b)
-    if (n[b] >= 2) big = std::max(big, 1e3 * se[b]);
+    if (n[b] >= 2) big = std::max(big, kEmptyBinErrorFactor * se[b]);
   for (std::size_t b = 0; b < bins; ++b) {
     if (n[b] >= 2) continue;
     std::size_t l = 1, r = 1;
@@ -115,11 +115,26 @@ FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f, int 
     p.y[j] = y[b];
     p.se[j] = se[b];
   }
+  p.empty = empty;
   p.bin_s = 1 / (rate * oversample);
   p.period_s = period / rate;
   p.how = how;
   p.valid = true;
   return p;
+}
+
+std::size_t bins_without_passes(const std::vector<double> &se)
+{
+  if (se.empty()) return 0;
+  const double top = *std::max_element(se.begin(), se.end());
+  // the empty bins all at the top (one value, to the digits a file keeps), every other at most
+  // 1/kEmptyBinErrorFactor of it (by a factor of 2); a bin between makes it a filled fold's range
+  std::size_t high = 0, low = 0;
+  for (double v : se) {
+    if (v >= (1 - 1e-3) * top) ++high;
+    else if (v <= 2 * top / kEmptyBinErrorFactor) ++low;
+  }
+  return low > 0 && high + low == se.size() ? high : 0;
 }
 
 }  // namespace ohmdem::post

@@ -43,11 +43,20 @@ struct FoldedPulse {
   FoldPeriod how = FoldPeriod::grid;  // how it was refined
   std::size_t passes = 0;   // defect passes folded
   std::size_t entry = 0;    // the entry's bin (a quarter of the bins)
+  // bins no pass fell in (a period near a whole number of samples): the line between their
+  // filled neighbours, with an error kEmptyBinErrorFactor times the largest other bin's
+  std::size_t empty = 0;
   std::vector<double> y;    // mean per bin
   std::vector<double> se;   // its standard error
 };
+constexpr double kEmptyBinErrorFactor = 1e3;
 FoldedPulse fold_pulse(const std::vector<double> &x, double rate, double f,
                        int oversample = kTemplateOversample, FoldPeriod how = FoldPeriod::grid);
+
+// The bins of a fold's errors (a bank's template, written from a fold) that no pass fell in:
+// those fold_pulse gave one error, kEmptyBinErrorFactor times the largest other bin's. A filled
+// fold's errors vary from bin to bin; none stands alone so far above the rest.
+std::size_t bins_without_passes(const std::vector<double> &se);
 
 // Simulated folds at known sizes (deg) and angles from the load direction (deg; one angle, 0,
 // when the scene has no load zone to place the pit in). Sizes x angles must form a full grid.

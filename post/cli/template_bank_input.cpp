@@ -183,6 +183,7 @@ void write_fold(const std::string &path, const FoldedPulse &p, const std::string
       << "# period (s): " << p.period_s << "\n"
       << "# fold period: " << (p.how == FoldPeriod::fine ? "fine" : "grid") << "\n"
       << "# passes: " << p.passes << "\n"
+      << "# bins no pass fell in: " << p.empty << "\n"
       << "# Y SE\n";
   for (std::size_t j = 0; j < p.y.size(); ++j) out << p.y[j] << ' ' << p.se[j] << '\n';
   if (!out) throw Error("diagnose: --pulse-fold-out " + path + ": cannot write the file");

@@ -105,6 +105,26 @@ def folds_compare(fc):
           f"window's {bins} bins")
     check(c_win_higher > bins + 0.7 * extra,
           f"a pulse 10 % higher, in the window: chi2 {c_win_higher:.0f} (bins + {extra:.0f})")
+    # bins no pass fell in (diagnose's fold: EMPTY_FACTOR times the largest other bin's error):
+    # a record empty in every other pair of bins against the pulse 10 % higher, empty where the
+    # record is filled, compared no bin and fitted with chi2 ~0 before; now the shifts where
+    # both hold bins decide, and a fold half empty is scaled to the bins it compares
+    odd = (j // 2) % 2 == 1
+
+    def emptied(fold, where):
+        e = fold[1].copy()
+        e[where] = fc.EMPTY_FACTOR * e.max()
+        return fold[0], e
+
+    half, wrong = emptied(rec, odd), emptied(higher, ~odd)
+    check(int(fc.empty_bins(half[1]).sum()) == int(odd.sum()) and not fc.empty_bins(se).any(),
+          "the empty bins found as diagnose's fold marks them, none in a filled fold")
+    c_wrong = fc.chi2_noise(half, wrong, 1.25e-5)
+    check(c_wrong > 0.9 * n + 0.7 * extra,
+          f"complementary empty bins: the pulse 10 % higher still misfits (chi2 {c_wrong:.0f})")
+    c_half = fc.chi2_noise(rec, emptied(moved, odd), 1.25e-5)
+    check(0.5 * c_moved < c_half < 1.5 * c_moved,
+          f"a fold half empty: chi2 {c_half:.0f} as the full fold's {c_moved:.0f}, not half")
 
 
 def refine_narrows(fc):

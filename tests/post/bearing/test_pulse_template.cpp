@@ -232,6 +232,51 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
       << none.position_note;
 }
 
+// A period near a whole number of samples (32.003 at 20 kHz: the passes drift over 0.6 of a
+// sample in 0.3 s) leaves fold bins no pass fell in. A template with such bins, shifted so that
+// its filled bins meet the record's empty ones, weighed nothing anywhere and fitted with no misfit
+// (a simulated 2.86 deg pit read 3.7 deg so): the fit leaves its size out and says so.
+TEST(PulseTemplate, LeavesOutATemplateWithBinsNoPassFellIn)
+{
+  const double rate = 2e4, f_rec = rate / 32.003, f_bank = rate / 32.4;
+  const Signal s = test_records::pulse_record(104e-6, f_rec, rate);
+  const FoldedPulse rec = fold_pulse(s.x, s.rate, f_rec);
+  ASSERT_TRUE(rec.valid) << rec.note;
+  ASSERT_GT(rec.empty, 0u);
+  EXPECT_EQ(bins_without_passes(rec.se), rec.empty);
+  TemplateBank b;
+  for (double t : series(40, 320)) {
+    const Signal r = test_records::pulse_record(t * 1e-6, f_bank, rate);
+    const FoldedPulse p = fold_pulse(r.x, r.rate, f_bank);
+    ASSERT_TRUE(p.valid && p.empty == 0) << p.note;
+    EXPECT_EQ(bins_without_passes(p.se), 0u);
+    b.templates.push_back({t, 0, p.y, p.se});
+    b.bin_s = p.bin_s;
+  }
+  b.model_error = 0.03;  // as SizesAHeldOutPulseBetweenTheBanksAtEveryRate's
+  const TemplateFit clean = fit_templates(rec, b);
+  ASSERT_TRUE(clean.valid) << clean.note;
+  EXPECT_NEAR(clean.size_deg / 104, 1, 0.05) << clean.note;
+  // the longest template made empty where the record is filled: no bin where both weigh
+  PulseTemplate &bad = b.templates.back();
+  const double top = *std::max_element(bad.se.begin(), bad.se.end());
+  for (std::size_t j = 0; j < std::min(bad.se.size(), rec.se.size()); ++j)
+    if (rec.se[j] < 0.5 * *std::max_element(rec.se.begin(), rec.se.end()))
+      bad.se[j] = kEmptyBinErrorFactor * top;
+  EXPECT_GT(bins_without_passes(bad.se), 0u);
+  const TemplateFit f = fit_templates(rec, b);
+  ASSERT_TRUE(f.valid) << f.note;
+  EXPECT_NEAR(f.size_deg, clean.size_deg, 1e-9) << f.note;
+  EXPECT_LE(f.size_lo_deg, 104);
+  EXPECT_GE(f.size_hi_deg, 104);
+  EXPECT_NE(f.note.find("left out"), std::string::npos) << f.note;
+  // a bank of two sizes, one of them so: fewer than two left, not determined
+  TemplateBank two;
+  two.bin_s = b.bin_s;
+  two.templates = {b.templates.front(), bad};
+  EXPECT_FALSE(fit_templates(rec, two).valid);
+}
+
 TEST(PulseTemplate, RefusesAnotherRateOrAPartialGrid)
 {
   const TemplateBank b = bank_of({20, 45, 90}, 5e4);

@@ -326,6 +326,7 @@ TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
   const CliRun grid = run(base + " --no-size --pulse-fold-out " + fold);
   ASSERT_EQ(grid.status, 0) << grid.out;
   EXPECT_NE(test::slurp(fold).find("# fold period: grid\n"), std::string::npos);
+  EXPECT_NE(test::slurp(fold).find("# bins no pass fell in: 0\n"), std::string::npos);
   const CliRun mixed =
       run(base + " --size-method template --template-bank " + bank + " --fold-period fine");
   EXPECT_NE(mixed.status, 0);
@@ -340,6 +341,47 @@ TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.out.find("--fold-period must be grid or fine, got 'exact'"), std::string::npos)
       << bad.out;
+}
+
+// A bank's template with bins no pass fell in (its run's period a near whole number of samples:
+// diagnose's fold gives those bins one error, 1000 times the largest other's) is left out of the
+// fit, and the size's method says which and what to do (issue 26, session 30: such a template
+// fitted a record with empty bins of its own with no misfit).
+TEST(Cli, DiagnoseLeavesOutATemplateWithBinsNoPassFellIn)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  std::istringstream in(test::slurp(data + "bank_inner_force_r20000_low.txt"));
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line.rfind("3.036 0 ", 0) == 0) {  // the 3.036 deg template: every other pair of bins
+      std::istringstream ls(line);
+      std::vector<std::string> v;
+      for (std::string t; ls >> t;) v.push_back(t);
+      const std::size_t n = std::stoul(v[2]);
+      double top = 0;
+      for (std::size_t j = 0; j < n; ++j) top = std::max(top, std::stod(v[3 + n + j]));
+      line = v[0] + " " + v[1] + " " + v[2];
+      for (std::size_t j = 0; j < 2 * n; ++j)
+        line += " " + (j >= n && ((j - n) / 2) % 2 ? std::to_string(1e3 * top) : v[3 + j]);
+    }
+    text += line + "\n";
+  }
+  const std::string base = "diagnose " + data + "inner_2_force_p90_20kHz.txt --column V " +
+                           "--metadata " + data + "inner_2_force_p90.json --format json " +
+                           "--assume-defect inner --size-method template --template-bank ";
+  const CliRun whole = run(base + data + "bank_inner_force_r20000_low.txt");
+  const CliRun holed = run(base + test::write_temp("bank_holed.txt", text));
+  ASSERT_EQ(whole.status, 0) << whole.out;
+  ASSERT_EQ(holed.status, 0) << holed.out;
+  const auto method = [](const CliRun &r) {
+    return Json::parse(r.out, "diagnose output").find("size_method")->string();
+  };
+  EXPECT_EQ(method(whole).find("left out"), std::string::npos) << method(whole);
+  EXPECT_NE(method(holed).find("the bank's templates at 3.036 deg left out (bins no pass fell in: "
+                               "rebuild the bank)"),
+            std::string::npos)
+      << method(holed);
+  EXPECT_NE(method(holed).find("27 templates"), std::string::npos) << method(holed);
 }
 
 TEST(Cli, DiagnoseCsvAndTable)
