@@ -9,7 +9,6 @@ network_lubricated.STEP.vtk read back and held against the same run's signal.txt
   vtk_mpi  the files are identical with 1 and 2 processes.
 Run through lubricated_network_tests.py (vtk, vtk_mpi).
 """
-import cmath
 import glob
 import json
 import os

@@ -8,7 +8,6 @@ import argparse
 import hashlib
 import os
 import subprocess
-import sys
 import tempfile
 
 from deck_checks import check, finish

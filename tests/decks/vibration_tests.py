@@ -22,7 +22,7 @@ import tempfile
 
 import numpy as np
 
-from bearing_tests import BALL_MASS, DB, DEXT, DINN, NB, RB, Runner, read_signal
+from bearing_tests import BALL_MASS, DEXT, DINN, NB, RB, Runner, read_signal
 from deck_checks import check, finish
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib",
