@@ -4,7 +4,9 @@
 angles and sizes that no bank, study case or margin choice used, on both sides of the load line,
 each simulated (0.35 s, as the sizing study's scene), acquired through the study's chain (20 kHz,
 16 bits, low noise, acquisition seed 7) and located by locate_outer.py with its defaults (its
-margin fixed beforehand). The error of the placed angle, or 'not determined'.
+margin fixed beforehand). The error of the placed angle, or 'not determined'; a record not placed
+is scored on its distance from the load line, either side (locate_outer.py's
+distance_from_load_deg), and on whether its interval holds the pit's distance.
 
   studies/locate_check.py [--cases=ANGLE:SIZE,...] [--rate 2e4 --bank FILE]
                           [--mismatch NAME RECORD_VALUE VALUE] OUT
