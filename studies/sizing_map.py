@@ -13,12 +13,19 @@ pits 50 um deep at the load zone's centre). Channels:
               between the ball's entry and exit events in the pit
   acc-curve   the same record sized by the passes' energy on the model's curve through the same
               chain (diagnose --size-method accel-curve; studies/accel_curve.py), with its own error
+  template    the electrical channel's record sized by its pulse's shape (diagnose --size-method
+              template) on the bank for its chain, bank_<defect>_radial_r<rate>_<noise>.txt in
+              --template-banks DIR (default: the committed ones, low noise: both pits at 20 kHz,
+              the outer pit at 10 and 50 kHz; a chain without a bank has no cell:
+              studies/template_bank.py makes one)
 Each case is acquired at every rate (16 bits) and noise level of the grid and diagnosed with
 --assume-defect (the map measures the sizing, not the identification).
-  studies/sizing_map.py [--tiny] [--channels electrical,acc,acc-curve] [--report-only] OUT
+  studies/sizing_map.py [--tiny] [--channels electrical,acc,acc-curve,template]
+                        [--template-banks DIR] [--report-only] OUT
 Writes OUT/sizing_map.csv (one row per case, channel, rate and noise), OUT/sizing_map.md (the
 tables) and OUT/sizing_map_<channel>.png (median |error| against rate and noise: a heatmap).
---tiny: one case (outer 3 deg), 20 and 50 kHz, low noise, the accelerometer only (the test).
+--tiny: one case (outer 3 deg), 20 and 50 kHz, low noise, the accelerometer and the template
+(the test).
 """
 import argparse
 import json
@@ -34,15 +41,23 @@ import sizing
 # detectability study's in m/s^2/sqrt(Hz) (5e-5 and 5e-3: a good piezoelectric sensor, a MEMS).
 ACC_SENSITIVITY = 1.02e-3
 ACC_NOISE = {"low": 5e-5, "mid": 5e-4, "high": 5e-3}
+CHANNELS = ("electrical", "acc", "acc-curve", "template")
+BANKS = os.path.join(common.DOC, "report", "sizing", "template")
 
 
 def grid(tiny):
     if tiny:
         return {"cases": [("outer", 3.0)], "rates": [2e4, 5e4], "noise": ["low"],
-                "channels": ["acc"]}
+                "channels": ["acc", "template"]}
     return {"cases": [(d, s) for d in ("inner", "outer") for s in (0.3, 1.0, 2.0, 3.0)],
             "rates": [1e4, 1.2e4, 2e4, 4.8e4, 5e4], "noise": ["low", "high"],
-            "channels": ["electrical", "acc", "acc-curve"]}
+            "channels": list(CHANNELS)}
+
+
+def bank_of(banks, defect, rate, noise):
+    """The template bank for the chain in the folder banks, or None."""
+    path = os.path.join(banks, f"bank_{defect}_radial_r{rate:g}_{noise}.txt")
+    return path if os.path.exists(path) else None
 
 
 def acquire_acc(sim, rate, noise, dest, across=False):
@@ -66,11 +81,18 @@ def diagnose(sim, acq, defect, extra):
     return json.loads(r.stdout) if r.returncode == 0 else {"size_method": r.stderr.strip()}
 
 
-def one(out, case, channel, rate, noise, curves):
+def one(out, case, channel, rate, noise, curves, banks=BANKS):
     defect, size = case
     sim = sizing.simulate(out, (defect, size, "radial", 90.0), sizing.T_FROM + sizing.WINDOW)
-    acq = os.path.join(out, "acq", f"{channel}_{defect}_{size:g}_r{rate:g}_{noise}.txt")
-    if channel == "acc":
+    # the template channel sizes the electrical channel's record
+    record = "electrical" if channel == "template" else channel
+    acq = os.path.join(out, "acq", f"{record}_{defect}_{size:g}_r{rate:g}_{noise}.txt")
+    if channel == "template":
+        if not os.path.exists(acq):
+            sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
+        d = diagnose(sim, acq, defect, ["--size-method", "template", "--template-bank",
+                                        bank_of(banks, defect, rate, noise)])
+    elif channel == "acc":
         d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect,
                      ["--size-method", "double-impulse"])
     elif channel == "acc-curve":
@@ -86,7 +108,8 @@ def one(out, case, channel, rate, noise, curves):
         key = (defect, rate, noise)
         if key not in curves:
             curves[key] = sizing.model_curve(out, defect, "radial", rate, noise)
-        sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
+        if not os.path.exists(acq):
+            sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
         extra = ["--size-curve", curves[key][0]]
         if curves[key][2]:
             extra += ["--size-model-error", repr(curves[key][2])]
@@ -172,7 +195,7 @@ def per_case(rows, g, channel):
     return lines
 
 
-def run(out, tiny=False, channels=None):
+def run(out, tiny=False, channels=None, banks=BANKS):
     g = grid(tiny)
     if channels:
         g["channels"] = channels
@@ -183,7 +206,9 @@ def run(out, tiny=False, channels=None):
         for case in g["cases"]:
             for rate in rates:
                 for noise in g["noise"]:
-                    rows.append(one(out, case, channel, rate, noise, curves))
+                    if channel == "template" and not bank_of(banks, case[0], rate, noise):
+                        continue
+                    rows.append(one(out, case, channel, rate, noise, curves, banks))
     write(out, rows, g, tiny)
     return rows
 
@@ -214,7 +239,11 @@ def write(out, rows, g, tiny):
              "true size (of all the cases). A case not sized is not covered. The electrical channel is "
              "R as the instrument records it, the voltage I R (one channel: R and the voltage "
              "differ by the current only); the lubricated model's Cb is not mapped (the area "
-             "method is written for R's jumps).", ""]
+             "method is written for R's jumps). The template channel is the same electrical "
+             "record sized by its pulse's shape on a bank of simulated folds through its chain, "
+             "where a bank was given (the committed ones, low noise: both pits at 20 kHz, the "
+             "outer pit at 10 and 50 kHz; at every chain, with banks made for it, the same "
+             "records' template fits are in ../sizing/template/template_tables.md).", ""]
     lines += table(rows, g) + [""]
     for c in g["channels"]:
         lines += [f"Per case, {c} (estimate [interval], deg):", ""] + per_case(rows, g, c) + [""]
@@ -228,14 +257,18 @@ def write(out, rows, g, tiny):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--tiny", action="store_true", help="one case, two rates (the test)")
-    ap.add_argument("--channels", help="comma-separated subset of electrical,acc,acc-curve")
+    ap.add_argument("--channels",
+                    help="comma-separated subset of electrical,acc,acc-curve,template")
+    ap.add_argument("--template-banks", default=BANKS,
+                    help="folder of bank_<defect>_radial_r<rate>_<noise>.txt (default: the "
+                    "committed banks)")
     ap.add_argument("--report-only", action="store_true",
                     help="rewrite the tables and figures from OUT/sizing_map.csv")
     ap.add_argument("out")
     a = ap.parse_args(argv)
     channels = a.channels.split(",") if a.channels else None
-    if channels and not set(channels) <= {"electrical", "acc", "acc-curve"}:
-        sys.exit("sizing_map: --channels takes electrical, acc and/or acc-curve, got " +
+    if channels and not set(channels) <= set(CHANNELS):
+        sys.exit("sizing_map: --channels takes electrical, acc, acc-curve and/or template, got " +
                  a.channels)
     out = os.path.abspath(a.out)
     if a.report_only:
@@ -244,7 +277,7 @@ def main(argv):
         g["channels"] = [c for c in g["channels"] if any(r["channel"] == c for r in rows)]
         write(out, rows, g, a.tiny)
     else:
-        run(out, a.tiny, channels)
+        run(out, a.tiny, channels, os.path.abspath(a.template_banks))
     with open(os.path.join(os.path.abspath(a.out), "sizing_map.md")) as f:
         print(f.read())
 
