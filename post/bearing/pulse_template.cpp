@@ -234,7 +234,8 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
   for (double v : left_out) left_note += (left_note.empty() ? "" : ", ") + format_number(v, 4);
   if (!left_out.empty())
     left_note = "; the bank's templates at " + left_note +
-                " deg left out (bins no pass fell in: rebuild the bank)";
+                " deg left out (bins no pass fell in: the run's period a near whole number of "
+                "samples; a longer run fills them)";
   if (sizes.size() < 2) {
     f.note = "not determined: fewer than two of the bank's sizes have templates every bin of "
              "which passes fell in" + left_note;
