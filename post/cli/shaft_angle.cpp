@@ -2,9 +2,11 @@
 #include "cli/shaft_angle.h"
 
 #include <cmath>
+#include <utility>
 
 #include "cli/common.h"
 #include "core/error.h"
+#include "dsp/tacho_angle.h"
 #include "io/load_signal.h"
 
 namespace ohmdem::post::cli {
@@ -40,16 +42,30 @@ void add_shaft_angle_options(Args &a)
            "column (or MAT variable) holding the shaft speed, integrated to the angle "
            "(cumulative trapezoid); unit --speed-unit");
   a.option("--speed-unit", "UNIT", "unit of --speed-column: rad/s | rpm | hz", "rad/s");
+  a.option("--tacho-column", "NAME|N",
+           "column (or MAT variable) of a once-per-revolution pulse train (tachometer, "
+           "keyphasor): the shaft angle is 0 at each pulse's rising edge, linear between them");
 }
 
 std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata &meta,
                                                const Signal &s)
 {
-  if (a.has("--angle-column") && a.has("--speed-column"))
-    throw Error("give the shaft angle once: --angle-column or --speed-column");
+  if (a.has("--angle-column") + a.has("--speed-column") + a.has("--tacho-column") > 1)
+    throw Error("give the shaft angle once: --angle-column, --speed-column or --tacho-column");
   const SpeedUnit unit = parse_speed_unit(a.get("--speed-unit"));
   ShaftAngle sa;
-  if (a.has("--speed-column")) {
+  if (a.has("--tacho-column")) {
+    const Signal c = companion_column(a, meta, s, a.get("--tacho-column"));
+    TachoAngle t;
+    try {
+      t = angle_from_tacho(c.x);
+    } catch (const Error &e) {
+      throw Error("--tacho-column " + c.name + ": " + e.what());
+    }
+    sa.theta = std::move(t.theta);
+    sa.source = "column " + c.name + ", " + std::to_string(t.pulses) +
+                " once-per-revolution pulses (0 at each rising edge)";
+  } else if (a.has("--speed-column")) {
     const Signal c = companion_column(a, meta, s, a.get("--speed-column"));
     std::vector<double> w = c.x;
     for (double &v : w) v = to_rad_per_s(v, unit);

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "io/json.h"
 #include "synth.h"
 #include "temp_dir.h"
+#include "test_constants.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -341,6 +343,52 @@ TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
   EXPECT_NE(bad.status, 0);
   EXPECT_NE(bad.out.find("--fold-period must be grid or fine, got 'exact'"), std::string::npos)
       << bad.out;
+}
+
+// An inner pit's place on the ring from a once-per-revolution tachometer (issue 26: "a shaft
+// angle: the deck's angle_inner, or a once-per-revolution tachometer column"): the held-out
+// 0.5 deg pit at 330 deg with its angle column turned into the pulse a keyphasor gives (5 V for
+// the first 10 deg of each turn). The tachometer's zero is the shaft's: the same place as the
+// angle column's, within the edge's timing (half a sample: 0.7 deg of shaft at 20 kHz).
+TEST(Cli, DiagnosePlacesAnInnerPitFromATachoColumn)
+{
+  const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
+  std::istringstream in(test::slurp(data + "inner_0.5_radial_p330_20kHz.txt"));
+  std::string text, line;
+  while (std::getline(in, line)) {
+    if (line == "# time V angle_inner") {
+      text += "# time V tacho\n";
+      continue;
+    }
+    if (!line.empty() && line[0] != '#') {
+      std::istringstream ls(line);
+      std::string t, v;
+      double th = 0;
+      ls >> t >> v >> th;
+      const double pi = ohmdem::test::kPi;
+      line = t + " " + v + (std::fmod(th, 2 * pi) < 10 * pi / 180 ? " 5" : " 0");
+    }
+    text += line + "\n";
+  }
+  const std::string base = " --column V --metadata " + data +
+                           "inner_0.5_radial_p330.json --format json --assume-defect inner "
+                           "--pulse-height 0.4494";
+  const CliRun angle = run("diagnose " + data + "inner_0.5_radial_p330_20kHz.txt" + base);
+  const CliRun tacho = run("diagnose " + test::write_temp("inner_tacho.txt", text) + base +
+                           " --tacho-column tacho");
+  ASSERT_EQ(angle.status, 0) << angle.out;
+  ASSERT_EQ(tacho.status, 0) << tacho.out;
+  const Json ja = Json::parse(angle.out, "diagnose output");
+  const Json jt = Json::parse(tacho.out, "diagnose output");
+  EXPECT_EQ(jt.find("position_reference")->string(), "shaft zero");
+  EXPECT_NEAR(jt.find("position_deg")->number(), 330, 3);
+  EXPECT_NEAR(jt.find("position_deg")->number(), ja.find("position_deg")->number(), 1);
+  const Json &iv = *jt.find("position_interval_deg");
+  EXPECT_LE(iv[0].number(), 330);
+  EXPECT_GE(iv[1].number(), 330);
+  // the size's zone fit reads the passes at the shaft's angles too: alike within 0.1 %
+  EXPECT_NEAR(jt.find("size_deg")->number(), ja.find("size_deg")->number(),
+              1e-3 * ja.find("size_deg")->number());
 }
 
 // A bank's template with bins no pass fell in (its run's period a near whole number of samples:

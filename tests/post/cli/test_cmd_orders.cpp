@@ -101,6 +101,49 @@ TEST(OrdersCli, SpeedColumnInRpmGivesTheSameOrder)
   EXPECT_NEAR(get(p, "order").number(), bpfi_order(), 1e-3 * bpfi_order());
 }
 
+// The run-up's shaft as an instrument records it: a once-per-revolution pulse (5 V for the first
+// 20 deg of each turn, edges 2 samples long at 15-25 Hz) instead of the angle.
+std::string run_up_tacho_file()
+{
+  std::ifstream in(run_up_file());
+  std::string line, out = "# time tacho x\n";
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string t, rpm, x;
+    double th = 0;
+    ls >> t >> th >> rpm >> x;
+    out += t + (std::fmod(th, 2 * kPi) < 20 * kPi / 180 ? " 5 " : " 0 ") + x + "\n";
+  }
+  return test::write_temp("run_up_tacho.txt", out);
+}
+
+TEST(OrdersCli, TachoColumnGivesTheSameOrder)
+{
+  const CliRun a = run("orders " + run_up_tacho_file() +
+                       " --column x --bearing 6205 --envelope --band 700 1300 --format json "
+                       "--tacho-column tacho");
+  ASSERT_EQ(a.status, 0) << a.out;
+  EXPECT_NE(a.out.find("column tacho, 59 once-per-revolution pulses"), std::string::npos) << a.out;
+  const Json p = first_peak(a.out);
+  EXPECT_EQ(get(p, "label").string(), "1xBPFI");
+  EXPECT_NEAR(get(p, "order").number(), bpfi_order(), 1e-3 * bpfi_order());
+  const CliRun both = run("orders " + run_up_tacho_file() +
+                          " --column x --bearing 6205 --tacho-column tacho --angle-column 2");
+  EXPECT_NE(both.status, 0);
+  EXPECT_NE(both.out.find("give the shaft angle once: --angle-column, --speed-column or "
+                          "--tacho-column"),
+            std::string::npos)
+      << both.out;
+  std::string text = test::slurp(run_up_tacho_file());
+  for (std::size_t at = 0; (at = text.find(" 5 ", at)) != std::string::npos;) text[at + 1] = '0';
+  const CliRun flat = run("orders " + test::write_temp("run_up_no_pulse.txt", text) +
+                          " --column x --bearing 6205 --tacho-column tacho");
+  EXPECT_NE(flat.status, 0);
+  EXPECT_NE(flat.out.find("--tacho-column tacho: tachometer column: flat"), std::string::npos)
+      << flat.out;
+}
+
 TEST(OrdersCli, DiagnoseSwitchesToOrdersWhenTheSpeedVaries)
 {
   const CliRun r = run("diagnose " + run_up_file() + " --column x --bearing 6205 --format json");
