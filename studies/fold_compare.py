@@ -113,10 +113,11 @@ def pulse_window(size_deg, nb):
     return WINDOW_FROM, min(0.25 + max(WINDOW_AFTER, 2 * crossing), 0.9)
 
 
-def misfit(rec, tmpl, n, shift, bin_s, model, scale_free, window=None):
+def misfit(rec, tmpl, n, shift, bin_s, model, scale_free, window=None, empty=None):
     """chi2 of rec (shifted) against tmpl over n bins, a constant (and with scale_free a scale
     of tmpl) fitted; with window (from, to: fractions of the period) over the bins there alone,
-    a line fitted. Returns chi2, the residual, the weights (0 outside the window), the scale."""
+    a line fitted. empty: (rec's, tmpl's) empty_bins(), when the caller has them. Returns chi2,
+    the residual, the weights (0 outside the window), the scale."""
     yr, u = shifted(rec[0], shift)
     ser, _ = shifted(rec[1], shift)
     yt, st = tmpl[0][:n], tmpl[1][:n]
@@ -136,7 +137,7 @@ def misfit(rec, tmpl, n, shift, bin_s, model, scale_free, window=None):
     # (diagnose's template fit read a 2.86 deg inner pit as 3.7 so), and one with half its bins
     # empty at half the chi2 of its rivals
     counted = int(np.count_nonzero(w))
-    er, et = empty_bins(rec[1]), empty_bins(tmpl[1])
+    er, et = empty or (empty_bins(rec[1]), empty_bins(tmpl[1]))
     if er.any() or et.any():
         near = np.floor(np.arange(n) + shift + 0.5).astype(int) % len(rec[1])  # as shifted()
         w = np.where(er[near] | et[:n], 0.0, w)
@@ -166,7 +167,8 @@ def compare(rec, tmpl, bin_s, model=False, scale_free=False, window=None):
     over the pulse's window alone (pulse_window())."""
     n = int(0.9 * min(len(rec[0]), len(tmpl[0])))
     reach = 2 * OVERSAMPLE
-    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free, window)[0]
+    empty = empty_bins(rec[1]), empty_bins(tmpl[1])  # once, for every shift
+    c = [misfit(rec, tmpl, n, k, bin_s, model, scale_free, window, empty)[0]
          for k in range(-reach, reach + 1)]
     i = int(np.argmin(c))
     s = float(i - reach)
@@ -174,9 +176,9 @@ def compare(rec, tmpl, bin_s, model=False, scale_free=False, window=None):
         curv = c[i - 1] - 2 * c[i] + c[i + 1]
         if curv > 0:
             s2 = s + 0.5 * (c[i - 1] - c[i + 1]) / curv
-            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free, window)[0] < c[i]:
+            if misfit(rec, tmpl, n, s2, bin_s, model, scale_free, window, empty)[0] < c[i]:
                 s = s2
-    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free, window)
+    chi2, r, w, scale = misfit(rec, tmpl, n, s, bin_s, model, scale_free, window, empty)
     z = r * np.sqrt(w)
     k = int(np.argmax(np.abs(z)))
     return {"dprime": math.sqrt(chi2), "n": compared_bins(rec, tmpl, window),

@@ -81,17 +81,17 @@ def diagnose(sim, acq, defect, extra):
     return json.loads(r.stdout) if r.returncode == 0 else {"size_method": r.stderr.strip()}
 
 
-def one(out, case, channel, rate, noise, curves, banks=BANKS):
+def one(out, case, channel, rate, noise, curves, bank=None):
+    """The case through the channel's chain, sized; bank: the template channel's bank."""
     defect, size = case
     sim = sizing.simulate(out, (defect, size, "radial", 90.0), sizing.T_FROM + sizing.WINDOW)
-    # the template channel sizes the electrical channel's record
+    # the template channel sizes the electrical channel's record: acquired once for both
     record = "electrical" if channel == "template" else channel
     acq = os.path.join(out, "acq", f"{record}_{defect}_{size:g}_r{rate:g}_{noise}.txt")
+    if record == "electrical" and not os.path.exists(acq):
+        sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
     if channel == "template":
-        if not os.path.exists(acq):
-            sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
-        d = diagnose(sim, acq, defect, ["--size-method", "template", "--template-bank",
-                                        bank_of(banks, defect, rate, noise)])
+        d = diagnose(sim, acq, defect, ["--size-method", "template", "--template-bank", bank])
     elif channel == "acc":
         d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect,
                      ["--size-method", "double-impulse"])
@@ -108,8 +108,6 @@ def one(out, case, channel, rate, noise, curves, banks=BANKS):
         key = (defect, rate, noise)
         if key not in curves:
             curves[key] = sizing.model_curve(out, defect, "radial", rate, noise)
-        if not os.path.exists(acq):
-            sizing.acquire_with_angle(sim, "radial", rate, noise, acq)
         extra = ["--size-curve", curves[key][0]]
         if curves[key][2]:
             extra += ["--size-model-error", repr(curves[key][2])]
@@ -206,9 +204,11 @@ def run(out, tiny=False, channels=None, banks=BANKS):
         for case in g["cases"]:
             for rate in rates:
                 for noise in g["noise"]:
-                    if channel == "template" and not bank_of(banks, case[0], rate, noise):
-                        continue
-                    rows.append(one(out, case, channel, rate, noise, curves, banks))
+                    bank = bank_of(banks, case[0], rate, noise) if channel == "template" \
+                        else None
+                    if channel == "template" and not bank:
+                        continue  # no bank for this chain: no cell
+                    rows.append(one(out, case, channel, rate, noise, curves, bank))
     write(out, rows, g, tiny)
     return rows
 
