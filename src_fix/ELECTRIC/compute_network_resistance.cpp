@@ -102,6 +102,7 @@ void ComputeNetworkResistance::define_lubricant_variables()
   const ohmdem::lubrication::LubricantState &s = lubricated_->state();
   define("lubricant_file", lubricated_->path());
   define("lubricant_path", lube_.network ? "network" : "closedform");
+  define("lubricant_kernel", ohmdem::lubrication::bearing_kernel_name(lube_.kernel));
   for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
                                     {"lubricant_alpha", s.alpha},
                                     {"lubricant_eps_r", s.eps_r},

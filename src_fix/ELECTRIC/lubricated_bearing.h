@@ -17,6 +17,7 @@
 #include "ELECTRIC/resistance_context.h"
 #include "common/ordered_reduce.h"
 #include "conduction/conduction_model.h"
+#include "lubrication/bearing_kernels.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/lubricant.h"
 #include "lubrication/race_admittance.h"
@@ -37,6 +38,9 @@ struct LubricationSettings {
   double breakdown = 0.0;          // breakdown field of the film (V/m); 0: no breakdown
   bool breakdown_file = false;     // `breakdown lubricant`: the lubricant file's field instead
   bool network = false;            // the general network (keyword closedform no)
+  // The per-step arithmetic (keyword kernel): lanes (the default) or plain, the same bits
+  // (lib/lubrication/bearing_kernels.h).
+  ohmdem::lubrication::BearingKernel kernel = ohmdem::lubrication::BearingKernel::lanes;
   bool on() const { return lubricant != "none"; }
 };
 
@@ -60,11 +64,6 @@ struct LubricatedContact {
 
 class FixBearingRace;
 class LubricatedNetwork;
-
-// A race's rigid motion on this step: centre (m), angular speed (rad/s), centre velocity (m/s).
-struct RaceMotion {
-  double cx = 0, cy = 0, w = 0, vcx = 0, vcy = 0;
-};
 
 class LubricatedBearing : protected Pointers {
  public:
@@ -97,6 +96,10 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
+  // evaluate() with the settings' kernel (lib/lubrication/bearing_kernels.h).
+  template <class Kernel>
+  LubricatedResult evaluate_with(const ResistanceContext &context, bool gather,
+                                 const double *g_dry);
   // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
   // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
   // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
@@ -119,7 +122,7 @@ class LubricatedBearing : protected Pointers {
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
-  RaceMotion motion_[2];             // this step's, set by evaluate()
+  ohmdem::lubrication::RaceFrame motion_[2];  // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   std::complex<double> y_bearing_{0.0, 0.0};  // the bearing's admittance (evaluate())
   double current_ = 0;                        // the current of that evaluation (A)
