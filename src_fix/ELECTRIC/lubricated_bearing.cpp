@@ -221,17 +221,18 @@ void LubricatedBearing::break_down(LubricatedContact pair[2],
   }
 }
 
-LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
-                                             const double *g_dry)
+void LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
+                                 const double *g_dry)
 {
-  return settings_.kernel == lub::BearingKernel::plain
-             ? evaluate_with<lub::PlainKernel>(context, gather, g_dry)
-             : evaluate_with<lub::LanesKernel>(context, gather, g_dry);
+  if (settings_.kernel == lub::BearingKernel::plain)
+    evaluate_with<lub::PlainKernel>(context, gather, g_dry);
+  else
+    evaluate_with<lub::LanesKernel>(context, gather, g_dry);
 }
 
 template <class Kernel>
-LubricatedResult LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gather,
-                                                  const double *g_dry)
+void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gather,
+                                      const double *g_dry)
 {
   if (!geometry_ready_) set_geometry(context);
   const double inf = std::numeric_limits<double>::infinity();
@@ -326,7 +327,6 @@ LubricatedResult LubricatedBearing::evaluate_with(const ResistanceContext &conte
     each_ball(std::true_type());
   else
     each_ball(std::false_type());
-  LubricatedResult out;
   std::complex<double> y_bearing;
   if (settings_.network || gather) network_->gather(contacts_, world);
   if (settings_.network) {
@@ -350,7 +350,6 @@ LubricatedResult LubricatedBearing::evaluate_with(const ResistanceContext &conte
   local_min_[2] = lambda_min;
   y_bearing_ = y_bearing;
   current_ = context.current;
-  return out;
 }
 
 void LubricatedBearing::impedance(LubricatedResult &out) const

@@ -77,10 +77,10 @@ class LubricatedBearing : protected Pointers {
   ~LubricatedBearing() override;
   // Collective: this step's admittance of the bearing; `gather` (an export step) also gathers
   // the records of all processes (network()) when the closed form runs. g_dry: the dry closed
-  // form's conductance of this step per local atom (NaN where it has none), or null. The
-  // result's impedance and minima are left to impedance() and minima().
-  LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
-                            const double *g_dry = nullptr);
+  // form's conductance of this step per local atom (NaN where it has none), or null. Its
+  // impedance and minima are read by impedance() and minima().
+  void evaluate(const ResistanceContext &context, bool gather = false,
+                const double *g_dry = nullptr);
   // Collective: the last evaluation's smallest films and lambda over all processes (outputs
   // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
   void minima(LubricatedResult &out) const;
@@ -98,8 +98,7 @@ class LubricatedBearing : protected Pointers {
   void set_geometry(const ResistanceContext &context);
   // evaluate() with the settings' kernel (lib/lubrication/bearing_kernels.h).
   template <class Kernel>
-  LubricatedResult evaluate_with(const ResistanceContext &context, bool gather,
-                                 const double *g_dry);
+  void evaluate_with(const ResistanceContext &context, bool gather, const double *g_dry);
   // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
   // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
   // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
