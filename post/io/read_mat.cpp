@@ -13,6 +13,7 @@
 
 #include "core/error.h"
 #include "core/sampled_signal.h"
+#include "io/mat_integrity.h"
 
 namespace ohmdem::post {
 
@@ -60,6 +61,9 @@ MatFile open_mat(const std::string &path)
     if (!last_matio_message().empty()) why += " (libmatio: " + last_matio_message() + ")";
     throw Error(path + ": " + why);
   }
+  // libmatio reads a cut variable's missing part as zeros and a damaged compressed one as what
+  // zlib made of it: the file's structure and checksums are checked first
+  check_mat_integrity(path);
   return f;
 }
 
