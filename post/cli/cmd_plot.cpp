@@ -182,6 +182,7 @@ int run_plot(const std::vector<std::string> &argv)
   declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
+  refuse_input_as_output("--output", a.get("--output"), input_files(a));
   const std::string kind =
       a.choice("--kind", {"signal", "spectrum", "envelope", "spectrogram", "indicators"});
   Figure fig;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/common.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -135,10 +137,37 @@ void add_output_options(Args &a)
   a.option("--unit", "UNIT", "unit of the signal, for column names (default: ohm for R)");
 }
 
-Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.get("--format")))
+std::vector<std::string> input_files(const Args &a, const std::vector<std::string> &more)
+{
+  std::vector<std::string> files = a.positional();
+  const std::vector<std::string> values = a.given_values("--output");
+  files.insert(files.end(), values.begin(), values.end());
+  if (!a.positional().empty()) files.push_back(find_run_metadata(a.positional().front()));
+  files.insert(files.end(), more.begin(), more.end());
+  return files;
+}
+
+void refuse_input_as_output(const std::string &option, const std::string &output,
+                            const std::vector<std::string> &inputs)
+{
+  struct stat out {};
+  if (::stat(output.c_str(), &out) != 0 || !S_ISREG(out.st_mode)) return;  // a new file
+  for (const std::string &in : inputs) {
+    struct stat st {};
+    if (in.empty() || in == "-" || ::stat(in.c_str(), &st) != 0) continue;
+    if (st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+      throw Error("option " + option + " " + output + " is one of the inputs (" + in +
+                  (in == output ? "" : ", the same file") +
+                  "): writing it would destroy what is read; give another file");
+  }
+}
+
+Output::Output(const Args &a, const std::vector<std::string> &more_inputs)
+    : out_(&std::cout), format_(parse_output_format(a.get("--format")))
 {
   if (a.has("--output")) {
     path_ = a.get("--output");
+    refuse_input_as_output("--output", path_, input_files(a, more_inputs));
     file_ = std::make_unique<std::ofstream>(path_);
     if (!*file_) throw Error("cannot write '" + path_ + "'");
   }

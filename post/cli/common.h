@@ -46,10 +46,19 @@ void add_output_options(Args &a);
 // The --output files whose writing failed (a full disk): the command line exits non-zero
 // naming them (commands.cpp), after the command has returned.
 std::vector<std::string> &failed_outputs();
+// The files a command reads: its inputs, the value of every option given but --output that
+// names a file (--metadata, --log, --baseline, ...), the run.json beside its first input, and
+// `more`.
+std::vector<std::string> input_files(const Args &a, const std::vector<std::string> &more = {});
+// Refuses `output` (the value of `option`) when it is one of `inputs` (the same file, by device
+// and inode: a link or another path to it too): writing it would destroy the record.
+void refuse_input_as_output(const std::string &option, const std::string &output,
+                            const std::vector<std::string> &inputs);
 class Output {
  public:
-  explicit Output(const Args &a);  // --output FILE or stdout; --format
-  ~Output();                       // closes the file and notes a failed write in failed_outputs()
+  // --output FILE (refused when it is one of input_files(a, more_inputs)) or stdout; --format
+  explicit Output(const Args &a, const std::vector<std::string> &more_inputs = {});
+  ~Output();  // closes the file and notes a failed write in failed_outputs()
   Output(const Output &) = delete;
   Output &operator=(const Output &) = delete;
   std::ostream &stream() { return file_ ? *file_ : *out_; }
