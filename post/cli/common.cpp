@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <iostream>
 
 #include "core/constants.h"
@@ -163,21 +164,29 @@ void refuse_input_as_output(const std::string &option, const std::string &output
 }
 
 Output::Output(const Args &a, const std::vector<std::string> &more_inputs)
-    : out_(&std::cout), format_(parse_output_format(a.get("--format")))
+    : out_(&std::cout),
+      format_(parse_output_format(a.get("--format"))),
+      unwinding_(std::uncaught_exceptions())
 {
   if (a.has("--output")) {
     path_ = a.get("--output");
     refuse_input_as_output("--output", path_, input_files(a, more_inputs));
-    file_ = std::make_unique<std::ofstream>(path_);
-    if (!*file_) throw Error("cannot write '" + path_ + "'");
+    file_ = std::make_unique<PendingStream>(path_);
   }
 }
 
 Output::~Output()
 {
   if (!file_) return;
-  file_->close();  // flushes: a full disk shows here
-  if (file_->fail()) failed_outputs().push_back(path_);
+  // a command that failed (an exception leaves through here) writes nothing: the error is its
+  if (std::uncaught_exceptions() > unwinding_) return;
+  const std::string why = file_->finish();
+  if (why.empty()) return;
+  const PendingFile &f = file_->file();
+  failed_outputs().push_back("writing '" + path_ + "' failed: " + why + "; " +
+                             (f.in_place()   ? "the output is lost or cut"
+                              : f.replaces() ? "the file is left as it was"
+                                             : "no file is left"));
 }
 
 std::vector<std::string> &failed_outputs()

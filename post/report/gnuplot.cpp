@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/pending_file.h"
 
 namespace ohmdem::post {
 
@@ -99,47 +100,6 @@ class TempDir {
   std::vector<std::string> files_;
 };
 
-// The image is written to a temporary file beside the target and renamed onto it only once
-// complete: a failed plot leaves neither an empty nor a partial PNG (nor an older one changed).
-class PendingFile {
- public:
-  explicit PendingFile(const std::string &target) : target_(target)
-  {
-    const auto slash = target.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "" : target.substr(0, slash + 1);
-    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
-    std::string tmpl = dir + "." + base + ".tmp-XXXXXX";
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    const int fd = ::mkstemp(buf.data());
-    if (fd < 0) throw Error("cannot write '" + target + "': " + std::strerror(errno));
-    ::close(fd);
-    path_ = buf.data();
-  }
-  ~PendingFile()
-  {
-    if (!path_.empty()) ::unlink(path_.c_str());
-  }
-  PendingFile(const PendingFile &) = delete;
-  PendingFile &operator=(const PendingFile &) = delete;
-  const std::string &path() const { return path_; }
-  void commit()
-  {
-    ::chmod(path_.c_str(), 0644 & ~current_umask());
-    if (::rename(path_.c_str(), target_.c_str()) != 0)
-      throw Error("cannot write '" + target_ + "': " + std::strerror(errno));
-    path_.clear();
-  }
-
- private:
-  static mode_t current_umask()
-  {
-    const mode_t m = ::umask(0);
-    ::umask(m);
-    return m;
-  }
-  std::string target_, path_;
-};
 // The image as "x y z" rows, one blank line between x columns (gnuplot grid data).
 void write_image(const PlotImage &im, const std::string &path)
 {
@@ -326,9 +286,10 @@ void render_png(const Figure &fig, const std::string &png_path)
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw Error("gnuplot failed writing '" + png_path + "': " + msg.str());
   struct stat st {};
-  if (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0)
+  if (!png.in_place() && (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0))
     throw Error("gnuplot wrote no image to '" + png_path + "': " + msg.str());
-  png.commit();
+  const std::string why = png.commit();
+  if (!why.empty()) throw Error("cannot write '" + png_path + "': " + why);
 }
 
 }  // namespace ohmdem::post
