@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -45,7 +46,7 @@ MatFile open_mat(const std::string &path)
 {
   {
     std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw Error(path + ": cannot open");
+    if (!probe) throw Error(path + ": cannot open: " + std::strerror(errno));
   }
   static const bool log_set = [] {
     Mat_LogInitFunc("ohmdem-post", capture_log);
