@@ -278,17 +278,25 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
                a.has("--rpm-variable");
   if (speeds > 1)
     throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr, --omega or --rpm-variable");
+  // the speed in the option's own unit, refused when not > 0 naming the option
+  const auto speed = [&](const char *name, const char *unit) {
+    return a.number_in(name, NAN, Range::above(0), "a shaft speed", unit);
+  };
   double fr = NAN;
-  if (a.has("--rpm")) fr = a.number("--rpm") / 60;
-  if (a.has("--shaft-hz")) fr = a.number("--shaft-hz");
-  if (a.has("--fr")) fr = a.number("--fr");
-  if (a.has("--omega")) fr = a.number("--omega") / (2 * kPi);
+  if (a.has("--rpm")) fr = speed("--rpm", "rpm") / 60;
+  if (a.has("--shaft-hz")) fr = speed("--shaft-hz", "Hz");
+  if (a.has("--fr")) fr = speed("--fr", "Hz");
+  if (a.has("--omega")) fr = speed("--omega", "rad/s") / (2 * kPi);
   if (a.has("--rpm-variable")) {
     if (a.positional().empty()) throw Error("option --rpm-variable needs a MAT input file");
-    fr = read_mat_scalar(a.positional().front(), a.get("--rpm-variable")) / 60;
+    const std::string &mat = a.positional().front(), &name = a.get("--rpm-variable");
+    const double rpm = read_mat_scalar(mat, name);
+    if (!(rpm > 0))
+      throw Error(mat + ": variable '" + name + "' (--rpm-variable) is " + format_number(rpm) +
+                  "; a shaft speed must be > 0 rpm");
+    fr = rpm / 60;
   }
   if (speeds) {
-    if (!(fr > 0)) throw Error("the shaft speed must be > 0");
     c.fr = fr;
     c.fr_source = a.has("--rpm-variable") ? "MAT variable " + a.get("--rpm-variable") + " (rpm)"
                                           : "command line";
