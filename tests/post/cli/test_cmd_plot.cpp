@@ -61,8 +61,8 @@ TEST(Cli, PlotsArePngFiles)
   EXPECT_NE(bad.out.find("unknown column 'nope'"), std::string::npos) << bad.out;
 }
 
-// A zero signal's spectrum on a logarithmic axis: a message of its own (gnuplot's raw "all
-// points y value undefined" before), no file.
+// A zero signal's spectrum on a logarithmic axis: a message of its own (not gnuplot's "all
+// points y value undefined"), no file.
 TEST(Cli, LogyOfAnAllZeroSpectrumIsAMessage)
 {
   if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";

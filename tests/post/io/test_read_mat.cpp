@@ -113,8 +113,8 @@ std::string damaged(const std::string &name, const std::string &as, std::size_t 
   return test::write_temp(as, b.substr(0, keep));
 }
 
-// scipy.io.loadmat refuses each of these (tests/post/damaged_mat.py checks it); libmatio read the
-// missing half of a cut file as zeros and a damaged compressed variable as garbage (2.6e213).
+// scipy.io.loadmat refuses each of these (tests/post/damaged_mat.py checks it); libmatio alone
+// reads the missing half of a cut file as zeros and a damaged compressed variable as garbage.
 TEST(Mat, DamagedFilesAreRefused)
 {
   const std::size_t plain = test::slurp(mat("good.mat")).size();
