@@ -138,10 +138,11 @@ void add_output_options(Args &a)
   a.option("--unit", "UNIT", "unit of the signal, for column names (default: ohm for R)");
 }
 
-std::vector<std::string> input_files(const Args &a, const std::vector<std::string> &more)
+std::vector<std::string> input_files(const Args &a, const std::string &output,
+                                     const std::vector<std::string> &more)
 {
   std::vector<std::string> files = a.positional();
-  const std::vector<std::string> values = a.given_values("--output");
+  const std::vector<std::string> values = a.given_values(output);
   files.insert(files.end(), values.begin(), values.end());
   if (!a.positional().empty()) files.push_back(find_run_metadata(a.positional().front()));
   files.insert(files.end(), more.begin(), more.end());
@@ -170,7 +171,7 @@ Output::Output(const Args &a, const std::vector<std::string> &more_inputs)
 {
   if (a.has("--output")) {
     path_ = a.get("--output");
-    refuse_input_as_output("--output", path_, input_files(a, more_inputs));
+    refuse_input_as_output("--output", path_, input_files(a, "--output", more_inputs));
     file_ = std::make_unique<PendingStream>(path_);
   }
 }

@@ -48,10 +48,11 @@ void add_output_options(Args &a);
 // failed: No space left on device; no file is left"): the command line exits non-zero with
 // them (commands.cpp), after the command has returned.
 std::vector<std::string> &failed_outputs();
-// The files a command reads: its inputs, the value of every option given but --output that
-// names a file (--metadata, --log, --baseline, ...), the run.json beside its first input, and
-// `more`.
-std::vector<std::string> input_files(const Args &a, const std::vector<std::string> &more = {});
+// The files a command reads: its inputs, the value of every option given but `output` (the
+// option naming the file written) that names a file (--metadata, --log, --baseline, ...), the
+// run.json beside its first input, and `more`.
+std::vector<std::string> input_files(const Args &a, const std::string &output = "--output",
+                                     const std::vector<std::string> &more = {});
 // Refuses `output` (the value of `option`) when it is one of `inputs` (the same file, by device
 // and inode: a link or another path to it too): writing it would destroy the record.
 void refuse_input_as_output(const std::string &option, const std::string &output,

@@ -3,9 +3,10 @@
 """What `ohmdem-post --output FILE` must never do: overwrite what it reads, or leave an empty or
 cut file behind.
 
-  inputs  --output naming one of the inputs (the signal, a hard link or a symbolic link to it,
-          the run.json beside it, a --metadata or --baseline file, a run of collect) is refused
-          by every command that writes, with one ERROR line, and the file is left unchanged.
+  inputs  --output (or diagnose --pulse-fold-out) naming one of the inputs (the signal, a hard
+          link or a symbolic link to it, the run.json beside it, a --metadata or --baseline file,
+          a run of collect) is refused by every command that writes, with one ERROR line, and
+          the file is left unchanged.
   full    a write that fails (/dev/full: ENOSPC; a file size limit, RLIMIT_FSIZE: EFBIG, as a
           disk that fills up) exits 1 with one ERROR line naming the file and the system's
           reason, and leaves no file (or the file that was there before, unchanged).
@@ -62,13 +63,16 @@ def inputs(a, work):
         ("frequencies, its --metadata", ["frequencies", "--metadata", meta], meta),
         ("collect, a run's signal", ["collect", run], sig),
         ("plot, the signal", ["plot", "--kind", "signal", sig], sig),
+        ("diagnose --pulse-fold-out, the signal", ["diagnose", sig, "--assume-defect", "outer"]
+         + bearing, sig, "--pulse-fold-out"),
     ]
-    for what, args, output in cases:
+    for what, args, output, *option in cases:
+        option = option[0] if option else "--output"
         before = {p: open(p, "rb").read() for p in (sig, meta, base)}
-        r = subprocess.run([a.post] + args + ["--output", output], capture_output=True, text=True)
+        r = subprocess.run([a.post] + args + [option, output], capture_output=True, text=True)
         lines = [ln for ln in r.stderr.splitlines() if ln.startswith("ERROR")]
         failed |= check(r.returncode == 1 and len(lines) == 1
-                        and "is one of the inputs" in lines[0] and f"--output {output}" in lines[0],
+                        and "is one of the inputs" in lines[0] and f"{option} {output}" in lines[0],
                         f"{what}: refused: {' | '.join(lines) or r.stderr.strip()}")
         failed |= check(all(open(p, "rb").read() == b for p, b in before.items()),
                         f"{what}: the inputs are unchanged")
