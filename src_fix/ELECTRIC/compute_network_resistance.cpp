@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "BEARING/fix_bearing_race.h"
 #include "ELECTRIC/contact_flow_array.h"
 #include "ELECTRIC/contact_set.h"
 #include "ELECTRIC/lubricated_network.h"
@@ -135,6 +136,11 @@ void ComputeNetworkResistance::init()
       error->all(FLERR,
                  "compute network/resistance: keyword 'lubricant' needs pair no: particle-"
                  "particle contacts in oil are not modelled (a bearing's balls do not touch)");
+    for (const FixBearingRace *race : contacts_->races())
+      if (race->three_d())
+        error->all(FLERR,
+                   "compute network/resistance: keyword 'lubricant' needs model 2d races: the "
+                   "films of the 3D bearing's contacts are not modelled");
     lubricated_->init(context_);
   }
   choose_paths();

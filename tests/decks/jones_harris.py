@@ -8,7 +8,8 @@ or gyroscopic terms (a bearing at rest or turning slowly).
 Each ball j at azimuth psi_j sits between the inner and the outer groove's curvature centres;
 unloaded they are A = (f_i + f_o - 1) D apart. The inner ring is displaced by (dx, dy, dz) and
 tilted by the small rotation (tx, ty); its curvature centre at the ball moves with it, and in the
-ball's meridian plane the centres' separation becomes (s_r, s_z) (Harris' A_1j, A_2j). The ball
+ball's meridian plane the centres' separation becomes (s_r, s_z) (Harris' A_1j, A_2j; the tilt
+as a finite rotation, of which Harris writes the first order). The ball
 is squeezed by delta_j = |s| - A, carries Q_j = K_n(alpha_j) delta_j^1.5 along the line at the
 contact angle alpha_j = atan2(s_z, s_r), with K_n the inner and outer exact Hertz constants in
 series, K_n = [K_i^(-2/3) + K_o^(-2/3)]^(-3/2). The ring is in equilibrium when the applied
@@ -115,8 +116,10 @@ class Bearing:
         e = np.stack([np.cos(psi), np.sin(psi), np.zeros_like(psi)], axis=1)
         z = np.array([0.0, 0.0, 1.0])
         r_i = self.rho_i * e + self.z_i * z
-        t = np.array([q[3], q[4], 0.0])
-        P_i = r_i + np.asarray(q[:3], float) + _cross(t, r_i)  # small rotation (Harris' form)
+        # The ring's tilt as the rotation by |t| about t (Rodrigues); Harris writes its first
+        # order, r + t x r, which is 1 % off in the loads at a tilt of a few milliradians.
+        r_i = r_i @ _rotation(np.array([q[3], q[4], 0.0])).T
+        P_i = r_i + np.asarray(q[:3], float)
         P_o = self.rho_o * e + self.z_o * z
         s = P_i - P_o
         sr, sz = np.sum(s * e, axis=1), s[:, 2]  # in the ball's meridian plane
@@ -132,6 +135,16 @@ class Bearing:
         f = (Q[:, None] * u).sum(axis=0)
         m = _cross(r, Q[:, None] * u).sum(axis=0)
         return np.concatenate([F - f, (M - m)[:2]])
+
+
+def _rotation(t):
+    """The rotation matrix of the rotation vector t (Rodrigues)."""
+    th = float(np.linalg.norm(t))
+    if th == 0.0:
+        return np.eye(3)
+    k = t / th
+    K = np.array([[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]])
+    return np.eye(3) + math.sin(th) * K + (1 - math.cos(th)) * K @ K
 
 
 def _cross(a, b):
@@ -212,3 +225,24 @@ def harris_axial_angle(b, Fa):
         return b.Z * b.K_n(a) * b.A**1.5 * shape - Fa
 
     return brentq(f, a0 + 1e-12, math.radians(89.0), xtol=1e-14)
+
+
+def peak_pressure(b, Q, alpha, inner):
+    """The peak Hertz pressure 3Q/(2 pi a b) of a ball's contact with a race at alpha, Harris'
+    semi-axes a = (6 kappa^2 E Q / (pi Sum rho E'))^(1/3),
+    b = (6 E Q / (pi kappa Sum rho E'))^(1/3)."""
+    s, F = race_sums(b.D, b.dm, b.fi if inner else b.fo, alpha, inner)
+    k = ellipticity(F)
+    m = 1.0 - 1.0 / (k * k)
+    E = ellipe(m) if m > 0 else math.pi / 2
+    Ep = 2.0 * b.E_star
+    a_ = (6 * k * k * E * Q / (math.pi * s * Ep)) ** (1 / 3)
+    b_ = (6 * E * Q / (math.pi * k * s * Ep)) ** (1 / 3)
+    return 3 * Q / (2 * math.pi * a_ * b_)
+
+
+def ring_frame_angles(q, u):
+    """The contact angles (rad) of the contact lines u (lab frame) seen from the tilted ring
+    of displacement q: a race's contact angle is measured from its own ring's radial plane."""
+    v = np.asarray(u) @ _rotation(np.array([q[3], q[4], 0.0]))  # R^T u, row by row
+    return np.arctan2(v[:, 2], np.hypot(v[:, 0], v[:, 1]))

@@ -11,6 +11,12 @@
 // damping, |F_t| <= mu F_n. Spin about the contact normal: a torsional spring (Mindlin's
 // (16/3) G_t sqrt(ab)^3) capped by the full-sliding spin moment of the Hertz ellipse,
 // 3 mu Q a E(e) / 8 (Harris), with restitution damping on the ball's moment of inertia.
+// Rolling relaxes both springs: the material passes through the contact in the time 2b/V (b the
+// ellipse's half-length along the rolling direction, V the rolling speed), so a spring holds
+// only what the last contact length of travel put into it: ds/dt = v_slip - (V / 2b) s (the
+// brush model's first-order relaxation). In steady rolling a tangential force then needs a
+// creep, F_t = k_t 2b v_slip / V (a linear creep law), instead of being held by a stuck spring
+// while nothing slides; at rest the springs keep their stick.
 #ifndef OHMDEM_RACE_CONTACT_3D_H
 #define OHMDEM_RACE_CONTACT_3D_H
 
@@ -130,7 +136,13 @@ inline RaceContactResult3d race_contact_3d(const RaceContactModel3d &m, const Ri
   s = s - dot(s, n) * n;
   const double s_proj = norm(s);
   if (s_proj > 0.0) s = (s_len / s_proj) * s;
-  if (update_history) s = s + dt * vt;
+  // Rolling speed: the two surfaces' mean speed past the contact point (which moves with the
+  // ball centre), in the tangent plane; the relaxation over this step, implicit.
+  const Vec3 pass = 0.5 * ((vb - b.v) + (vr - b.v));
+  const double roll = norm(pass - dot(pass, n) * n);
+  const double length = 2.0 * h.b1 * cbrt_fast(q);  // 2b at the elastic load
+  const double relax = update_history && length > 0.0 ? 1.0 / (1.0 + roll * dt / length) : 1.0;
+  if (update_history) s = relax * (s + dt * vt);
   const double kt = h.kt_coef * sq;
   const double gamma_t = damping_coefficient(m.beta, kt, b.mass);
   Vec3 ft = -kt * s - gamma_t * vt;
@@ -148,7 +160,7 @@ inline RaceContactResult3d race_contact_3d(const RaceContactModel3d &m, const Ri
   // Spin about the contact normal: torsional spring capped by the full-sliding moment.
   const double w_rel = dot(b.omega - ring.omega, n);
   double twist = *hist.twist;
-  if (update_history) twist += dt * w_rel;
+  if (update_history) twist = relax * (twist + dt * w_rel);
   const double k_twist = h.torsion_coef * delta * sq;
   const double gamma_w = damping_coefficient(m.beta, k_twist, b.inertia);
   double spin = -k_twist * twist - gamma_w * w_rel;

@@ -264,3 +264,38 @@ TEST(RaceContact3d, ABallPastTheCircleIsFlaggedNotForced)
   EXPECT_TRUE(r.off_groove);
   EXPECT_EQ(r.fn, 0.0);
 }
+
+TEST(RaceContact3d, RollingRelaxesTheSpringsIntoALinearCreepLaw)
+{
+  // A ball rolls without slip on a turning ring (its spin matches the ring's surface speed V at
+  // the contact) while it slides across the groove at v_s: the spring settles where its
+  // relaxation (V / 2b) s balances the slip, s = 2b v_s / V, F_t = k_t 2b v_s / V (mu large:
+  // below Coulomb). At rest the same slip would load the spring without bound.
+  const RaceContactModel3d m = model(RaceSide::Outer, 1.0, 10.0);
+  const double delta = 4e-6, w_ring = -50.0, v_s = 1e-4, dt = 1e-7;
+  BallState3d b = ball(ball_at(RaceSide::Outer, 0.0, 0.0, delta));
+  const double lever = kRb - 0.5 * delta, R = kRext + 0.5 * delta;  // contact point at x = R
+  b.omega = {0.0, 0.0, w_ring * R / lever};
+  b.v = {0.0, 0.0, v_s};
+  RingMotion3d ring;
+  ring.omega = {0.0, 0.0, w_ring};
+  History h;
+  ohmdem::RaceContactResult3d r;
+  for (int k = 0; k < 100000; ++k) r = ohmdem::race_contact_3d(m, ring, b, 0.0, dt, true, h.view());
+  const auto s = ohmdem::torus_curvatures(groove(RaceSide::Outer), 1.0);
+  const auto j = ohmdem::test::johnson_hertz(s.A, s.B, kEstar, r.fn);
+  const double V = std::fabs(w_ring) * R;
+  const double kt = 8 * kGstar * std::sqrt(j.a * j.b);
+  // (V also holds the slip's own half, v_s/2 across: 1e-9 of V here.)
+  EXPECT_NEAR(-r.force_on_ball.z / (kt * 2 * j.b * v_s / V), 1.0, 1e-6);
+  EXPECT_NEAR(r.ft_rolling, 0.0, 1e-9 * r.fn);
+  // Not rolling, the spring keeps nearly all the slip puts in (only the patch's own travel,
+  // v_s/2 over 2b, relaxes it): after the same time it holds v_s t, within 0.2 %.
+  RingMotion3d rest;
+  BallState3d b0 = ball(b.x);
+  b0.v = b.v;
+  History h0;
+  for (int k = 0; k < 100000; ++k)
+    r = ohmdem::race_contact_3d(m, rest, b0, 0.0, dt, true, h0.view());
+  EXPECT_NEAR(h0.shear[2] / (v_s * 100000 * dt), 1.0, 2e-3);
+}

@@ -1,0 +1,314 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Deck tests of the 3D bearing (inputs/bearing_6208/in.bearing with -var model 3d) against
+numbers nobody here made: the Jones-Harris equilibrium written out from Harris
+(jones_harris.py, itself checked by jones_harris_tests.py) for each ball's load and contact
+angle and the shaft's displacement; Harris' pure-thrust relation; the planar scene (model 2d)
+in the planar limit; the kinematics of rolling with the contact angle; stability and the
+errors of impossible geometries. The static runs are frictionless (mu 0): the Jones-Harris
+equilibrium is, and with friction a bearing at rest keeps the stick of its loading path
+(doc/methods/bearing_3d.md, "Friction").
+Usage: bearing3d_tests.py TEST --exe OHMDEM --src SOURCE_DIR [--dt DT]
+"""
+import math
+import os
+import re
+
+import numpy as np
+
+import jones_harris as jh
+from bearing_tests import read_signal, run_named_test
+from deck_checks import check
+
+# The deck's default bearing (machado2014, the paper's Table 1) and materials.
+NB, DB, DPW, RCI, RCO = 13, 0.0126, 0.0606, 0.00655, 0.00665
+E_STAR = 2e11 / (2 * (1 - 0.3**2))
+DT = 1e-6  # the 3D runs carry loads of hundreds of N per ball: 1e-5 s is past their
+#             stable step (the planar decks run 1e-5 at a few tens of N); --dt sets it
+
+
+def read_dump_last(path):
+    """The last snapshot of a LIGGGHTS custom dump: a dict of columns, sorted by id."""
+    lines = open(path).read().splitlines()
+    start = max(i for i, s in enumerate(lines) if s.startswith("ITEM: ATOMS"))
+    names = lines[start].split()[2:]
+    rows = np.array([[float(x) for x in s.split()] for s in lines[start + 1:] if s.strip()])
+    rows = rows[np.argsort(rows[:, 0])]
+    return {n: rows[:, k] for k, n in enumerate(names)}
+
+
+def run3d(r, name, **var):
+    var.setdefault("dt", DT)
+    var.setdefault("model", "3d")
+    out, log = r.run(name, **var)
+    return out, log, read_signal(out)
+
+
+def static_run(r, name, tend=0.03, **var):
+    """A frictionless bearing at rest, settled under its loads: the last step's balls."""
+    var.update(omega=0, mu=0, tend=tend, nout=max(1, round(1e-4 / DT)),
+               dumpraces=round(tend / DT))
+    out, log, sig = run3d(r, name, **var)
+    return sig, read_dump_last(os.path.join(out, "races.dump"))
+
+
+def compare_balls(label, d, Q, alpha, tol=0.01, alpha_inner=None):
+    """Each ball's load (both races) and contact angle against Jones-Harris: loads within tol
+    of the largest load, and within tol of their own where they carry over a third of it;
+    angles within tol where loaded. A race's angle is measured in its own ring's frame: the
+    inner one's (alpha_inner) differs from the outer one's by the shaft's tilt."""
+    qmax = Q.max()
+    worst_q = worst_a = 0.0
+    for side in ("inner", "outer"):
+        fn, a = d[f"f_{side}[1]"], np.radians(d[f"f_{side}[8]"])
+        ref = alpha_inner if side == "inner" and alpha_inner is not None else alpha
+        big = Q > qmax / 3
+        worst_q = max(worst_q, np.max(np.abs(fn - Q)) / qmax, np.max(np.abs(fn[big] / Q[big] - 1)))
+        worst_a = max(worst_a, np.max(np.abs(a[big] / ref[big] - 1)))
+    check(worst_q < tol and worst_a < tol,
+          f"{label}: each ball's load and contact angle against Jones-Harris (worst "
+          f"{worst_q:.2e} and {worst_a:.2e}, within {tol:.0%}; Qmax {qmax:.2f} N)")
+    return worst_q, worst_a
+
+
+def test_static_axial(r):
+    for Pd in (0.0, 20e-6):
+        Fa = 500.0
+        sig, d = static_run(r, f"axial_{Pd * 1e6:.0f}", Fr=0, Fa=Fa, clearance=Pd)
+        psi = np.arctan2(d["y"], d["x"])
+        b = jh.Bearing(NB, DB, DPW, RCI, RCO, E_STAR, clearance=Pd)
+        q, (Q, alpha, _, _, _), _ = jh.solve(b, psi, [0, 0, Fa])
+        label = f"Fa {Fa:g} N, clearance {Pd * 1e6:g} um"
+        compare_balls(label, d, Q, alpha)
+        da = sig["delta_a"][-1]
+        check(abs(da / q[2] - 1) < 0.01, f"   delta_a {da * 1e6:.4f} um, Jones-Harris "
+              f"{q[2] * 1e6:.4f} um ({da / q[2] - 1:+.1e})")
+        a_h = math.degrees(jh.harris_axial_angle(b, Fa))
+        a_in, a_out = sig["alpha_inner_mean"][-1], sig["alpha_outer_mean"][-1]
+        check(abs(a_in - a_h) < 0.2 and abs(a_out - a_h) < 0.2,
+              f"   alpha {a_in:.4f} / {a_out:.4f} deg (inner / outer), Harris' thrust relation "
+              f"{a_h:.4f} deg (within 0.2 deg)")
+        each = Fa / (NB * np.sin(np.radians(d["f_inner[8]"])))
+        off = np.max(np.abs(d["f_inner[1]"] / each - 1))
+        check(off < 0.01, f"   every ball Fa/(Z sin a) = {each.mean():.3f} N (worst {off:.1e})")
+
+
+def test_static_combined(r):
+    cases = (("radial", 2000.0, 0.0, 0.0), ("combined", 1500.0, 800.0, 10e-6))
+    for name, Fr, Fa, Pd in cases:
+        sig, d = static_run(r, name, Fr=Fr, Fa=Fa, clearance=Pd, tend=0.04)
+        psi = np.arctan2(d["y"], d["x"])
+        b = jh.Bearing(NB, DB, DPW, RCI, RCO, E_STAR, clearance=Pd)
+        q, (Q, alpha, _, u, _), _ = jh.solve(b, psi, [0, Fr, Fa])  # the shaft pushed along +y
+        label = f"Fr {Fr:g} N, Fa {Fa:g} N, clearance {Pd * 1e6:g} um"
+        if Fa == 0:
+            # No contact angle: compare the loads only (alpha = 0 has no relative error).
+            fn = d["f_inner[1]"]
+            worst = np.max(np.abs(fn - Q)) / Q.max()
+            check(worst < 0.01 and np.max(np.abs(d["f_inner[8]"])) < 1e-6,
+                  f"{label}: each ball's load against Jones-Harris (worst {worst:.2e} of Qmax "
+                  f"{Q.max():.2f} N), contact angles 0")
+        else:
+            compare_balls(label, d, Q, alpha, alpha_inner=jh.ring_frame_angles(q, u))
+        dr, da = sig["delta_r"][-1], sig["delta_a"][-1]
+        ok = abs(dr / q[1] - 1) < 0.01 and (Fa == 0 or abs(da / q[2] - 1) < 0.01)
+        check(ok, f"   delta_r {dr * 1e6:.4f} um (JH {q[1] * 1e6:.4f}), delta_a {da * 1e6:.4f} um"
+              f" (JH {q[2] * 1e6:.4f}), tilt {sig['tilt'][-1]:.3e} rad (JH {-q[3]:.3e})")
+
+
+def test_angular_contact(r):
+    a0, preload, Fr = 25.0, 15e-6, 800.0
+    sig, d = static_run(r, "angular", Fr=Fr, alpha0=a0, preload=preload, tend=0.04)
+    psi = np.arctan2(d["y"], d["x"])
+    b = jh.Bearing(NB, DB, DPW, RCI, RCO, E_STAR, alpha0_deg=a0)
+    q, (Q, alpha, _, u, _), _ = jh.solve(b, psi, [0, Fr, 0], preload=preload)
+    compare_balls(f"alpha0 {a0:g} deg, preload {preload * 1e6:g} um, Fr {Fr:g} N", d, Q, alpha,
+                  alpha_inner=jh.ring_frame_angles(q, u))
+    axial = float(np.sum(Q * u[:, 2]))
+    dem_axial = float(np.sum(d["f_inner[1]"] * np.sin(np.radians(d["f_inner[8]"]))))
+    tilt_jh = -q[3]  # about z x (0, 1, 0) = -x
+    check(abs(dem_axial / axial - 1) < 0.01 and abs(sig["delta_r"][-1] / q[1] - 1) < 0.01 and
+          abs(sig["tilt"][-1] / tilt_jh - 1) < 0.01,
+          f"   axial reaction {dem_axial:.2f} N (JH {axial:.2f}), delta_r "
+          f"{sig['delta_r'][-1] * 1e6:.4f} um (JH {q[1] * 1e6:.4f}), tilt "
+          f"{sig['tilt'][-1] * 1e3:.4f} mrad (JH {tilt_jh * 1e3:.4f})")
+
+
+def test_planar_limit(r):
+    # The paper's scene under a radial load (model 2d, the outer ring pressed along -y) and the
+    # 3D bearing with no clearance and no axial load (the shaft pressed along +y): the same
+    # relative displacement, the same load zone.
+    F = 2000.0
+    common = dict(omega=0, mu=0, tend=0.03, nout=max(1, round(1e-4 / DT)), dt=DT,
+                  dumpraces=round(0.03 / DT))
+    o2, _ = r.run("planar_2d", load="radial", F=F, **common)
+    o3, _ = r.run("planar_3d", model="3d", Fr=F, **common)
+    s2, s3 = read_signal(o2), read_signal(o3)
+    d2 = read_dump_last(os.path.join(o2, "races.dump"))
+    d3 = read_dump_last(os.path.join(o3, "races.dump"))
+    qmax = d2["f_inner[1]"].max()
+    worst = max(np.max(np.abs(d3[f"f_{s}[1]"] - d2[f"f_{s}[1]"])) for s in ("inner", "outer"))
+    dR = s3["R"][-1] / s2["R"][-1] - 1
+    check(worst / qmax < 1e-3 and abs(dR) < 1e-3,
+          f"at rest, Fr {F:g} N: ball loads as model 2d's within {worst / qmax:.1e} of Qmax "
+          f"{qmax:.2f} N, R {s3['R'][-1]:.6f} ohm vs {s2['R'][-1]:.6f} ({dR:+.1e})")
+    # Rolling at the paper's speed with friction: the means over the steady window.
+    roll = dict(omega=500, tend=0.04, nout=max(1, round(1e-4 / DT)), dt=DT)
+    o2, _ = r.run("planar_2d_rolling", load="radial", F=F, **roll)
+    o3, _ = r.run("planar_3d_rolling", model="3d", Fr=F, **roll)
+    s2, s3 = read_signal(o2), read_signal(o3)
+    w = s2["time"] > 0.025
+    for col in ("fn_inner_max", "fn_outer_max", "R"):
+        rel = s3[col][w].mean() / s2[col][w].mean() - 1
+        check(abs(rel) < 1e-3, f"rolling at 500 rad/s: mean {col} {s3[col][w].mean():.6g} vs "
+              f"model 2d {s2[col][w].mean():.6g} ({rel:+.1e}, within 1e-3)")
+
+
+def test_kinematics(r):
+    # Rolling under a pure axial load: every ball at the contact angle alpha. Pure rolling
+    # (Harris) with gamma = D cos(alpha)/dm: cage w_i (1 - gamma)/2; the ball's rolling speed
+    # about an axis across its contact line, in the cage's frame, w_c (dm/D)(1 + gamma).
+    omega, Fa = 500.0, 1000.0
+    out, log, sig = run3d(r, "kinematics", omega=omega, Fr=0, Fa=Fa, clearance=20e-6, tend=0.06,
+                          nout=max(1, round(1e-4 / DT)), dumpraces=round(0.06 / DT))
+    w = sig["time"] > 0.04
+    a = np.radians(0.5 * (sig["alpha_inner_mean"][w] + sig["alpha_outer_mean"][w]).mean())
+    g = DB * math.cos(a) / DPW
+    kin = omega * (1 - g) / 2
+    planar = omega * (1 - DB / DPW) / 2
+    wc = sig["omega_balls"][w].mean()
+    slip = wc / kin - 1
+    check(abs(slip) < 0.25 * abs(kin / planar - 1),
+          f"cage {wc:.4f} rad/s, pure rolling at alpha {math.degrees(a):.3f} deg {kin:.4f} rad/s "
+          f"(the run's slip {slip:+.2e}); the planar kinematics {planar:.4f} would be "
+          f"{planar / wc - 1:+.2e} off")
+    d = read_dump_last(os.path.join(out, "races.dump"))
+    p_in = np.stack([d["f_inner[4]"], d["f_inner[5]"], d["f_inner[7]"]], axis=1)
+    p_out = np.stack([d["f_outer[4]"], d["f_outer[5]"], d["f_outer[7]"]], axis=1)
+    n = p_out - p_in
+    n /= np.linalg.norm(n, axis=1)[:, None]
+    wb = np.stack([d["omegax"], d["omegay"], d["omegaz"] - wc], axis=1)  # in the cage's frame
+    spin = np.sum(wb * n, axis=1)
+    roll = np.linalg.norm(wb - spin[:, None] * n, axis=1)
+    ref = wc * DPW / DB * (1 + g)
+    err = np.max(np.abs(roll / ref - 1))
+    check(err < max(0.01, 3 * abs(slip)),
+          f"ball rolling speed {roll.mean():.2f} rad/s vs w_c (dm/D)(1 + gamma) = {ref:.2f} rad/s "
+          f"(worst {err:.2e})")
+    # The spin about the contact line: no relative spin on the outer race (Jones' outer-race
+    # control) is -w_c sin(alpha) in the cage's frame, none on the inner race (w_i - w_c)
+    # sin(alpha); where the two spin moments balance each other it lies between.
+    outer_control, inner_control = -wc * math.sin(a), (omega - wc) * math.sin(a)
+    check(outer_control < spin.mean() < inner_control and np.ptp(spin) < 0.05 * roll.mean(),
+          f"spin about the contact line {spin.mean():+.2f} rad/s ({spin.mean() / roll.mean():+.3f}"
+          f" of the rolling speed), between outer-race control {outer_control:+.2f} and "
+          f"inner-race control {inner_control:+.2f} rad/s")
+
+
+def static_rating_axial(b):
+    """The pure axial load at which the inner contact's peak Hertz pressure reaches 4200 MPa
+    (ISO 76's static rating of ball bearings), from Harris' Hertz ellipse (jones_harris.py)."""
+    from scipy.optimize import brentq
+
+    def excess(Fa):
+        a = jh.harris_axial_angle(b, Fa)
+        Q = Fa / (b.Z * math.sin(a))
+        return jh.peak_pressure(b, Q, a, True) - 4.2e9
+
+    return brentq(excess, 10.0, 1e6, rtol=1e-6)
+
+
+def no_nan_no_loss(sig, log, label):
+    # R is infinite while no ball touches both races (the play not yet taken up): no NaN, and
+    # finite at the end.
+    finite = not any(np.any(np.isnan(v)) for v in sig.values()) and np.isfinite(sig["R"][-1])
+    m = re.search(r"^BEARING_SUMMARY .* z_extent (\S+)", log, re.M)
+    check(finite and m is not None and sig["n_contacts_race"][-1] > 0,
+          f"{label}: finished, no NaN, every ball kept (z extent {float(m.group(1)) * 1e6:.1f} um)"
+          if m else f"{label}: did not finish")
+
+
+def test_stability(r):
+    b = jh.Bearing(NB, DB, DPW, RCI, RCO, E_STAR)
+    c0a = static_rating_axial(b)
+    print(f"     static axial rating (4200 MPa at the inner contacts): {c0a:.0f} N")
+    for Fa in (1.0, c0a):
+        _, log, sig = run3d(r, f"stab_axial_{Fa:.0f}", Fr=0, Fa=Fa, omega=500, tend=0.01,
+                            nout=10)
+        no_nan_no_loss(sig, log,
+                       f"Fa {Fa:.0f} N at 500 rad/s, alpha {sig['alpha_inner_mean'][-1]:.2f} deg")
+    _, log, sig = run3d(r, "stab_clearance", Fr=1000, Fa=200, clearance=50e-6, omega=500,
+                        tend=0.01, nout=10)
+    no_nan_no_loss(sig, log, f"clearance 50 um, Fr 1000 N, Fa 200 N, alpha up to "
+                   f"{sig['alpha_outer_max'][-1]:.2f} deg")
+    _, log, sig = run3d(r, "stab_alpha45", Fr=500, alpha0=45, preload=10e-6, omega=500,
+                        tend=0.01, nout=10)
+    no_nan_no_loss(sig, log, f"alpha0 45 deg under preload, alpha {sig['alpha_inner_mean'][-1]:.2f}"
+                   " deg")
+    _, log, sig = run3d(r, "stab_fast", Fr=2000, Fa=500, omega=2000, tend=0.01, nout=10,
+                        dt=min(DT, 5e-6))
+    no_nan_no_loss(sig, log, "2000 rad/s (19 100 r/min), Fr 2000 N, Fa 500 N")
+
+
+def expect_error(r, name, pattern, **var):
+    var.setdefault("model", "3d")
+    var.setdefault("tend", 1e-4)
+    out = os.path.join(r.workdir, name)
+    os.makedirs(out, exist_ok=True)
+    import subprocess
+    cmd = [r.exe, "-in", r.deck, "-log", os.path.join(out, "log.txt"), "-screen", "none",
+           "-var", "out", out]
+    for k, v in var.items():
+        cmd += ["-var", k, str(v)]
+    res = subprocess.run(cmd, cwd=out, capture_output=True, text=True)
+    text = res.stdout + res.stderr + open(os.path.join(out, "log.txt")).read()
+    check(res.returncode != 0 and re.search(pattern, text) is not None,
+          f"{name}: stops (exit {res.returncode}) with '{pattern}'")
+
+
+def test_errors(r):
+    A = RCI + RCO - DB
+    expect_error(r, "err_model", r"deck variable model: 2d or 3d, got 3D", model="3D")
+    expect_error(r, "err_clearance", r"lets the ball pass between the grooves",
+                 clearance=2.2 * A)
+    expect_error(r, "err_shoulder", r"past the shoulder at 15 deg", shoulder=15, Fr=0, Fa=5000,
+                 tend=0.01)
+    expect_error(r, "err_both", r"keyword 'alpha0' expects 0 with a clearance", clearance=1e-5,
+                 alpha0=25)
+    expect_error(r, "err_lubricant", r"keyword 'lubricant' needs model 2d races",
+                 lubricant="VG68")
+
+
+def test_mpi_restart(r):
+    # Combined load, clearance, rolling with friction: 1 and 2 processes give the same signal
+    # to the last bit, and a run split by write_restart/read_restart the single run's rows.
+    case = dict(model="3d", Fr=1500, Fa=800, clearance=10e-6, omega=500, dt=DT, nout=10)
+    one, _ = r.run("mpi_1", tend=0.003, **case)
+    two, _ = r.run("mpi_2", tend=0.003, nprocs=2, **case)
+    a = open(os.path.join(one, "signal.txt")).read()
+    b = open(os.path.join(two, "signal.txt")).read()
+    check(a == b and len(a.splitlines()) > 100,
+          "model 3d: the signal is identical with 1 and 2 processes")
+    first, _ = r.run("restart_first", deck=os.path.join(os.path.dirname(__file__),
+                                                        "in.restart_first"),
+                     bearing_deck=r.deck, tend=0.0015, **case)
+    second, _ = r.run("restart_second", tend=0.003, start="restart",
+                      restart_file=os.path.join(first, "half.restart"), **case)
+    rows_b = open(os.path.join(second, "signal.txt")).read().splitlines()
+    tail = a.splitlines()[-(len(rows_b) - 1):]
+    check(len(rows_b) > 1 and tail == rows_b[1:],
+          f"model 3d restart: the second half ({len(rows_b) - 1} rows) is identical to the single "
+          f"run")
+
+
+if __name__ == "__main__":
+    import sys
+
+    if "--dt" in sys.argv:
+        k = sys.argv.index("--dt")
+        DT = float(sys.argv[k + 1])
+        del sys.argv[k:k + 2]
+    run_named_test({"static_axial": test_static_axial, "static_combined": test_static_combined,
+                    "angular_contact": test_angular_contact, "planar_limit": test_planar_limit,
+                    "kinematics": test_kinematics, "stability": test_stability,
+                    "errors": test_errors, "mpi_restart": test_mpi_restart}, "ohmdem3d_")
