@@ -147,6 +147,7 @@ ohmdem::RingMotion3d FixBearingRace::ring_motion_3d() const
   ohmdem::RingMotion3d r;
   r.centre = {cx_, cy_, cz_};
   r.tilt = ohmdem::rotation_vector({tilt_[0], tilt_[1], 0.0});
+  r.tilted = tilt_[0] != 0.0 || tilt_[1] != 0.0;
   r.velocity = {vcx_, vcy_, vcz_};
   r.omega = target_omega(time_) * r.tilt.column(2) + Vec3{tilt_rate_[0], tilt_rate_[1], 0.0};
   r.radius_shift = u_;

@@ -42,8 +42,13 @@ AngularHertz::AngularHertz(const TorusGroove &groove, double E_eff, double G_eff
     throw std::invalid_argument("shear modulus must be positive");
   if (intervals < 4) throw std::invalid_argument("the Hertz table needs at least 4 intervals");
   table_.reserve(intervals_ + 1);
-  for (int k = 0; k <= intervals_; ++k)
-    table_.push_back(exact(static_cast<double>(k) / intervals_));
+  mechanics_.reserve(intervals_ + 1);
+  for (int k = 0; k <= intervals_; ++k) {
+    const HertzAtAngle h = exact(static_cast<double>(k) / intervals_);
+    table_.push_back(h);
+    const double k3 = std::cbrt(h.K);  // Q^(1/3) = K^(1/3) sqrt(delta)
+    mechanics_.push_back({h.K, h.kt_coef, 2.0 * h.b1 * k3, h.spin_coef * h.K * k3, h.torsion_coef});
+  }
 }
 
 HertzAtAngle AngularHertz::exact(double cos_alpha) const

@@ -91,6 +91,17 @@ struct HertzAtAngle {
   double torsion_coef = 0;  // torsional stiffness (16/3) G_t (ab)^(3/2) = torsion_coef delta^1.5
 };
 
+// What the contact force needs at every step, derived from HertzAtAngle so that the step takes
+// no cube root: with Q = K delta^1.5, Q^(1/3) = K^(1/3) sqrt(delta).
+struct HertzMechanics {
+  double K = 0;        // Q = K delta^1.5
+  double kt_coef = 0;  // k_t = kt_coef sqrt(delta)
+  double length_coef =
+      0;  // the ellipse's length along the rolling direction, 2b = length_coef sqrt(delta)
+  double spin_cap_coef = 0;  // the spin moment's cap at the elastic load, mu spin_cap_coef delta^2
+  double torsion_coef = 0;   // k_twist = torsion_coef delta^1.5
+};
+
 class AngularHertz {
  public:
   // Throws std::invalid_argument (naming the problem) for a groove not larger than the ball,
@@ -127,6 +138,30 @@ class AngularHertz {
                      w3 * n[3].torsion_coef;
     return h;
   }
+  // HertzMechanics at cos_alpha, interpolated as at() (its own table: five values, not eight).
+  HertzMechanics mechanics(double cos_alpha) const
+  {
+    const double c = cos_alpha < 0.0 ? 0.0 : (cos_alpha > 1.0 ? 1.0 : cos_alpha);
+    const double u = c * intervals_;
+    int i = static_cast<int>(u);
+    if (i < 1) i = 1;
+    if (i > intervals_ - 2) i = intervals_ - 2;
+    const double t = u - i;
+    const double w0 = -t * (t - 1.0) * (t - 2.0) / 6.0,
+                 w1 = (t + 1.0) * (t - 1.0) * (t - 2.0) / 2.0;
+    const double w2 = -(t + 1.0) * t * (t - 2.0) / 2.0, w3 = (t + 1.0) * t * (t - 1.0) / 6.0;
+    const HertzMechanics *n = &mechanics_[i - 1];
+    HertzMechanics h;
+    h.K = w0 * n[0].K + w1 * n[1].K + w2 * n[2].K + w3 * n[3].K;
+    h.kt_coef = w0 * n[0].kt_coef + w1 * n[1].kt_coef + w2 * n[2].kt_coef + w3 * n[3].kt_coef;
+    h.length_coef = w0 * n[0].length_coef + w1 * n[1].length_coef + w2 * n[2].length_coef +
+                    w3 * n[3].length_coef;
+    h.spin_cap_coef = w0 * n[0].spin_cap_coef + w1 * n[1].spin_cap_coef + w2 * n[2].spin_cap_coef +
+                      w3 * n[3].spin_cap_coef;
+    h.torsion_coef = w0 * n[0].torsion_coef + w1 * n[1].torsion_coef + w2 * n[2].torsion_coef +
+                     w3 * n[3].torsion_coef;
+    return h;
+  }
   // The ellipse of a contact at cos_alpha under the normal force fn, in either area model.
   ContactEllipse ellipse(double cos_alpha, double fn, AreaModel model) const;
   const TorusGroove &groove() const { return groove_; }
@@ -136,7 +171,8 @@ class AngularHertz {
   TorusGroove groove_;
   double E_eff_, G_eff_, G_torsion_;
   int intervals_;
-  std::vector<HertzAtAngle> table_;  // intervals_ + 1 nodes, cos(alpha) = k / intervals_
+  std::vector<HertzAtAngle> table_;        // intervals_ + 1 nodes, cos(alpha) = k / intervals_
+  std::vector<HertzMechanics> mechanics_;  // the same nodes
 };
 
 }  // namespace ohmdem

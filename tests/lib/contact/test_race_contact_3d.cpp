@@ -155,6 +155,7 @@ TEST(RaceContact3d, ATiltedDisplacedRingTurnsTheAnswerWithIt)
   RingMotion3d ring;
   ring.centre = c;
   ring.tilt = tilt;
+  ring.tilted = true;
   const auto r1 =
       ohmdem::race_contact_3d(m, ring, ball(c + tilt.apply(local)), 0.0, 0.0, false, h1.view());
   const Vec3 f = tilt.apply(r0.force_on_ball);

@@ -165,6 +165,13 @@ TEST(TorusRace, TheTableFollowsTheDirectSolution)
       for (double pair : {t.K / e.K, t.a1 / e.a1, t.b1 / e.b1, t.a1_greenwood / e.a1_greenwood,
                           t.spin_coef / e.spin_coef, t.torsion_coef / e.torsion_coef})
         worst = std::fmax(worst, std::fabs(pair - 1));
+      // The step's values: 2b and the spin cap at Q = K delta^1.5 without a cube root.
+      const auto m = h.mechanics(c);
+      const double k3 = std::cbrt(e.K);
+      for (double pair :
+           {m.K / e.K, m.kt_coef / e.kt_coef, m.length_coef / (2 * e.b1 * k3),
+            m.spin_cap_coef / (e.spin_coef * e.K * k3), m.torsion_coef / e.torsion_coef})
+        worst = std::fmax(worst, std::fabs(pair - 1));
     }
     EXPECT_LT(worst, 1e-10);
   }
