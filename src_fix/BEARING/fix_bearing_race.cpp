@@ -204,6 +204,8 @@ ohmdem::BearingSurface FixBearingRace::surface() const
   s.radius = current_radius();
   s.angle = angle_;
   s.ball_radius = model_ ? model_->ball_radius : ball_radius_;
+  s.groove = settings_.groove;
+  s.three_d = three_d();
   return s;
 }
 

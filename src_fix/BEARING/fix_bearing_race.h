@@ -163,6 +163,8 @@ class FixBearingRace : public FixBearingBody {
   void write_restart_3d(FILE *fp);
   void restart_3d(const double *list);
   bool reapply_restored_forces_3d();
+  // The defects' recess under ball i's contact at contact angle alpha (rad), as defect_recess.
+  double defect_recess_3d(int i, double alpha, bool &in_zone) const;
   std::unique_ptr<ohmdem::RaceContactModel3d> model3d_;
   double cz_ = 0, vcz_ = 0;                          // axial position and velocity of the centre
   double tilt_[2] = {0, 0}, tilt_rate_[2] = {0, 0};  // the axis' tilt (rotation vector x, y)

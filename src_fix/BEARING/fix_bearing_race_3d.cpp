@@ -177,8 +177,14 @@ void FixBearingRace::post_force_3d()
     out[COSA] = 1.0;
     double recess = 0.0;
     if (!defects_.empty()) {
+      // Where across the groove the contact lies: its contact angle before the recess.
+      const Vec3 rel{x[i][0] - cx_, x[i][1] - cy_, x[i][2] - cz_};
+      ohmdem::TorusGroove g = model3d_->groove;
+      g.centre_radius += settings_.inner ? u_ : -u_;
+      const auto geo =
+          ohmdem::torus_geometry(g, ring.tilted ? ring.tilt.apply_transpose(rel) : rel);
       bool in_zone = false;
-      recess = defect_recess(i, defect_surface_, in_zone);
+      recess = defect_recess_3d(i, std::atan2(geo.sin_alpha, geo.cos_alpha), in_zone);
       out[MASKED] = in_zone ? 1.0 : 0.0;
       masked += in_zone;
     }
@@ -349,6 +355,15 @@ ohmdem::ContactEllipse FixBearingRace::ellipse_of(int i, ohmdem::AreaModel model
   const double *row = array_atom[i];
   if (three_d()) return model3d_->hertz.ellipse(row[COSA], row[FN], model);
   return model_->hertz.ellipse(row[FN]);
+}
+
+double FixBearingRace::defect_recess_3d(int i, double alpha, bool &in_zone) const
+{
+  const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
+  double recess = 0.0;
+  for (const auto *d : defects_)
+    recess += d->recess_at(defect_surface_, atom->tag[i], dx, dy, alpha, in_zone);
+  return recess;
 }
 
 bool FixBearingRace::reapply_restored_forces_3d()

@@ -279,6 +279,31 @@ def test_errors(r):
                  lubricant="VG68")
 
 
+def test_defect_width(r):
+    # Under a pure axial load every contact runs on the outer race's groove at alpha (13 deg,
+    # Rg alpha = 1.5 mm from its bottom). A pit across the whole track is met by every ball; one
+    # 1 mm wide at the bottom lies beside their path and is never felt; the same pit centred on
+    # the path (track alpha) is.
+    case = dict(Fr=0, Fa=500, clearance=20e-6, omega=500, defect="outer", size=3, tend=0.03,
+                nout=10)
+    runs = {}
+    for name, extra in (("whole", {}), ("beside", {"dwidth": 1e-3}),
+                        ("on_path", {"dwidth": 1e-3, "dtrack": 13.0})):
+        _, _, sig = run3d(r, f"pit_{name}", **case, **extra)
+        w = sig["time"] > 0.015
+        runs[name] = (sig["n_masked"][w].max(), sig["R"][w].max() / sig["R"][w].min() - 1,
+                      sig["alpha_outer_mean"][w].mean())
+    a = runs["whole"][2]
+    off = RCO * math.radians(a) * 1e3
+    check(runs["whole"][0] >= 1 and runs["whole"][1] > 0.05,
+          f"a pit across the whole track masks the passing balls (R up {runs['whole'][1]:.1%})")
+    check(runs["beside"][0] == 0 and runs["beside"][1] < 0.01,
+          f"a 1 mm pit at the groove bottom, {off:.2f} mm beside the contact path (alpha {a:.2f} "
+          f"deg): never masked, R within {runs['beside'][1]:.2%}")
+    check(runs["on_path"][0] >= 1 and runs["on_path"][1] > 0.05,
+          f"the same pit on the path (track 13 deg): masked, R up {runs['on_path'][1]:.1%}")
+
+
 def test_mpi_restart(r):
     # Combined load, clearance, rolling with friction: 1 and 2 processes give the same signal
     # to the last bit, and a run split by write_restart/read_restart the single run's rows.
@@ -311,4 +336,5 @@ if __name__ == "__main__":
     run_named_test({"static_axial": test_static_axial, "static_combined": test_static_combined,
                     "angular_contact": test_angular_contact, "planar_limit": test_planar_limit,
                     "kinematics": test_kinematics, "stability": test_stability,
-                    "errors": test_errors, "mpi_restart": test_mpi_restart}, "ohmdem3d_")
+                    "errors": test_errors, "mpi_restart": test_mpi_restart,
+                    "defect_width": test_defect_width}, "ohmdem3d_")
