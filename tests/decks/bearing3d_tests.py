@@ -304,6 +304,46 @@ def test_defect_width(r):
           f"the same pit on the path (track 13 deg): masked, R up {runs['on_path'][1]:.1%}")
 
 
+def test_post_frequencies(r):
+    # ohmdem-post takes the contact angle (--contact-angle, as --beta) and a model 3d run's
+    # run.json gives it the run's mean angle: Harris' frequencies with cos(alpha) [H, ch. 1]:
+    # FTF = fr/2 (1 - d/D cos a), BPFO = Z FTF, BPFI = Z fr/2 (1 + d/D cos a),
+    # BSF = D/(2d) fr (1 - (d/D cos a)^2).
+    import json
+    import subprocess
+    post = os.path.join(os.path.dirname(r.exe), "ohmdem-post")
+
+    def frequencies(*args):
+        res = subprocess.run([post, "frequencies", *args, "--format", "json"],
+                             capture_output=True, text=True)
+        return res.returncode, (json.loads(res.stdout) if res.returncode == 0 else res.stderr)
+
+    def harris(z, d, D, a_deg, fr):
+        g = d / D * math.cos(math.radians(a_deg))
+        return {"ftf_hz": fr / 2 * (1 - g), "bpfo_hz": z * fr / 2 * (1 - g),
+                "bpfi_hz": z * fr / 2 * (1 + g), "bsf_hz": D / (2 * d) * fr * (1 - g * g)}
+
+    _, f = frequencies("--bearing", "6205-2RS_JEM", "--rpm", "1797", "--contact-angle", "12")
+    ref = harris(9, 0.00794, 0.03904, 12.0, 1797 / 60)
+    worst = max(abs(f[k] / v - 1) for k, v in ref.items())
+    _, fb = frequencies("--bearing", "6205-2RS_JEM", "--rpm", "1797", "--beta", "12")
+    check(worst < 1e-12 and fb == f, f"--contact-angle 12 on the CWRU 6205: Harris' frequencies "
+          f"(worst {worst:.1e}), the same as --beta 12")
+    rc, err = frequencies("--bearing", "6205-2RS_JEM", "--rpm", "1797", "--beta", "12",
+                          "--contact-angle", "12")
+    check(rc != 0 and "not both" in err, "--beta and --contact-angle together: refused")
+    out, _, sig = run3d(r, "post_frequencies", Fr=0, Fa=1000, clearance=20e-6, omega=500,
+                        tend=0.02, nout=100)
+    a = 0.5 * (sig["alpha_inner_mean"][-1] + sig["alpha_outer_mean"][-1])
+    _, f = frequencies("--metadata", os.path.join(out, "run.json"))
+    ref = harris(NB, DB, DPW, a, 500 / (2 * math.pi))
+    worst = max(abs(f[k] / v - 1) for k, v in ref.items())
+    check(worst < 1e-9 and abs(f["bearing"]["contact_angle_deg"] - a) < 1e-9,
+          f"run.json of a model 3d run: the run's contact angle {a:.4f} deg, Harris' frequencies "
+          f"(worst {worst:.1e}; BPFO {f['bpfo_hz']:.3f} Hz, planar "
+          f"{NB * 500 / (4 * math.pi) * (1 - DB / DPW):.3f})")
+
+
 def test_mpi_restart(r):
     # Combined load, clearance, rolling with friction: 1 and 2 processes give the same signal
     # to the last bit, and a run split by write_restart/read_restart the single run's rows.
@@ -337,4 +377,5 @@ if __name__ == "__main__":
                     "angular_contact": test_angular_contact, "planar_limit": test_planar_limit,
                     "kinematics": test_kinematics, "stability": test_stability,
                     "errors": test_errors, "mpi_restart": test_mpi_restart,
-                    "defect_width": test_defect_width}, "ohmdem3d_")
+                    "defect_width": test_defect_width,
+                    "post_frequencies": test_post_frequencies}, "ohmdem3d_")
