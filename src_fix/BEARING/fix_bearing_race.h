@@ -109,6 +109,19 @@ class FixBearingRace : public FixBearingBody {
   // The ellipse of ball i's contact with this race in the area model `model`: model 3d at its
   // contact angle of this step; model 2d the contact model's (contact_model()).
   ohmdem::ContactEllipse ellipse_of(int i, ohmdem::AreaModel model) const;
+  // Model 3d, for the lubricated contact: ball i's contact with this race as the film sees it
+  // (its effective radii at the contact angle, the exact ellipse, the entrainment speed), or
+  // the gap to it when the ball does not press it; the ellipse in the compute's area model.
+  struct FilmGeometry {
+    bool pressed = false;
+    double fn = 0;          // N
+    double rx = 0, ry = 0;  // 1/A, 1/B at the contact angle (m)
+    double a = 0, b = 0;    // semi-axes, a across the groove (m)
+    double speed = 0;       // mean entrainment speed (m/s)
+    double gap = 0;         // not pressed: the gap to the groove along the contact line (m)
+    double e_prime = 0;     // E' = 2 E* (Pa)
+  };
+  FilmGeometry film_geometry_3d(int i, ohmdem::AreaModel model) const;
 
  private:
   using Load = ohmdem::RaceLoad;

@@ -62,6 +62,7 @@ enum Col3 {
   SHY,
   SHZ,
   TWIST,
+  ROLL,  // the film's entrainment speed (m/s)
   NCOL3
 };
 // Per touching ball, summed in tag order: its force (3), normal force, the torque on the ring
@@ -173,7 +174,7 @@ void FixBearingRace::post_force_3d()
   for (int i = 0; i < nlocal; ++i) {
     double *out = array_atom[i];
     if (!(atom->mask[i] & groupbit)) continue;
-    for (int k : {FN, DELTA, FT, PX, PY, PZ, ALPHA, FX, FY, FZ, TX, TY, TZ}) out[k] = 0.0;
+    for (int k : {FN, DELTA, FT, PX, PY, PZ, ALPHA, FX, FY, FZ, TX, TY, TZ, ROLL}) out[k] = 0.0;
     out[COSA] = 1.0;
     double recess = 0.0;
     if (!defects_.empty()) {
@@ -225,6 +226,7 @@ void FixBearingRace::post_force_3d()
     out[TX] = c.torque_on_ball.x;
     out[TY] = c.torque_on_ball.y;
     out[TZ] = c.torque_on_ball.z;
+    out[ROLL] = c.rolling_speed;
     rec.v = {c.force_on_ball.x,
              c.force_on_ball.y,
              c.force_on_ball.z,
@@ -355,6 +357,33 @@ ohmdem::ContactEllipse FixBearingRace::ellipse_of(int i, ohmdem::AreaModel model
   const double *row = array_atom[i];
   if (three_d()) return model3d_->hertz.ellipse(row[COSA], row[FN], model);
   return model_->hertz.ellipse(row[FN]);
+}
+
+FixBearingRace::FilmGeometry FixBearingRace::film_geometry_3d(int i, ohmdem::AreaModel model) const
+{
+  FilmGeometry f;
+  const double *row = array_atom[i];
+  const ohmdem::RingMotion3d ring = ring_motion_3d();
+  ohmdem::TorusGroove g = model3d_->groove;
+  g.centre_radius += settings_.inner ? u_ : -u_;
+  const Vec3 rel{atom->x[i][0] - cx_, atom->x[i][1] - cy_, atom->x[i][2] - cz_};
+  const auto geo = ohmdem::torus_geometry(g, ring.tilted ? ring.tilt.apply_transpose(rel) : rel);
+  const double cos_alpha = std::min(1.0, std::max(0.0, geo.cos_alpha));
+  const ohmdem::CurvatureSums s = ohmdem::torus_curvatures(g, cos_alpha);
+  f.rx = 1.0 / s.A;
+  f.ry = 1.0 / s.B;
+  f.e_prime = 2.0 * model3d_->hertz.E_eff();
+  f.fn = row[FN];
+  f.pressed = row[FN] > 0.0;
+  if (f.pressed) {
+    const ohmdem::ContactEllipse e = model3d_->hertz.ellipse(row[COSA], row[FN], model);
+    f.a = e.a;
+    f.b = e.b;
+    f.speed = row[ROLL];
+  } else {
+    f.gap = -geo.delta;
+  }
+  return f;
 }
 
 double FixBearingRace::defect_recess_3d(int i, double alpha, bool &in_zone) const

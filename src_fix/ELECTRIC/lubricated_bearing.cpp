@@ -275,6 +275,7 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
                                              const double *g_dry)
 {
   if (!geometry_ready_) set_geometry(context);
+  if (race_[0]->three_d()) return evaluate_3d(context, gather, g_dry);
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 

@@ -13,7 +13,8 @@
 // 3 mu Q a E(e) / 8 (Harris) at the elastic load Q, with restitution damping on the ball's
 // moment of inertia.
 // Rolling relaxes both springs: the material passes through the contact in the time 2b/V (b the
-// ellipse's half-length along the rolling direction, V the rolling speed), so a spring holds
+// ellipse's half-length along the rolling direction, V the surfaces' mean speed past the contact
+// point, which travels with the ball's orbit), so a spring holds
 // only what the last contact length of travel put into it: ds/dt = v_slip - (V / 2b) s (the
 // brush model's first-order relaxation). In steady rolling a tangential force then needs a
 // creep, F_t = k_t 2b v_slip / V (a linear creep law), instead of being held by a stuck spring
@@ -68,7 +69,9 @@ struct RaceContactResult3d {
   bool touching = false;
   bool off_groove = false;  // touching with cos(alpha) <= 0: the ball has left the groove
   double delta = 0, fn = 0;
-  double ft_rolling = 0;  // tangential force along the rolling direction axis x e_rho (N)
+  double ft_rolling = 0;     // tangential force along the rolling direction axis x e_rho (N)
+  double rolling_speed = 0;  // the surfaces' mean speed past the contact point along the
+                             // rolling direction: the entrainment speed u of the film (m/s)
   double cos_alpha = 1, sin_alpha = 0;
   Vec3 normal;             // unit, from the groove's curvature centre to the ball centre
   Vec3 point;              // contact point (middle of the overlap)
@@ -136,9 +139,16 @@ inline RaceContactResult3d race_contact_3d(const RaceContactModel3d &m, const Ri
   // (w_c dt)^2 / 2 of its length, far below what rolling relaxes.
   Vec3 s{hist.shear[0], hist.shear[1], hist.shear[2]};
   s = s - dot(s, n) * n;
-  // Rolling speed: the two surfaces' mean speed past the contact point (which moves with the
-  // ball centre), in the tangent plane; the relaxation over this step, implicit.
-  const Vec3 pass = 0.5 * ((vb - b.v) + (vr - b.v));
+  // Rolling speed: the two surfaces' mean speed past the contact point, in the tangent plane;
+  // the relaxation over this step, implicit. The contact point travels with the ball's orbit about
+  // the ring's axis: the ball centre's velocity turned by the orbit's rate over the lever (its own
+  // spin does not move the point).
+  const Vec3 axis = ring.tilted ? ring.tilt.column(2) : Vec3{0.0, 0.0, 1.0};
+  const Vec3 from_axis = b.x - ring.centre - dot(b.x - ring.centre, axis) * axis;
+  const double r2 = dot(from_axis, from_axis);
+  const double orbit = r2 > 0.0 ? dot(cross(from_axis, b.v), axis) / r2 : 0.0;
+  const Vec3 vp = b.v + orbit * cross(axis, lever);
+  const Vec3 pass = 0.5 * ((vb - vp) + (vr - vp));
   const double roll = norm(pass - dot(pass, n) * n);
   const double length = h.length_coef * sq;  // 2b at the elastic load
   const double relax = update_history && length > 0.0 ? 1.0 / (1.0 + roll * dt / length) : 1.0;
@@ -172,8 +182,9 @@ inline RaceContactResult3d race_contact_3d(const RaceContactModel3d &m, const Ri
   *hist.twist = twist;
   r.spin_moment = spin;
 
-  const Vec3 axis = ring.tilted ? ring.tilt.column(2) : Vec3{0.0, 0.0, 1.0};
-  r.ft_rolling = dot(ft, cross(axis, e_rho));
+  const Vec3 e_roll = cross(axis, e_rho);
+  r.ft_rolling = dot(ft, e_roll);
+  r.rolling_speed = std::fabs(dot(pass, e_roll));
   r.force_on_ball = -r.fn * n + ft;
   r.torque_on_ball = cross(lever, ft) + spin * n;
   r.torque_on_ring = cross(from_centre, -r.force_on_ball) - spin * n;
