@@ -209,6 +209,9 @@ void add_bearing_options(Args &a)
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");
   a.option("--beta", "DEG", "contact angle (degrees)");
+  a.option("--contact-angle", "DEG",
+           "contact angle (degrees), as --beta; default: run.json's (a model 3d run's measured "
+           "mean)");
   a.option("--factors", "LIST",
            "BPFO,BPFI,BSF,FTF (or BPFO,BPFI): the maker's defect frequencies as multiples of "
            "the shaft frequency, for a bearing in no catalog (they win over the geometry)");
@@ -246,7 +249,10 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     have = true;
     c.geometry_source = meta.path;
   }
-  const bool explicit_geom = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has("--beta");
+  if (a.has("--beta") && a.has("--contact-angle"))
+    throw Error("give the contact angle once: --beta or --contact-angle, not both");
+  const char *angle = a.has("--contact-angle") ? "--contact-angle" : "--beta";
+  const bool explicit_geom = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has(angle);
   if (explicit_geom) {
     if (!have && !(a.has("--nb") && a.has("--db") && a.has("--dp")))
       throw Error(
@@ -258,7 +264,7 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     }
     if (a.has("--db")) g.db = a.number("--db");
     if (a.has("--dp")) g.dp = a.number("--dp");
-    if (a.has("--beta")) g.contact_angle_deg = a.number("--beta");
+    if (a.has(angle)) g.contact_angle_deg = a.number(angle);
     if (have) g.name += " (modified)";
     have = true;
     c.geometry_source = "command line";

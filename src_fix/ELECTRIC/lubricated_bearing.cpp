@@ -224,7 +224,10 @@ void LubricatedBearing::break_down(LubricatedContact pair[2],
 void LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
                                  const double *g_dry)
 {
-  if (settings_.kernel == lub::BearingKernel::plain)
+  if (!geometry_ready_) set_geometry(context);
+  if (race_[0]->three_d())
+    evaluate_3d(context, gather, g_dry);
+  else if (settings_.kernel == lub::BearingKernel::plain)
     evaluate_with<lub::PlainKernel>(context, gather, g_dry);
   else
     evaluate_with<lub::LanesKernel>(context, gather, g_dry);
@@ -234,7 +237,6 @@ template <class Kernel>
 void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gather,
                                       const double *g_dry)
 {
-  if (!geometry_ready_) set_geometry(context);
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 

@@ -112,6 +112,10 @@ class LubricatedBearing : protected Pointers {
   void break_down(LubricatedContact pair[2],
                   const ohmdem::lubrication::ContactAdmittance film[2]) const;
   double ball_dry_conductance(const ResistanceContext &context, int i);
+  // Model 3d races (lubricated_bearing_3d.cpp): each contact its own effective radii, ellipse
+  // and entrainment speed at its contact angle (FixBearingRace::film_geometry_3d), its
+  // admittance from lub::contact_admittance; evaluate()'s records and sums as in model 2d.
+  void evaluate_3d(const ResistanceContext &context, bool gather, const double *g_dry);
 
   LubricationSettings settings_;
   double omega_ = 0;  // 2 pi fexc
