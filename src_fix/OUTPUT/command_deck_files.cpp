@@ -8,6 +8,7 @@
      deck_files lock FOLDER | unlock FOLDER   the output folder's lock
      deck_files hold FOLDER | release FOLDER  one process of the universe at a time in between
      deck_files exec PROGRAM ARG ...    a program run with these arguments
+     deck_files json FILE string|number KEY VALUE ...   a flat JSON object, written whole
 
    LIGGGHTS' `shell` hands any line but cd/mkdir/mv/rm/rmdir/putenv to sh, so a
    deck variable in it (a path, a table cell) could run commands. Here no word
@@ -32,6 +33,7 @@
 #include "error.h"
 #include "input.h"
 #include "variable.h"
+#include "writers/json_text.h"
 #include "writers/run_folder.h"
 
 extern char **environ;
@@ -42,7 +44,7 @@ namespace {
 
 const char *const kUsage =
     "deck_files: expects mkdir PATH..., copy FROM TO, restart FILE, lock FOLDER, unlock FOLDER, "
-    "hold FOLDER, release FOLDER or exec PROGRAM ARG...";
+    "hold FOLDER, release FOLDER, exec PROGRAM ARG... or json FILE string|number KEY VALUE ...";
 
 std::string host_name()
 {
@@ -96,6 +98,8 @@ void DeckFiles::command(int narg, char **arg)
     if (words.size() != 1) error->all(FLERR, "deck_files hold|release: expects one folder");
     if (root && what == "hold") message = ohmdem::hold_turn(words[0]);
     if (root && what == "release") ohmdem::release_turn(words[0]);
+  } else if (what == "json") {
+    if (root) message = write_json(narg - 1, arg + 1);
   } else if (what == "exec") {
     if (words.empty()) error->all(FLERR, "deck_files exec: expects a program and its arguments");
     if (root) message = run_program(words);
@@ -139,6 +143,34 @@ std::string DeckFiles::run_program(const std::vector<std::string> &argv)
                            std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1))
                               .c_str());
   return "";
+}
+
+// FILE, then TYPE KEY VALUE triples: one writer quotes every string and checks every number
+// (json_text.h); the file is replaced whole. A value v_NAME is the variable's value, whole.
+std::string DeckFiles::write_json(int narg, char **arg)
+{
+  if (narg < 1) return "json: expects FILE, then string|number KEY VALUE ...";
+  const std::string file = value_of(arg[0]);
+  ohmdem::json::Object object;
+  for (int i = 1; i < narg; i += 3) {
+    const std::string type = arg[i];
+    if (type != "string" && type != "number")
+      return "json " + file + ": expected string or number before a key, got '" + type + "'";
+    if (i + 2 >= narg) return "json " + file + ": " + type + " expects KEY VALUE";
+    const std::string key = arg[i + 1], value = value_of(arg[i + 2]);
+    try {
+      if (type == "string")
+        object.add_string(key, value);
+      else
+        object.add_number(key, value);
+    } catch (const ohmdem::json::JsonError &e) {
+      const std::string from = std::strncmp(arg[i + 2], "v_", 2) == 0
+                                   ? std::string(" (deck variable ") + (arg[i + 2] + 2) + ")"
+                                   : "";
+      return "json " + file + ": " + e.what() + from;
+    }
+  }
+  return ohmdem::replace_file(file, object.text() + "\n");
 }
 
 void DeckFiles::finish(std::string message)

@@ -33,6 +33,7 @@ class DeckFiles : protected Pointers {
   // Process 0's answer ("" or an error message) on every process; an error stops the run.
   void finish(std::string message);
   std::string run_program(const std::vector<std::string> &argv);
+  std::string write_json(int narg, char **arg);
 };
 
 }  // namespace LAMMPS_NS

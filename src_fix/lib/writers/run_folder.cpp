@@ -91,6 +91,28 @@ std::string copy_file(const std::string &from, const std::string &to)
   return "";
 }
 
+std::string replace_file(const std::string &path, const std::string &text)
+{
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return "cannot write " + path + ": " + why(errno);
+  std::size_t done = 0;
+  int err = 0;
+  while (done < text.size() && err == 0) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      err = n < 0 ? errno : ENOSPC;
+    else
+      done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err == 0 && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
+  if (err == 0) return "";
+  ::unlink(tmp.c_str());
+  return "cannot write " + path + ": " + why(err) + " (the previous file, if any, is kept)";
+}
+
 namespace {
 
 // The header of LIGGGHTS 3.8's write_restart: flag (int), then the value; flags 0..48 in

@@ -26,6 +26,10 @@ std::string make_folders(const std::string &path);
 // Copies FROM to TO (replaced whole: written beside it, then renamed).
 std::string copy_file(const std::string &from, const std::string &to);
 
+// Writes TEXT to PATH, replacing it whole: written beside it (PATH.tmpPID), then renamed, so
+// that PATH is never half-written; the message names PATH and the system's reason (ENOSPC).
+std::string replace_file(const std::string &path, const std::string &text);
+
 // A file written by LIGGGHTS 3.8's write_restart: it exists, is a regular file, and its
 // header can be read to its end marker (every section whole, the flags known ones). A file
 // cut anywhere before the end of its header, or not a restart file, is refused here:
