@@ -9,7 +9,10 @@
 // fails; valgrind reports the read). The executable defines these members itself, as it does
 // LAMMPS::post_create (app/ohmdem_styles.cpp): libliggghts calls them through the PLT, so these
 // definitions (exported with -rdynamic) are the ones used. Each does what LIGGGHTS' does, in
-// the same order and with the same messages, without the extra line.
+// the same order and with the same messages, without the extra line. Beyond LIGGGHTS: an error
+// raised on one process (Error::one) also reaches the world's log, from whichever process it
+// is (LIGGGHTS writes it to that process's screen stream only: lost with -screen none), and
+// every error's message is kept for run.json (app/run_status.h).
 #include <mpi.h>
 
 #include <cstdio>
@@ -21,6 +24,7 @@
 #include "fix.h"
 #include "lammps.h"
 #include "output.h"
+#include "run_status.h"
 #include "universe.h"
 
 using namespace LAMMPS_NS;
@@ -52,6 +56,7 @@ bool says_something(const char *str)
 // Called by every process of the universe: the message once, all files closed, no abort.
 void Error::universe_all(const char *file, int line, const char *str)
 {
+  ohmdem::note_error(str);
   MPI_Barrier(universe->uworld);
   if (universe->me == 0) {
     if (universe->uscreen) std::fprintf(universe->uscreen, "ERROR: %s (%s:%d)\n", str, file, line);
@@ -71,15 +76,18 @@ void Error::universe_all(const char *file, int line, const char *str)
 // Called by one process: the universe is aborted.
 void Error::universe_one(const char *file, int line, const char *str)
 {
-  if (universe->uscreen)
-    std::fprintf(universe->uscreen, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file,
-                 line);
+  ohmdem::note_error(str);
+  char text[1024];
+  std::snprintf(text, sizeof text, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file, line);
+  if (universe->uscreen) std::fputs(text, universe->uscreen);
+  if (universe->ulogfile) std::fputs(text, universe->ulogfile);
   MPI_Abort(universe->uworld, 1);
 }
 
 // Called by every process of one world.
 void Error::all(const char *file, int line, const char *str)
 {
+  ohmdem::note_error(str);
   MPI_Barrier(world);
   int me = 0;
   MPI_Comm_rank(world, &me);
@@ -95,7 +103,15 @@ void Error::one(const char *file, int line, const char *str)
 {
   int me = 0;
   MPI_Comm_rank(world, &me);
-  if (screen) std::fprintf(screen, "ERROR on proc %d: %s (%s:%d)\n", me, str, file, line);
+  ohmdem::note_error(str);
+  char text[1024];
+  std::snprintf(text, sizeof text, "ERROR on proc %d: %s (%s:%d)\n", me, str, file, line);
+  if (screen) std::fputs(text, screen);
+  // The world's log: process 0 holds it open; another process appends to it by its path.
+  if (logfile)
+    std::fputs(text, logfile);
+  else
+    ohmdem::append_to_log(text);
   if (universe->nworlds > 1 && universe->uscreen)
     std::fprintf(universe->uscreen, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file,
                  line);
@@ -105,6 +121,14 @@ void Error::one(const char *file, int line, const char *str)
 // A fix's error, named by its style and id; as all() otherwise.
 void Error::fix_error(const char *file, int line, Fix *fix, const char *style, const char *str)
 {
+  {
+    char text[1024];
+    if (says_something(str))
+      std::snprintf(text, sizeof text, "Fix %s (id %s): %s", style, fix->id, str);
+    else
+      std::snprintf(text, sizeof text, "Illegal fix %s (id %s) command", style, fix->id);
+    ohmdem::note_error(text);
+  }
   MPI_Barrier(world);
   int me = 0;
   MPI_Comm_rank(world, &me);
@@ -129,6 +153,15 @@ void Error::fix_error(const char *file, int line, Fix *fix, const char *str)
 // A compute's error, named by its style and id; as all() otherwise.
 void Error::compute_error(const char *file, int line, Compute *compute, const char *str)
 {
+  {
+    char text[1024];
+    if (says_something(str))
+      std::snprintf(text, sizeof text, "Compute %s (id %s): %s", compute->style, compute->id, str);
+    else
+      std::snprintf(text, sizeof text, "Illegal compute %s (id %s) command", compute->style,
+                    compute->id);
+    ohmdem::note_error(text);
+  }
   MPI_Barrier(world);
   int me = 0;
   MPI_Comm_rank(world, &me);

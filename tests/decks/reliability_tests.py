@@ -17,6 +17,11 @@ lost; doc/run_status.md).
                freed memory (app/liggghts_errors.cpp); the dynamic linker binds libliggghts'
                error members to the executable's (LD_DEBUG=bindings), which is what makes it so
                on every run, not only on the runs the tip would have come
+  error_one    an error raised on one process (LIGGGHTS' error->one: read_restart missing the
+               file of process 0, or of process 1 of 2) with -screen none: its ERROR line is in
+               the log and its message in run.json ("status": "failed", "error"); LIGGGHTS
+               writes it to the screen stream of that process only
+  log_full     -log /dev/full: exit 1 naming the log and the reason, the deck not run
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
 
@@ -195,6 +200,40 @@ def test_error_exit(a, work):
                   f"{len(ours)} of {len(ERROR_MEMBERS)}")
 
 
+def test_error_one(a, work, nprocs):
+    deck_file = os.path.join(a.src, "tests", "decks", "in.error_one")
+    for proc in range(nprocs):
+        out = os.path.join(work, f"one_{nprocs}_{proc}")
+        log = os.path.join(work, f"one_{nprocs}_{proc}.log")
+        cmd = [a.exe, "-in", deck_file, "-var", "out", out, "-var", "proc", str(proc),
+               "-screen", "none", "-log", log]
+        if nprocs > 1:
+            cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+        r = run(cmd, work)
+        text = open(log, errors="replace").read() if os.path.exists(log) else ""
+        want = f"ERROR on proc {proc}: Cannot open restart file {out}/part.{proc}"
+        check(r.returncode != 0 and want in text,
+              f"error_one: {nprocs} process(es), error on process {proc}: exit {r.returncode}, "
+              f"'{want}' in the log: {text.strip().splitlines()[-1:]}")
+        with open(os.path.join(out, "run.json")) as f:
+            m = json.load(f)
+        check(m.get("status") == "failed" and
+              m.get("error") == f"Cannot open restart file {out}/part.{proc}",
+              f"error_one: run.json status {m.get('status')}, error {m.get('error')!r}")
+
+
+def test_log_full(a, work):
+    if not os.path.exists("/dev/full"):
+        print("SKIPPED: no /dev/full on this system")
+        sys.exit(SKIP)
+    out = os.path.join(work, "logfull")
+    r = run(deck(a, "-var", "out", out, "-var", "tend", "2e-6", "-screen", "none") +
+            ["-log", "/dev/full"], work)
+    check(r.returncode == 1 and "the log file cannot be written: No space left on device" in
+          r.stdout and not os.path.exists(os.path.join(out, "signal.txt")),
+          f"log_full: exit {r.returncode}, the reason said, nothing run: {r.stdout.strip()[-200:]}")
+
+
 def test_post_full(a, work):
     sig = os.path.join(work, "signal.txt")
     with open(sig, "w") as f:
@@ -247,6 +286,9 @@ def main():
         {"full_disk": lambda: test_full_disk(a, work),
          "kill_resume": lambda: test_kill_resume(a, work),
          "error_exit": lambda: test_error_exit(a, work),
+         "error_one": lambda: test_error_one(a, work, 1),
+         "error_one_mpi": lambda: test_error_one(a, work, 2),
+         "log_full": lambda: test_log_full(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 

@@ -13,7 +13,8 @@
                in the working folder
   failed       unstable settings (dt 2e-5, a ring of 1e-9 kg, a ring damping of 1e9, a density
                of 1): fix bearing/race stops the run naming the cause (exit 1); run.json
-               "failed" with the time reached; the rows written before the failure are kept in
+               "failed" with the time reached and the error's message; the rows written before
+               the failure are kept in
                signal.txt, none of them garbage
   deck_errors  impossible deck variables stop before the run with a message naming the
                variable (exit 1)
@@ -126,6 +127,8 @@ def test_failed(a, work):
         check("ran away" in log and cause in log,
               f"failed {var}: the run stops saying the contacts ran away and '{cause}'")
         check(m["status"] == "failed", f"failed {var}: run.json status {m['status']}")
+        check("ran away" in m.get("error", "") and cause in m.get("error", ""),
+              f"failed {var}: run.json's error says why: {m.get('error', '')[:80]!r}...")
         # the step that failed is not written: the last row is the step before it
         dt = var.get("dt", 1e-6)
         check(0 < m["time_reached"] < 0.05 and
