@@ -18,6 +18,10 @@
                signal.txt, none of them garbage
   deck_errors  impossible deck variables stop before the run with a message naming the
                variable (exit 1)
+  step_counts  a run that cannot reach its tend in one run's steps (dt 1e-20), that takes no
+               step (tend below dt, or a restart less than a step before tend), or that writes
+               no row (nout beyond the run's steps, fresh or from a restart) stops before it
+               starts, naming the variable; signal.txt is not written
 
 Usage: run_status_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -188,6 +192,38 @@ def test_deck_errors(a, work):
         log = open(os.path.join(out, "log.txt"), errors="replace").read()
         check(r.returncode == 1 and f"ERROR: {msg}" in log,
               f"deck_errors: {var} -> exit {r.returncode}, '{msg}' in the log")
+
+
+def test_step_counts(a, work):
+    cases = [({"dt": 1e-20}, "deck variable dt: reaching tend = 0.02 s at dt = 1e-20 s takes "
+                             "2e+18 steps, more than one run takes (2147483647)"),
+             ({"tend": 1e-7}, "deck variable tend: 1e-07 s is below one time step (dt = 1e-6 s)"),
+             ({"nout": "1e9"}, "deck variable nout: signal.txt every 1e9 steps, but the run takes "
+                               "20000 steps to tend = 0.02 s: no row would be written")]
+    first = os.path.join(work, "first")
+    r = subprocess.run([a.exe, "-in", os.path.join(a.src, "tests", "decks", "in.restart_first"),
+                        "-var", "bearing_deck", os.path.join(a.src, "inputs", "bearing_6208",
+                                                             "in.bearing"),
+                        "-var", "out", first, "-var", "tend", "0.001", "-log", "none",
+                        "-screen", "none"], cwd=work)
+    check(r.returncode == 0, "step_counts: the first half of a restart")
+    restart = {"start": "restart", "restart_file": os.path.join(first, "half.restart"),
+               "restart_changes": "yes"}
+    cases += [({**restart, "tend": 0.0010000004},
+               "deck variable tend: 0.0010000004 s is less than one time step (dt = 1e-6 s) after "
+               "the time the run starts from, 0.001 s"),
+              # steps 1000 to 1500: no multiple of 800 (fix signal/table writes at those)
+              ({**restart, "tend": 0.0015, "nout": 800},
+               "deck variable nout: signal.txt every 800 steps, but the 500 steps from the "
+               "restart point to tend = 0.0015 s write no row")]
+    for var, msg in cases:
+        out = os.path.join(work, "err_" + "_".join(f"{k}{os.path.basename(str(v))}"
+                                                   for k, v in var.items()))
+        r = subprocess.run(command(a, out, **var), cwd=work, capture_output=True, text=True)
+        log = open(os.path.join(out, "log.txt"), errors="replace").read()
+        check(r.returncode == 1 and f"ERROR: {msg}" in log and
+              not os.path.exists(os.path.join(out, "signal.txt")),
+              f"step_counts: {var} -> exit {r.returncode}, '{msg}' in the log, no signal.txt")
 
 
 def main():
