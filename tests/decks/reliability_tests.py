@@ -21,6 +21,10 @@ lost; doc/run_status.md).
                file of process 0, or of process 1 of 2) with -screen none: its ERROR line is in
                the log and its message in run.json ("status": "failed", "error"); LIGGGHTS
                writes it to the screen stream of that process only
+  restart_full restart files written onto a full disk (a 64 kB tmpfs, filled after a first
+               restart): write_restart and the restart command's periodic files each stop the
+               run naming the file and the full file system; the earlier restart file is kept
+               byte for byte and no half-written file is left (needs mount: skipped otherwise)
   log_full     -log /dev/full: exit 1 naming the log and the reason, the deck not run
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
@@ -222,6 +226,46 @@ def test_error_one(a, work, nprocs):
               f"error_one: run.json status {m.get('status')}, error {m.get('error')!r}")
 
 
+def small_fs(work, name, size):
+    mnt = os.path.join(work, name)
+    os.makedirs(mnt)
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", mnt],
+                       capture_output=True, text=True)
+    if m.returncode != 0:
+        print(f"SKIPPED: {name} needs a small file system and mount is not allowed here "
+              f"({(m.stderr or m.stdout).strip()})")
+        sys.exit(SKIP)
+    return mnt
+
+
+def test_restart_full(a, work):
+    deck_file = os.path.join(a.src, "tests", "decks", "in.restart_full")
+    for mode in ("write", "periodic"):
+        mnt = small_fs(work, f"fs_{mode}", "64k")
+        try:
+            out, copy = os.path.join(mnt, "run"), os.path.join(work, f"copy_{mode}")
+            log = os.path.join(work, f"{mode}.log")
+            r = run([a.exe, "-in", deck_file, "-var", "out", out, "-var", "copy", copy,
+                     "-var", "mode", mode, "-screen", "none", "-log", log], work)
+            text = open(log, errors="replace").read()
+            target = os.path.join(out, "restart.a" if mode == "write" else "restart.b")
+            check(r.returncode == 1 and f"ERROR: restart file {target} was not written whole (its header is cut), its "
+                  "file system is full (0 bytes free): " in text,
+                  f"restart_full {mode}: exit {r.returncode}, the error names {target} and the "
+                  f"full file system: {[l for l in text.splitlines() if 'ERROR' in l][-1:]}")
+            with open(os.path.join(out, "restart.a"), "rb") as f, \
+                    open(os.path.join(copy, "restart.a"), "rb") as g:
+                kept, first = f.read(), g.read()
+            check(len(first) > 500 and kept == first,
+                  f"restart_full {mode}: restart.a kept byte for byte ({len(kept)} of "
+                  f"{len(first)} bytes)")
+            left = [f for f in os.listdir(out) if f.endswith(".writing")]
+            check(not left and (mode == "write" or not os.path.exists(target)),
+                  f"restart_full {mode}: no half-written file left ({left})")
+        finally:
+            subprocess.run(["umount", mnt])
+
+
 def test_log_full(a, work):
     if not os.path.exists("/dev/full"):
         print("SKIPPED: no /dev/full on this system")
@@ -289,6 +333,7 @@ def main():
          "error_one": lambda: test_error_one(a, work, 1),
          "error_one_mpi": lambda: test_error_one(a, work, 2),
          "log_full": lambda: test_log_full(a, work),
+         "restart_full": lambda: test_restart_full(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 
