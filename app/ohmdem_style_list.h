@@ -12,4 +12,5 @@
 #include "ELECTRIC/compute_network_contacts.h"
 #include "ELECTRIC/compute_network_resistance.h"
 #include "OUTPUT/command_deck_files.h"
+#include "OUTPUT/fix_run_record.h"
 #include "OUTPUT/fix_signal_table.h"

@@ -25,6 +25,11 @@ lost; doc/run_status.md).
                restart): write_restart and the restart command's periodic files each stop the
                run naming the file and the full file system; the earlier restart file is kept
                byte for byte and no half-written file is left (needs mount: skipped otherwise)
+  other_run    the resume of another run's restart: run A (F 320) writes restart.a/b; run B (F
+               200) into the same folder sets them aside (restart.a.previous, ...) as it starts;
+               continuing B from A's restart is refused naming restart_file, the other run and
+               the changed F, and leaves B's run.json and signal.txt as they were; with
+               restart_changes yes it runs and run.json records what changed
   log_full     -log /dev/full: exit 1 naming the log and the reason, the deck not run
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
@@ -266,6 +271,45 @@ def test_restart_full(a, work):
             subprocess.run(["umount", mnt])
 
 
+def test_other_run(a, work):
+    out = os.path.join(work, "shared")
+    base = ["-var", "out", out, "-screen", "none"]
+    r = run(deck(a, *base, "-var", "tend", "0.004", "-var", "restart_every", "1000"), work)
+    check(r.returncode == 0 and os.path.exists(os.path.join(out, "restart.b")),
+          f"other_run: run A (F 320) wrote its restart files (exit {r.returncode})")
+    r = run(deck(a, *base, "-var", "tend", "0.002", "-var", "F", "200", "-var", "restart_every",
+                 "0", "-log", os.path.join(work, "b.log")), work)
+    log = open(os.path.join(work, "b.log"), errors="replace").read()
+    left = sorted(f for f in os.listdir(out) if f.startswith("restart."))
+    check(r.returncode == 0 and left == ["restart.a.previous", "restart.b.previous"] and
+          "the previous run's restart.a, restart.b renamed" in log,
+          f"other_run: run B (F 200) into the same folder set run A's restart files aside: {left}")
+    with open(os.path.join(out, "run.json"), "rb") as f:
+        meta_b = f.read()
+    with open(os.path.join(out, "signal.txt"), "rb") as f:
+        signal_b = f.read()
+    resume = ["-var", "tend", "0.006", "-var", "F", "200", "-var", "start", "restart",
+              "-var", "restart_file", os.path.join(out, "restart.b.previous")]
+    r = run(deck(a, *base, *resume, "-log", os.path.join(work, "c.log")), work)
+    log = open(os.path.join(work, "c.log"), errors="replace").read()
+    want = ["deck variable restart_file", "it was written by run 1 of its folder",
+            "last run is run 2", "F 320 -> 200", "-var restart_changes yes"]
+    check(r.returncode == 1 and all(w in log for w in want),
+          f"other_run: continuing B from A's restart refused naming {want}: "
+          f"{[l for l in log.splitlines() if l.startswith('ERROR')][:1]}")
+    with open(os.path.join(out, "run.json"), "rb") as f, \
+            open(os.path.join(out, "signal.txt"), "rb") as g:
+        check(f.read() == meta_b and g.read() == signal_b,
+              "other_run: the refused resume left B's run.json and signal.txt as they were")
+    r = run(deck(a, *base, *resume, "-var", "restart_changes", "yes"), work)
+    m = json.load(open(os.path.join(out, "run.json")))
+    changed = m.get("restart_changes", "")
+    check(r.returncode == 0 and m["status"] == "finished" and "restart of run 1" in changed and
+          "F 320 -> 200" in changed,
+          f"other_run: with restart_changes yes it runs (exit {r.returncode}) and run.json says "
+          f"what changed: {changed!r}")
+
+
 def test_log_full(a, work):
     if not os.path.exists("/dev/full"):
         print("SKIPPED: no /dev/full on this system")
@@ -334,6 +378,7 @@ def main():
          "error_one_mpi": lambda: test_error_one(a, work, 2),
          "log_full": lambda: test_log_full(a, work),
          "restart_full": lambda: test_restart_full(a, work),
+         "other_run": lambda: test_other_run(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 

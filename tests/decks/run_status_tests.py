@@ -4,8 +4,9 @@
 
   finished     exit 0; run.json "status": "finished", "time_reached" = tend; no warning about
                the conducting path (the balls start exactly touching)
-  restart_geometry  a restart continued with another Nb, Db or race diameter is refused; another
-               speed is not
+  restart_geometry  a restart continued with another Nb, Db or race diameter is refused (even with
+               restart_changes yes); another speed is refused unless restart_changes yes, and
+               run.json then records the change
   conduction_lost  a path lost after it existed is warned at the 1st, 10th, 100th, ...
                evaluation without it
   interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
@@ -153,12 +154,17 @@ def test_restart_geometry(a, work):
     restart = os.path.join(out, "half.restart")
     cases = [({"Nb": 12}, "deck variable Nb: 12, but the restart file has 13 balls"),
              ({"Db": 0.0125}, "deck variables Db and rho: a ball of 0.0125 m"),
-             ({"Dext": 0.0735, "Dinn": 0.0483}, "the balls read from the restart file are up to"),
+             # the geometry cannot change even when the change is declared
+             ({"Dext": 0.0735, "Dinn": 0.0483, "restart_changes": "yes"},
+              "the balls read from the restart file are up to"),
              ({"tend": 0.0005}, "deck variable tend: 0.0005 s lies before the time the run "
                                 "starts from, 0.001 s"),
              ({"restart_file": os.path.join(work, "none.restart")},
               "deck variable restart_file: no file"),
-             ({"omega": 600}, None)]  # the operating point may change
+             # another operating point: refused unless the change is declared, then recorded
+             ({"omega": 600}, "deck variable restart_file: " + restart + ": its run had other "
+                              "parameters (the restart's -> this run's): omega_inner 500 -> 600"),
+             ({"omega": 600, "restart_changes": "yes"}, None)]
     for var, msg in cases:
         name = "_".join(f"{k}{os.path.basename(str(v))}" for k, v in var.items())
         cont = os.path.join(work, "cont_" + name)
@@ -166,7 +172,10 @@ def test_restart_geometry(a, work):
         r = subprocess.run(command(a, cont, **opts), cwd=work)
         log = open(os.path.join(cont, "log.txt"), errors="replace").read()
         if msg is None:
-            check(r.returncode == 0, f"restart_geometry: {var} continues (exit {r.returncode})")
+            changed = meta(cont).get("restart_changes", "")
+            check(r.returncode == 0 and "omega_inner 500 -> 600" in changed,
+                  f"restart_geometry: {var} continues (exit {r.returncode}), run.json records "
+                  f"restart_changes {changed!r}")
         else:
             check(r.returncode == 1 and msg in log,
                   f"restart_geometry: {var} -> exit {r.returncode}, '{msg}' in the log")

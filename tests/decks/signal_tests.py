@@ -16,6 +16,7 @@
 Usage: signal_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import argparse
+import json
 import os
 import subprocess
 import tempfile
@@ -47,8 +48,10 @@ def restart_pair(r, name, dt_second, **var):
                                                         "in.restart_first"),
                      bearing_deck=r.deck, tend=0.002, **var)
     # The second part continues into the same folder, from the restart file written there.
+    # another dt is another parameter: declared (restart_changes yes) when it differs
+    changes = {"restart_changes": "yes"} if dt_second != 1e-6 else {}
     r.run(f"{name}_split", tend=0.004, start="restart", dt=dt_second,
-          restart_file=os.path.join(split, "half.restart"), **var)
+          restart_file=os.path.join(split, "half.restart"), **changes, **var)
     return full, split
 
 
@@ -74,6 +77,9 @@ def test_restart_dt(r):
           max(abs(steps[i] - 2e-6 * (i + 1)) for i in range(len(steps))) < 1e-12,
           f"restart_dt: the second part goes on at the new step from 0.002 s "
           f"({len(second)} rows, last t = {second[-1]!r} s)")
+    with open(os.path.join(split, "run.json")) as f:
+        changed = json.load(f).get("restart_changes", "")
+    check("dt 1e-6 -> 2e-06" in changed, f"restart_dt: run.json records the new step: {changed!r}")
 
 
 def test_npy_equal(r, post):

@@ -215,6 +215,17 @@ void Object::add_number(const std::string &key, std::string_view value)
   add(key, std::move(text));
 }
 
+void Object::insert_string(const std::string &before, const std::string &key,
+                           std::string_view value)
+{
+  add_string(key, value);
+  auto member = members_.back();
+  members_.pop_back();
+  auto at = members_.begin();
+  while (at != members_.end() && at->first != before) ++at;
+  members_.insert(at, std::move(member));
+}
+
 std::string Object::text() const
 {
   std::string out = "{";

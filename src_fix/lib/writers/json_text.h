@@ -36,6 +36,8 @@ class Object {
   // Throws JsonError naming the key when it is given twice, or the value is refused.
   void add_string(const std::string &key, std::string_view value);
   void add_number(const std::string &key, std::string_view value);
+  // A string member placed before the member `before` (at the end when there is none).
+  void insert_string(const std::string &before, const std::string &key, std::string_view value);
   std::string text() const;  // the object, no line break
   const std::vector<std::pair<std::string, std::string>> &members() const { return members_; }
 

@@ -239,8 +239,13 @@ std::string read_whole(const std::string &path)
 
 }  // namespace
 
-std::string check_restart_file(const std::string &path)
+namespace {
+
+// check_restart_file, and where the fixes' sections start in the data read (`fixes_at`, with
+// the data in `kept`; npos when the file was too large to read back).
+std::string check_restart(const std::string &path, std::string *kept, std::size_t *fixes_at)
 {
+  if (fixes_at) *fixes_at = std::string::npos;
   // A multi-file restart (write_restart FILE.%): FILE.base holds the header and the fixes,
   // FILE.0 ... FILE.(P-1) each process's atoms.
   const std::size_t percent = path.find('%');
@@ -309,10 +314,53 @@ std::string check_restart_file(const std::string &path)
   // Between the header and the atoms: the types and force fields (their layout is the
   // styles'), then the fixes' sections, which must end exactly where the atoms start.
   bool fixes = false;
-  for (std::size_t p = b.pos; p + 12 <= atoms_start && !fixes; ++p)
-    fixes = fix_sections_end_at(data, p, atoms_start);
+  std::size_t p = b.pos;
+  for (; p + 12 <= atoms_start && !fixes; ++p) fixes = fix_sections_end_at(data, p, atoms_start);
   if (!fixes)
     return bad + "its fixes' sections are damaged (they do not end where the atoms start)";
+  if (fixes_at) *fixes_at = p - 1;
+  if (kept) *kept = data;
+  return "";
+}
+
+}  // namespace
+
+std::string check_restart_file(const std::string &path)
+{
+  return check_restart(path, nullptr, nullptr);
+}
+
+std::string restart_fix_state(const std::string &path, const std::string &style, std::string &state,
+                              bool &found)
+{
+  found = false;
+  state.clear();
+  std::string data;
+  std::size_t at = std::string::npos;
+  const std::string bad = check_restart(path, &data, &at);
+  if (!bad.empty() || at == std::string::npos) return bad;
+  // -1, the number of fixes, then each fix's ID, style, state size and state
+  Bytes b{data, at + 4};
+  int nfix = 0;
+  b.take(&nfix, 4);
+  auto text = [&b, &data]() {
+    int n = 0;
+    b.take(&n, 4);
+    const std::string t = data.substr(b.pos, static_cast<std::size_t>(n) - 1);  // less its NUL
+    b.pos += static_cast<std::size_t>(n);
+    return t;
+  };
+  for (int i = 0; i < nfix; ++i) {
+    text();  // the ID
+    const std::string fix_style = text();
+    int size = 0;
+    b.take(&size, 4);
+    if (fix_style == style && !found) {
+      state = data.substr(b.pos, static_cast<std::size_t>(size));
+      found = true;
+    }
+    b.pos += static_cast<std::size_t>(size);
+  }
   return "";
 }
 

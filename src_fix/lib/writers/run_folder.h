@@ -36,6 +36,12 @@ std::string replace_file(const std::string &path, const std::string &text);
 // read_restart itself loops forever on a cut header.
 std::string check_restart_file(const std::string &path);
 
+// The global state that the first fix of STYLE wrote into the restart file PATH (`found`
+// false when it has none, or the file is above the size check_restart_file reads); the
+// message of check_restart_file when the file is not whole.
+std::string restart_fix_state(const std::string &path, const std::string &style,
+                              std::string &state, bool &found);
+
 // The lock of an output folder: FOLDER/.ohmdem.lock holds "pid PID host HOST". A lock held by
 // a live process (kill(pid, 0)), or written on another host (its process cannot be checked),
 // refuses the folder; a lock of this process is taken again; a lock of a process that no
