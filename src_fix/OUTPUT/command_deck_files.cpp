@@ -58,6 +58,8 @@ std::string host_name()
   return name;
 }
 
+constexpr double kLockWait = 5.0;  // seconds
+
 bool process_alive(long pid)
 {
   return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
@@ -95,7 +97,9 @@ void DeckFiles::command(int narg, char **arg)
     if (words.size() != 1) error->all(FLERR, "deck_files lock|unlock: expects one folder");
     if (root && what == "unlock") ohmdem::unlock_folder(words[0], ::getpid(), host_name());
     if (root && what == "lock") {
-      const auto answer = ohmdem::lock_folder(words[0], ::getpid(), host_name(), process_alive);
+      // a holder that is ending (a run just stopped) is waited for, briefly
+      const auto answer =
+          ohmdem::lock_folder(words[0], ::getpid(), host_name(), process_alive, kLockWait);
       message = answer.error;
       if (!answer.note.empty()) error->warning(FLERR, ("deck_files: " + answer.note).c_str());
     }

@@ -370,7 +370,7 @@ std::string lock_path(const std::string &folder)
 }
 
 LockAnswer lock_folder(const std::string &folder, long pid, const std::string &host,
-                       const std::function<bool(long)> &alive)
+                       const std::function<bool(long)> &alive, double wait_seconds)
 {
   const std::string file = lock_path(folder);
   const std::string mine = "pid " + std::to_string(pid) + " host " + host + "\n";
@@ -404,9 +404,22 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
       return answer;
     }
     if (readable && alive(holder)) {
+      double waited = 0;
+      while (waited < wait_seconds && alive(holder)) {
+        ::usleep(100000);
+        waited += 0.1;
+      }
+      if (!alive(holder)) {
+        --attempt;  // it ended while we waited: its lock is stale now
+        continue;
+      }
+      char how_long[64] = "";
+      if (wait_seconds > 0)
+        std::snprintf(how_long, sizeof how_long, ", still running after %g s", wait_seconds);
       answer.error = "the output folder " + folder + " is in use by the live run of pid " +
-                     std::to_string(holder) + " on this host (" + host + ", " + file +
-                     "): give another -var out, or wait for that run to end";
+                     std::to_string(holder) + " on this host (" + host + ", " + file + how_long +
+                     "): give another -var out, or wait for that run to end (a run just "
+                     "stopped may take a moment to end: run again in a few seconds)";
       return answer;
     }
     // Stale (its process has ended) or unreadable (cut while written): replace it.

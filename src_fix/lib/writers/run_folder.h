@@ -50,8 +50,11 @@ struct LockAnswer {
   std::string error;  // "" when the lock is ours now
   std::string note;   // a stale lock replaced
 };
+// A live holder on this host is waited for up to `wait_seconds` (checked every 0.1 s): the
+// processes of a run just stopped with SIGTERM take a moment to end, and a resume started
+// right after would otherwise meet one of them.
 LockAnswer lock_folder(const std::string &folder, long pid, const std::string &host,
-                       const std::function<bool(long)> &alive);
+                       const std::function<bool(long)> &alive, double wait_seconds = 0);
 // Removes FOLDER's lock when it is PID's on HOST (another holder's lock is left alone).
 void unlock_folder(const std::string &folder, long pid, const std::string &host);
 std::string lock_path(const std::string &folder);
