@@ -38,15 +38,26 @@ bool says_something(const char *str)
 }
 
 // The end of an error raised by every process of one world (Error::all's, as LIGGGHTS orders
-// it): the output (dumps, restarts) closed, the world's files closed, MPI ended, exit 1; with
-// several worlds the universe is aborted instead.
-[[noreturn]] void end_world(LAMMPS *lmp)
+// it): the output (dumps, restarts) closed, the world's files closed, MPI ended, exit 1. With
+// several worlds (partitions) LIGGGHTS aborted the universe: one bad case of a sweep killed the
+// cases of every other partition. Here the world's processes leave alone: MPI_Finalize waits
+// for the other worlds to end theirs, and the universe's screen says which partition stopped.
+[[noreturn]] void end_world(LAMMPS *lmp, const char *str)
 {
+  Universe *u = lmp->universe;
+  if (u->nworlds > 1 && u->uscreen && str) {
+    int me = 0;
+    MPI_Comm_rank(lmp->world, &me);
+    if (me == 0)
+      std::fprintf(u->uscreen,
+                   "ERROR on partition %d: %s (its processes stop; the other partitions go on)\n",
+                   u->iworld + 1, str);
+    std::fflush(u->uscreen);
+  }
   delete lmp->output;  // LIGGGHTS owns it; its destructor closes dumps and restarts
   lmp->output = nullptr;
   if (lmp->screen && lmp->screen != stdout) std::fclose(lmp->screen);
   if (lmp->logfile) std::fclose(lmp->logfile);
-  if (lmp->universe->nworlds > 1) MPI_Abort(lmp->universe->uworld, 1);
   MPI_Finalize();
   std::exit(1);
 }
@@ -95,7 +106,7 @@ void Error::all(const char *file, int line, const char *str)
     if (screen) std::fprintf(screen, "ERROR: %s (%s:%d)\n", str, file, line);
     if (logfile) std::fprintf(logfile, "ERROR: %s (%s:%d)\n", str, file, line);
   }
-  end_world(lmp);
+  end_world(lmp, str);
 }
 
 // Called by one process of a world: the world (and the universe) is aborted.
@@ -112,6 +123,12 @@ void Error::one(const char *file, int line, const char *str)
     std::fputs(text, logfile);
   else
     ohmdem::append_to_log(text);
+  // A world of one process (a partition of a sweep) has no other process to wait for: it
+  // leaves alone, as after Error::all; a larger world must abort (its other processes may
+  // be waiting for this one in a collective).
+  int size = 1;
+  MPI_Comm_size(world, &size);
+  if (universe->nworlds > 1 && size == 1) end_world(lmp, str);  // run.json: at exit()
   if (universe->nworlds > 1 && universe->uscreen)
     std::fprintf(universe->uscreen, "ERROR on proc %d: %s (%s:%d)\n", universe->me, str, file,
                  line);
@@ -142,7 +159,7 @@ void Error::fix_error(const char *file, int line, Fix *fix, const char *style, c
                      line);
     }
   }
-  end_world(lmp);
+  end_world(lmp, str);
 }
 
 void Error::fix_error(const char *file, int line, Fix *fix, const char *str)
@@ -176,5 +193,5 @@ void Error::compute_error(const char *file, int line, Compute *compute, const ch
                      compute->id, file, line);
     }
   }
-  end_world(lmp);
+  end_world(lmp, str);
 }

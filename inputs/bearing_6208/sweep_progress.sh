@@ -5,8 +5,10 @@
 # a case run again replaces its line) and the sweep's progress is printed; `summary` prints
 # every case of ROOT/sweep_cases.csv that did not finish, by name.
 #   sweep_progress.sh ROOT NCASES start
-#   sweep_progress.sh ROOT NCASES CASE done|FAILED
+#   sweep_progress.sh ROOT NCASES CASE started|done|FAILED
 #   sweep_progress.sh ROOT NCASES summary
+# (`started`, silent, marks a case whose end is still to come: one that never ends, its
+# partition stopped by an engine error, is named by the summary.)
 # Partitions and array tasks end cases at the same time: the update and the count are made
 # under an exclusive lock of ROOT/.finished.lock (flock), so the counts never pass the table
 # and print in order.
@@ -24,7 +26,12 @@ t0=$(cat "$root/t0" 2>/dev/null || date +%s)
     failed=$(sed -n 's/ FAILED$//p' "$root/finished.txt" |
       awk 'BEGIN { ORS = "" } { if (NR > 1) print "; "; print }')
     failed_n=$(grep -c ' FAILED$' "$root/finished.txt")
-    echo "sweep: summary: $done_n of $ncases cases done, $failed_n FAILED${failed:+ ($failed)}, $((ncases - done_n - failed_n)) not finished, $(( $(date +%s) - t0 )) s elapsed"
+    started=$(sed -n 's/ started$//p' "$root/finished.txt" |
+      awk 'BEGIN { ORS = "" } { if (NR > 1) print "; "; print }')
+    nf=$((ncases - done_n - failed_n))
+    line="sweep: summary: $done_n of $ncases cases done, $failed_n FAILED${failed:+ ($failed)}"
+    line="$line, $nf not finished${started:+ (started, not ended: $started)}"
+    echo "$line, $(( $(date +%s) - t0 )) s elapsed"
     exit 0
   fi
   # the case's line replaced (the label holds no line break: cases.py refuses them)
@@ -32,5 +39,7 @@ t0=$(cat "$root/t0" 2>/dev/null || date +%s)
     "$root/finished.txt" > "$root/finished.txt.tmp$$"
   echo "$case $status" >> "$root/finished.txt.tmp$$"
   mv "$root/finished.txt.tmp$$" "$root/finished.txt"
-  echo "sweep: $(grep -c ' done$' "$root/finished.txt")/$ncases cases done, $(( $(date +%s) - t0 )) s elapsed (last: $case $status)"
+  [ "$status" = started ] && exit 0
+  done_n=$(grep -c ' done$' "$root/finished.txt")
+  echo "sweep: $done_n/$ncases cases done, $(( $(date +%s) - t0 )) s elapsed (last: $case $status)"
 ) 9>"$root/.finished.lock"

@@ -8,7 +8,9 @@ not leaking into the next; bad tables.
 cells: a cell without its deck variable's form (a size "2;touch x", a text size) is refused by
 `cases.py check` naming line, column, variable and form; in a partition sweep that case alone
 fails, named, the valid rows run and the summary names it. progress: a Slurm task run again
-keeps one line per case in finished.txt, its counter never passes the table.
+keeps one line per case in finished.txt, its counter never passes the table. engine_error: a
+value the engine refuses (F -5) on 2 partitions stops that partition alone: the other rows
+run, the terminal says which partition stopped and why, the summary names the case.
 Usage: sweep_table_tests.py partitions|slurm|reset|errors|cells|progress --exe OHMDEM --post POST
        --src DIR"""
 import argparse
@@ -273,10 +275,28 @@ def test_progress(ctx):
           f"progress: the counter never passes the table: {counts}")
 
 
+def test_engine_error(ctx):
+    table = write_table(ctx, "engine.csv", "F,size\n200,1\n-5,1\n300,1\n400,1\n")
+    root = os.path.join(ctx.wd, "engine")
+    rc, out = ctx.sweep(root, table, 2)
+    ran = [f for f in ("F_200_size_1", "F_300_size_1", "F_400_size_1")
+           if os.path.exists(os.path.join(root, f, "signal.txt"))]
+    check(rc != 0 and len(ran) == 3, f"engine_error: the valid rows ran on the other partition "
+          f"({ran}), the sweep exits non-zero ({rc})")
+    check(re.search(r"ERROR on partition \d: fix bearing/race: keyword 'force' expects the load "
+                    r"magnitude F > 0 \(N\), or v_NAME, got '-5' \(its processes stop; the "
+                    r"other partitions go on\)", out) is not None,
+          "engine_error: the terminal says which partition stopped and why")
+    check("sweep: summary: 3 of 4 cases done, 0 FAILED, 1 not finished (started, not ended: "
+          "F=-5,size=1)" in out,
+          f"engine_error: the summary names the case: "
+          f"{[l for l in out.splitlines() if 'summary' in l]}")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test", choices=["partitions", "slurm", "reset", "errors", "cells",
-                                    "progress"])
+                                    "progress", "engine_error"])
     p.add_argument("--exe", required=True)
     p.add_argument("--post", required=True)
     p.add_argument("--src", required=True)
@@ -284,7 +304,8 @@ def main():
     with tempfile.TemporaryDirectory(prefix="ohmdem_cases_") as wd:
         ctx = Ctx(a, wd)
         {"partitions": test_partitions, "slurm": test_slurm, "reset": test_reset,
-         "errors": test_errors, "cells": test_cells, "progress": test_progress}[a.test](ctx)
+         "errors": test_errors, "cells": test_cells, "progress": test_progress,
+         "engine_error": test_engine_error}[a.test](ctx)
     finish()
 
 
