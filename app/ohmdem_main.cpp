@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <string>
 
 #include "comm.h"
@@ -50,6 +51,31 @@ int log_write_error(LAMMPS &lammps, const char *what)
   return err;
 }
 
+// The same -var NAME given twice: LIGGGHTS keeps the first value and drops the second without
+// a word (a case table's column and a launcher's default, a script's -var and the user's).
+// LIGGGHTS' own reading of -var: NAME, a first value, then more values up to the next word
+// starting with '-'.
+void warn_repeated_variables(LAMMPS &lammps, int argc, char **argv)
+{
+  if (lammps.comm->me != 0) return;
+  std::map<std::string, std::string> first;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "-var") != 0 && std::strcmp(argv[i], "-v") != 0) continue;
+    if (i + 2 >= argc) break;
+    const std::string name = argv[i + 1], value = argv[i + 2];
+    const auto [it, fresh] = first.emplace(name, value);
+    if (!fresh) {
+      const std::string msg = "WARNING: -var " + name + " given twice: the first value ('" +
+                              it->second + "') is used, the second ('" + value +
+                              "') is ignored (LIGGGHTS keeps the first)\n";
+      for (FILE *f : {lammps.screen, lammps.logfile})
+        if (f) std::fputs(msg.c_str(), f);
+    }
+    i += 2;
+    while (i + 1 < argc && argv[i + 1][0] != '-') ++i;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char **argv)
@@ -81,6 +107,7 @@ int main(int argc, char **argv)
     LAMMPS lammps(argc, argv, MPI_COMM_WORLD);
     ohmdem::record_failure_at_exit(&lammps);
     ohmdem::learn_log_path(&lammps);
+    warn_repeated_variables(lammps, argc, argv);
     // The version in the log and as the deck variable ohmdem_version (run.json records it).
     {
       std::string words[3] = {"ohmdem_version", "string", ohmdem::version()};
