@@ -90,6 +90,13 @@ void FixBearingRace::init()
     error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
   find_state();
   find_defects(false);  // only the defects that can touch a race contact
+  // a cage's critical step, through the generic Fix interface (no header of the cage)
+  cage_step_ = cage_mass_ = nullptr;
+  for (int i = 0; i < modify->nfix && !cage_step_; ++i) {
+    int dim = 0;
+    cage_step_ = static_cast<const double *>(modify->fix[i]->extract("cage_critical_step", dim));
+    cage_mass_ = static_cast<const double *>(modify->fix[i]->extract("cage_mass", dim));
+  }
 }
 
 // Ball type and radius of the group, the materials, and the Hertz model built from them.
@@ -332,6 +339,8 @@ void FixBearingRace::check_runaway()
   s.ring_mass = load == Load::None || load == Load::Fixed ? 0.0 : settings_.ring_mass;
   s.ring_damping = settings_.ring_damp;
   s.balls = ncontacts_;
+  s.cage_step = cage_step_ ? *cage_step_ : 0.0;
+  s.cage_mass = cage_mass_ ? *cage_mass_ : 0.0;
   const std::string why = ohmdem::runaway(model_->hertz, runaway_, s);
   if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
 }

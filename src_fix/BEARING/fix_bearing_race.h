@@ -137,6 +137,8 @@ class FixBearingRace : public FixBearingBody {
   double ball_radius_ = 0;
   double ball_mass_ = 0;          // largest ball mass of the group (kg)
   ohmdem::RunawayWatch runaway_;  // the steps that passed the runaway check
+  // A cage's critical step and mass (fix bearing/cage's extract()), for the runaway's cause.
+  const double *cage_step_ = nullptr, *cage_mass_ = nullptr;
   int ball_type_ = 0;
 };
 

@@ -113,7 +113,8 @@ def test_failed(a, work):
     cases = [({"dt": 2e-5}, "sqrt(m/k)"),
              ({"Mring": 1e-9, "load": "radial"}, "M = 1e-09 kg"),
              ({"Cring": 1e9, "load": "radial"}, "2M/C"),
-             ({"rho": 1}, "m = 1.05e-06 kg")]
+             ({"rho": 1}, "m = 1.05e-06 kg"),
+             ({"mcage": 1e-9}, "the stiffest critical step, the cage on a ball sqrt(mu/k)")]
     for var, cause in cases:
         name = "_".join(f"{k}{v}" for k, v in var.items())
         out = os.path.join(work, "failed_" + name)
