@@ -163,7 +163,14 @@ void FixBearingRace::setup(int vflag)
     const std::string why = ohmdem::restart_geometry_changed(gap, settings_.radius, ball_radius_);
     if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
   }
-  if (reapply_restored_forces(FX, FY, TZ)) return;
+  if (reapply_restored_forces(FX, FY, TZ)) {
+    // the loaded contacts of the restored step, from the restored per-ball normal forces
+    int mine = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if ((atom->mask[i] & groupbit) && array_atom[i][FN] > 0.0) ++mine;
+    MPI_Allreduce(&mine, &loaded_, 1, MPI_INT, MPI_SUM, world);
+    return;
+  }
   post_force(vflag);
 }
 
@@ -313,6 +320,8 @@ void FixBearingRace::post_force(int)
   sum_fn_ = sum[2];
   torque_ = sum[3];
   ncontacts_ = static_cast<int>(all.size());
+  loaded_ = 0;  // touching with a load: a ball exactly touching (fn = 0) carries nothing
+  for (const auto &r : all) loaded_ += r.v[2] > 0.0;
   max_fn_ = 0.0;
   for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
   check_runaway();
@@ -384,7 +393,7 @@ double FixBearingRace::compute_vector(int n)
     case 4:
       return cy_;
     case 5:
-      return ncontacts_;
+      return loaded_;
     case 6:
       return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
     case 7:

@@ -125,6 +125,7 @@ class FixBearingRace : public FixBearingBody {
   // --- reactions of the last force evaluation (deterministic sums, see ordered_reduce.h)
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
   int ncontacts_ = 0;
+  int loaded_ = 0;  // contacts carrying a load (fn > 0): output 6
   int nmasked_ = 0;  // contacts whose point lies in a defect zone (no current)
   double defect_recess(int i, const ohmdem::BearingSurface &surface, bool &in_zone) const;
   bool defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const;  // pit_near
