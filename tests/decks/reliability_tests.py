@@ -30,6 +30,8 @@ lost; doc/run_status.md).
                continuing B from A's restart is refused naming restart_file, the other run and
                the changed F, and leaves B's run.json and signal.txt as they were; with
                restart_changes yes it runs and run.json records what changed
+  restart_quiet  a run continued from a restart with -screen none prints nothing on stdout
+               (LIGGGHTS' read_restart printed "version 3 8" with printf)
   log_full     -log /dev/full: exit 1 naming the log and the reason, the deck not run
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
@@ -310,6 +312,18 @@ def test_other_run(a, work):
           f"what changed: {changed!r}")
 
 
+def test_restart_quiet(a, work):
+    out = os.path.join(work, "quiet")
+    r = run(deck(a, "-var", "out", out, "-var", "tend", "2e-6", "-var", "restart_every", "1",
+                 "-screen", "none"), work)
+    r = subprocess.run(deck(a, "-var", "out", out, "-var", "tend", "4e-6", "-var", "start",
+                            "restart", "-var", "restart_file", os.path.join(out, "restart.b"),
+                            "-screen", "none"), cwd=work, capture_output=True, text=True)
+    check(r.returncode == 0 and r.stdout == "" and r.stderr == "",
+          f"restart_quiet: exit {r.returncode}, stdout {r.stdout[:60]!r}, stderr "
+          f"{r.stderr[:60]!r} (nothing with -screen none)")
+
+
 def test_log_full(a, work):
     if not os.path.exists("/dev/full"):
         print("SKIPPED: no /dev/full on this system")
@@ -379,6 +393,7 @@ def main():
          "log_full": lambda: test_log_full(a, work),
          "restart_full": lambda: test_restart_full(a, work),
          "other_run": lambda: test_other_run(a, work),
+         "restart_quiet": lambda: test_restart_quiet(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 
