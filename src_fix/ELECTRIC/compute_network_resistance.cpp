@@ -102,6 +102,7 @@ void ComputeNetworkResistance::define_lubricant_variables()
   const ohmdem::lubrication::LubricantState &s = lubricated_->state();
   define("lubricant_file", lubricated_->path());
   define("lubricant_path", lube_.network ? "network" : "closedform");
+  define("lubricant_kernel", ohmdem::lubrication::bearing_kernel_name(lube_.kernel));
   for (const auto &[name, value] : {std::pair<const char *, double>{"lubricant_eta0", s.eta},
                                     {"lubricant_alpha", s.alpha},
                                     {"lubricant_eps_r", s.eps_r},
@@ -206,10 +207,12 @@ void ComputeNetworkResistance::evaluate()
   report(r);
   const bool due = exports_->due(update->ntimestep);
   minima_step_ = impedance_step_ = -1;
-  if (lubricated_)
-    lube_result_ = lubricated_->evaluate(
+  if (lubricated_) {
+    lubricated_->evaluate(
         context_, due,
         last_path_ == closed_form_path_.get() ? closed_form_path_->ball_conductances() : nullptr);
+    lube_result_ = LubricatedResult();  // its values when read: lube_impedance(), minima()
+  }
   const bool draw_films = lubricated_ && due && exports_->draws();
   if (draw_films) lube_impedance();
   const VtkPartFn films = draw_films
