@@ -8,9 +8,11 @@
 // not finish says so in its run.json (run_status.h, doc/run_status.md).
 #include <mpi.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <string>
 
 #include "comm.h"
@@ -26,6 +28,55 @@ namespace SignalHandler = LAMMPS_NS::SignalHandler;
 namespace ohmdem {
 const char *version();  // app/ohmdem_version.cpp
 }
+
+namespace {
+
+// The log file takes what was written to it so far (a full disk, -log /dev/full: LIGGGHTS
+// never checks): 0, or the error of the failed write, on every process of the world.
+int log_write_error(LAMMPS &lammps, const char *what)
+{
+  int err = 0;
+  if (lammps.comm->me == 0 && lammps.logfile) {
+    errno = 0;
+    if (std::fflush(lammps.logfile) != 0 || std::ferror(lammps.logfile)) err = errno ? errno : EIO;
+  }
+  MPI_Bcast(&err, 1, MPI_INT, 0, lammps.world);
+  if (err && lammps.comm->me == 0) {
+    const std::string msg = std::string("ERROR: the log file cannot be written: ") +
+                            std::strerror(err) + " (" + what + ")\n";
+    std::fputs(msg.c_str(), stderr);
+    if (lammps.screen && lammps.screen != stdout && lammps.screen != stderr)
+      std::fputs(msg.c_str(), lammps.screen);
+  }
+  return err;
+}
+
+// The same -var NAME given twice: LIGGGHTS keeps the first value and drops the second without
+// a word (a case table's column and a launcher's default, a script's -var and the user's).
+// LIGGGHTS' own reading of -var: NAME, a first value, then more values up to the next word
+// starting with '-'.
+void warn_repeated_variables(LAMMPS &lammps, int argc, char **argv)
+{
+  if (lammps.comm->me != 0) return;
+  std::map<std::string, std::string> first;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "-var") != 0 && std::strcmp(argv[i], "-v") != 0) continue;
+    if (i + 2 >= argc) break;
+    const std::string name = argv[i + 1], value = argv[i + 2];
+    const auto [it, fresh] = first.emplace(name, value);
+    if (!fresh) {
+      const std::string msg = "WARNING: -var " + name + " given twice: the first value ('" +
+                              it->second + "') is used, the second ('" + value +
+                              "') is ignored (LIGGGHTS keeps the first)\n";
+      for (FILE *f : {lammps.screen, lammps.logfile})
+        if (f) std::fputs(msg.c_str(), f);
+    }
+    i += 2;
+    while (i + 1 < argc && argv[i + 1][0] != '-') ++i;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char **argv)
 {
@@ -51,9 +102,12 @@ int main(int argc, char **argv)
 
   MPI_Init(&argc, &argv);
   ohmdem::RunEnd end = ohmdem::RunEnd::Finished;
+  bool log_lost = false;
   {
     LAMMPS lammps(argc, argv, MPI_COMM_WORLD);
     ohmdem::record_failure_at_exit(&lammps);
+    ohmdem::learn_log_path(&lammps);
+    warn_repeated_variables(lammps, argc, argv);
     // The version in the log and as the deck variable ohmdem_version (run.json records it).
     {
       std::string words[3] = {"ohmdem_version", "string", ohmdem::version()};
@@ -64,11 +118,19 @@ int main(int argc, char **argv)
         if (lammps.logfile) std::fprintf(lammps.logfile, "ohmdem %s\n", ohmdem::version());
       }
     }
-    lammps.input->file();
-    if (SignalHandler::request_quit) end = ohmdem::RunEnd::Interrupted;
-    ohmdem::record_unfinished_run(&lammps, end);
+    // A log that cannot be written stops the run before it starts; one that fills during the
+    // run makes the exit status 1 (doc/run_status.md).
+    if (log_write_error(lammps, "the deck is not run") == 0) {
+      lammps.input->file();
+      if (SignalHandler::request_quit) end = ohmdem::RunEnd::Interrupted;
+      ohmdem::record_unfinished_run(&lammps, end);
+      if (log_write_error(lammps, "the log is incomplete") != 0) log_lost = true;
+    } else {
+      log_lost = true;
+    }
     ohmdem::disarm_failure_at_exit();
   }
   MPI_Finalize();
-  return ohmdem::exit_status(end);
+  const int status = ohmdem::exit_status(end);
+  return status == 0 && log_lost ? 1 : status;
 }

@@ -11,5 +11,7 @@
 #include "ELECTRIC/compute_contact_area.h"
 #include "ELECTRIC/compute_network_contacts.h"
 #include "ELECTRIC/compute_network_resistance.h"
+#include "OUTPUT/command_check_variables.h"
 #include "OUTPUT/command_deck_files.h"
+#include "OUTPUT/fix_run_record.h"
 #include "OUTPUT/fix_signal_table.h"

@@ -16,6 +16,7 @@ A bad table is an error naming the file, line and column: 'ERROR: ...' on stderr
 import argparse
 import csv
 import io
+import math
 import os
 import re
 import sys
@@ -26,6 +27,7 @@ RESERVED = {"out", "root", "here", "resume", "catalog", "bearing_deck", "cases",
             "sizes", "ncases"}
 DECK_INDEX = re.compile(r"\bvariable\s+([A-Za-z_][A-Za-z0-9_]*)\s+index\b")
 UNSET = "__unset__"
+NUMBER_CHARS = re.compile(r"[0-9+\-.eE]+\Z")
 
 
 class TableError(Exception):
@@ -142,6 +144,69 @@ def check_columns_in_deck(path, names, known, deck):
                              f"for every row")
 
 
+def deck_forms(deck):
+    """{NAME: FORM} of the deck's check_variables lines (doc/command_check_variables.md), the
+    forms the deck checks its variables against before LIGGGHTS parses them."""
+    try:
+        text = open(deck).read()
+    except OSError as e:
+        raise TableError(f"deck file {deck}: cannot be read ({e.strerror})")
+    forms, line = {}, ""
+    for raw in text.splitlines() + [""]:
+        body = raw.split("#", 1)[0].rstrip()
+        if line or body.lstrip().startswith("check_variables"):
+            line += " " + body.rstrip("&")
+            if body.endswith("&"):
+                continue
+            words = line.split()[1:]
+            forms.update(zip(words[0::2], words[1::2]))
+            line = ""
+    return forms
+
+
+def form_mismatch(form, value):
+    """"" when the cell has the deck variable's form, else what was expected and given: the
+    forms of src_fix/lib/writers/variable_forms.h, for a table's cells (a v_NAME cell names a
+    variable the sweep defines: its form alone is checked)."""
+    def plain(v, more=""):
+        return bool(v) and v[0] not in "\"'" and not any(
+            ord(c) < 32 or c in " \x7f" + more for c in v)
+    def number(v):
+        if not NUMBER_CHARS.match(v):
+            return False
+        try:
+            return math.isfinite(float(v))
+        except ValueError:
+            return False
+    names = {"number": "a number", "v_equal": "v_NAME of an equal-style variable",
+             "path": "a path without blanks or control characters",
+             "folder": "a folder without blanks, control characters, '*' or '%'",
+             "word": "a word without blanks or control characters"}
+    alts = form.split("|")
+    for a in alts:
+        if ((a == "number" and number(value)) or (a == "path" and plain(value)) or
+                (a == "folder" and plain(value, "*%")) or (a == "word" and plain(value)) or
+                (a == "v_equal" and re.fullmatch(r"v_[A-Za-z_][A-Za-z0-9_]*", value)) or
+                (a not in names and value == a)):
+            return ""
+    said = [names.get(a, a) for a in alts]
+    expected = said[0] if len(said) == 1 else ", ".join(said[:-1]) + " or " + said[-1]
+    return f"expected {expected}, got {value!r}"
+
+
+def cell_problems(path, names, rows, lines, forms):
+    """[(row index, message)] for the cells that lack their deck variable's form."""
+    out = []
+    for k, (cells, line) in enumerate(zip(rows, lines)):
+        for col, (name, cell) in enumerate(zip(names, cells), 1):
+            bad = form_mismatch(forms[name], cell) if name in forms else ""
+            if bad:
+                out.append((k, f"{path}:{line}: column {col} ({name}): deck variable {name}: "
+                               f"{bad}"))
+                break
+    return out
+
+
 def write_atomic(path, text):
     """Every partition writes the same file: a whole file, never a half-written one."""
     tmp = f"{path}.{os.getpid()}.tmp"
@@ -186,9 +251,13 @@ def cmd_grid(a):
 
 
 def cmd_check(a):
-    names, rows, _ = read_table(a.table)
+    names, rows, lines = read_table(a.table)
     if a.deck:
         check_columns_in_deck(a.table, names, deck_variables(a.deck, a.catalog), a.deck)
+        bad = cell_problems(a.table, names, rows, lines, deck_forms(a.deck))
+        if bad:
+            raise TableError("; ".join(m for _, m in bad) +
+                             f" ({len(bad)} of {len(rows)} cases; the others are valid)")
     print(len(rows))
 
 
@@ -245,7 +314,7 @@ def cmd_sweep_init(a):
     probing which deck variables the sweep fixes for every case."""
     try:
         if a.table != "none":
-            names, rows, _ = read_table(a.table)
+            names, rows, lines = read_table(a.table)
             source = a.table
         else:
             sizes = a.sizes
@@ -253,14 +322,21 @@ def cmd_sweep_init(a):
                 raise TableError(f"-var ncases {a.ncases} but -var sizes has {len(sizes)} values "
                                  f"({' '.join(sizes)})")
             names, rows = ["size"], [[s] for s in sizes]
+            lines = list(range(1, len(rows) + 1))
             source = "-var sizes"
         known = deck_variables(a.deck, a.catalog)
         check_columns_in_deck(source, names, known, a.deck)
+        # A cell without its variable's form fails its case alone (the others run).
+        invalid = cell_problems(source, names, rows, lines, deck_forms(a.deck))
     except TableError as e:
         print(f"ERROR: {e}", file=sys.stderr)
         lmp_error(a.lmp, str(e), "sweep_case_table_invalid")
         return
     write_sweep_table(a.root, names, rows)
+    write_atomic(os.path.join(a.root, ".sweep_invalid"),
+                 "".join(f"{k + 1}\t{m}\n" for k, m in invalid))
+    for _, m in invalid:
+        print(f"ERROR: {m}: that case fails, the others run", file=sys.stderr)
     probe = sorted(known - set(names) - RESERVED)
     out = [f"variable sweep_n equal {len(rows)}",
            "variable case universe " + " ".join(str(i) for i in range(1, len(rows) + 1))]
@@ -286,16 +362,27 @@ def cmd_sweep_common(a):
             unset.append(m.group(1))
     names, rows, _ = read_table(sweep_table_path(a.root), sweep_copy=True)
     names = names[1:]  # the 'case' column is the folder
+    invalid = {}
+    try:
+        for line in open(os.path.join(a.root, ".sweep_invalid")):
+            k, _, why = line.rstrip("\n").partition("\t")
+            invalid[int(k)] = why
+    except OSError:
+        pass
     for k, row in enumerate(rows, 1):
         folder, cells = row[0], row[1:]
         out = [f"variable {n} delete" for n in unset]
         for n, v in zip(names, cells):
             out += [f"variable {n} delete", f'variable {n} index "{v}"']
         size = cells[names.index("size")] if "size" in names else 1
+        why = invalid.get(k, "").replace('"', "`")
         out += [f"variable out string {os.path.join(a.root, folder)}",
                 f'variable case_label string "{label_of(names, cells)}"',
                 # the defect size (degrees) for in.sweep's check; 1 without a size column
-                f"variable case_size string {size}"]
+                f'variable case_size string "{size}"',
+                # a cell without its deck variable's form: in.sweep fails the case alone
+                f"variable case_invalid string {1 if k in invalid else 0}",
+                f'variable case_invalid_why string "{why}"']
         write_atomic(os.path.join(a.root, f".sweep_case_{k}.lmp"), "\n".join(out) + "\n")
 
 

@@ -84,9 +84,14 @@ first=$((task * K))
 for ((i = first; i < first + K && i < ncases; i++)); do
   mapfile -t spec < <($CASES_PY args "$TABLE" "$i")
   folder=${spec[0]} label=${spec[1]}
-  vars=()  # the row first: of two -var of one name, LIGGGHTS keeps the first
-  for line in "${spec[@]:2}"; do vars+=(-var "${line%% *}" "${line#* }"); done
-  vars+=(-var tend "$TEND" -var defect "$DEFECT")
+  vars=()  # the row's, then TEND and DEFECT for what the row does not give (each -var once)
+  given=" "
+  for line in "${spec[@]:2}"; do
+    vars+=(-var "${line%% *}" "${line#* }")
+    given+="${line%% *} "
+  done
+  [[ $given == *" tend "* ]] || vars+=(-var tend "$TEND")
+  [[ $given == *" defect "* ]] || vars+=(-var defect "$DEFECT")
   out=$ROOT/$folder
   mkdir -p "$out"
   # Resume: in.bearing skips the case when its run.done.json has the same parameters; a run
@@ -101,4 +106,5 @@ for ((i = first; i < first + K && i < ncases; i++)); do
     sh "$DECK/sweep_progress.sh" "$ROOT" "$ncases" "$label" FAILED
   fi
 done
+sh "$DECK/sweep_progress.sh" "$ROOT" "$ncases" summary
 [ "$failed" -eq 0 ] || fail "task $task: $failed of its cases failed"

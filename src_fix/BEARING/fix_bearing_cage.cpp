@@ -9,7 +9,9 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,7 @@
 #include "comm.h"
 #include "common/constants.h"
 #include "contact/cage_contact.h"
+#include "contact/runaway.h"
 #include "error.h"
 #include "fix_property_atom.h"
 #include "modify.h"
@@ -139,6 +142,15 @@ void FixBearingCage::build_model()
   }
   check_common_axis(pitch_radius_);
   check_common_model();
+  {  // the critical step of a ball on a pocket wall (reported when the contacts run away)
+    double m = 0, ball = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if (atom->mask[i] & groupbit) m = std::max(m, atom->rmass[i]);
+    MPI_Allreduce(&m, &ball, 1, MPI_DOUBLE, MPI_MAX, world);
+    const double cage = pitch_radius_ > 0 ? inertia_ / (pitch_radius_ * pitch_radius_) : 0.0;
+    const double mu = cage > 0 && ball > 0 ? cage * ball / (cage + ball) : 0.0;
+    critical_step_ = ohmdem::hertz_critical_step(model_->hertz, mu, 1.0);
+  }
   const double spacing = 2.0 * ohmdem::kPi * pitch_radius_ / npockets_;
   if (2.0 * (rg + clearance_) >= spacing)
     error->fix_error(FLERR, this,
@@ -366,4 +378,12 @@ double FixBearingCage::memory_usage()
   // Per-atom state lives in the fix property/atom, which reports its own.
   return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage() +
                              (pocket_cos_.capacity() + pocket_sin_.capacity()) * sizeof(double));
+}
+
+void *FixBearingCage::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (std::strcmp(name, "cage_critical_step") == 0) return &critical_step_;
+  if (std::strcmp(name, "cage_mass") == 0) return &mass_;
+  return nullptr;
 }

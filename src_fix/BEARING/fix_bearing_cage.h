@@ -41,6 +41,8 @@ class FixBearingCage : public FixBearingBody {
   void restart(char *) override;
   double compute_vector(int) override;
   double memory_usage() override;
+  // "cage_critical_step" (s) and "cage_mass" (kg): for the races' runaway message.
+  void *extract(const char *name, int &dim) override;
 
   double angle() const { return angle_; }
   double omega() const { return omega_; }
@@ -86,6 +88,9 @@ class FixBearingCage : public FixBearingBody {
   ohmdem::OrderedGather<3> gather_;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;
+  // sqrt(mu/k) of a ball on a pocket wall at 1 N, mu the reduced mass of the cage (as a mass at
+  // the pitch radius) and the ball: its critical step, set with the model
+  double critical_step_ = 0;
 
   // --- model 3d (fix_bearing_cage_3d.cpp)
   void post_force_3d();

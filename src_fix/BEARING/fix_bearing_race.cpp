@@ -98,6 +98,13 @@ void FixBearingRace::init()
     error->fix_error(FLERR, this, "requires atom_style sphere (radius, rmass, omega, torque)");
   find_state();
   find_defects(false);  // only the defects that can touch a race contact
+  // a cage's critical step, through the generic Fix interface (no header of the cage)
+  cage_step_ = cage_mass_ = nullptr;
+  for (int i = 0; i < modify->nfix && !cage_step_; ++i) {
+    int dim = 0;
+    cage_step_ = static_cast<const double *>(modify->fix[i]->extract("cage_critical_step", dim));
+    cage_mass_ = static_cast<const double *>(modify->fix[i]->extract("cage_mass", dim));
+  }
 }
 
 // Ball type and radius of the group, the materials, and the Hertz model built from them.
@@ -166,7 +173,14 @@ void FixBearingRace::setup(int vflag)
     const std::string why = ohmdem::restart_geometry_changed(gap, settings_.radius, ball_radius_);
     if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
   }
-  if (three_d() ? reapply_restored_forces_3d() : reapply_restored_forces(FX, FY, TZ)) return;
+  if (three_d() ? reapply_restored_forces_3d() : reapply_restored_forces(FX, FY, TZ)) {
+    // the loaded contacts of the restored step, from the restored per-ball normal forces
+    int mine = 0;
+    for (int i = 0; i < atom->nlocal; ++i)
+      if ((atom->mask[i] & groupbit) && array_atom[i][FN] > 0.0) ++mine;
+    MPI_Allreduce(&mine, &loaded_, 1, MPI_INT, MPI_SUM, world);
+    return;
+  }
   post_force(vflag);
 }
 
@@ -330,6 +344,8 @@ void FixBearingRace::post_force(int)
   sum_fn_ = sum[2];
   torque_ = sum[3];
   ncontacts_ = static_cast<int>(all.size());
+  loaded_ = 0;  // touching with a load: a ball exactly touching (fn = 0) carries nothing
+  for (const auto &r : all) loaded_ += r.v[2] > 0.0;
   max_fn_ = 0.0;
   for (const auto &r : all) max_fn_ = std::max(max_fn_, r.v[2]);
   check_runaway();
@@ -356,6 +372,8 @@ void FixBearingRace::check_runaway()
   s.ring_mass = load == Load::None || load == Load::Fixed ? 0.0 : settings_.ring_mass;
   s.ring_damping = settings_.ring_damp;
   s.balls = ncontacts_;
+  s.cage_step = cage_step_ ? *cage_step_ : 0.0;
+  s.cage_mass = cage_mass_ ? *cage_mass_ : 0.0;
   const std::string why = ohmdem::runaway(model_->hertz, runaway_, s);
   if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
 }
@@ -400,7 +418,7 @@ double FixBearingRace::compute_vector(int n)
     case 4:
       return cy_;
     case 5:
-      return ncontacts_;
+      return loaded_;
     case 6:
       return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
     case 7:

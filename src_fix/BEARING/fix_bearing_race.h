@@ -151,6 +151,7 @@ class FixBearingRace : public FixBearingBody {
   // --- reactions of the last force evaluation (deterministic sums, see ordered_reduce.h)
   double sum_fn_ = 0, torque_ = 0, fx_ = 0, fy_ = 0, max_fn_ = 0;
   int ncontacts_ = 0;
+  int loaded_ = 0;  // contacts carrying a load (fn > 0): output 6
   int nmasked_ = 0;  // contacts whose point lies in a defect zone (no current)
   double defect_recess(int i, const ohmdem::BearingSurface &surface, bool &in_zone) const;
   bool defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const;  // pit_near
@@ -163,6 +164,8 @@ class FixBearingRace : public FixBearingBody {
   double ball_radius_ = 0;
   double ball_mass_ = 0;          // largest ball mass of the group (kg)
   ohmdem::RunawayWatch runaway_;  // the steps that passed the runaway check
+  // A cage's critical step and mass (fix bearing/cage's extract()), for the runaway's cause.
+  const double *cage_step_ = nullptr, *cage_mass_ = nullptr;
   int ball_type_ = 0;
 
   // --- model 3d (fix_bearing_race_3d.cpp): the ring as a rigid body in space

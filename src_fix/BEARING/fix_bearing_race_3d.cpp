@@ -260,8 +260,10 @@ void FixBearingRace::post_force_3d()
   ncontacts_ = static_cast<int>(all.size()) - static_cast<int>(sum[ROFF]);
   alpha_mean_ = ncontacts_ > 0 ? sum[RALPHA] / ncontacts_ : 0.0;
   max_fn_ = alpha_max_ = 0.0;
+  loaded_ = 0;  // touching with a load: a ball exactly touching (fn = 0) carries nothing
   double edge = 0.0;
   for (const auto &r : all) {
+    loaded_ += r.v[RFN] > 0.0;
     max_fn_ = std::max(max_fn_, r.v[RFN]);
     alpha_max_ = std::max(alpha_max_, r.v[RALPHA]);
     edge = std::max(edge, r.v[REDGE]);

@@ -238,7 +238,23 @@ void ComputeNetworkResistance::evaluate()
 
 void ComputeNetworkResistance::report(const PathResult &r)
 {
-  const double resistance = r.resistance;
+  // The electrodes touch, and the model gives a contact spot no resistance (eq1: conduction
+  // inside particles only): a short circuit, R = 0, said once; not "no conducting path".
+  const double resistance = r.shorts > 0 ? 0.0 : r.resistance;
+  if (r.shorts > 0 && !warned_short_ && comm->me == 0) {
+    const auto atom_text = [](std::int64_t tag) {
+      return tag > 0 ? "atom " + std::to_string(tag) : std::string("a race");
+    };
+    error->warning(
+        FLERR,
+        ("compute network/resistance: the electrodes touch: " + std::to_string(r.shorts) +
+         " contact(s) join them directly (" + atom_text(r.short_tags[0]) + " and " +
+         atom_text(r.short_tags[1]) +
+         "), and model eq1 gives a contact spot no resistance: R = 0, a short circuit (model "
+         "holm or eq1+holm adds the spots' constriction)")
+            .c_str());
+  }
+  if (r.shorts > 0) warned_short_ = true;
   result_[0] = resistance;
   result_[1] = context_.current;
   result_[2] = resistance * context_.current;

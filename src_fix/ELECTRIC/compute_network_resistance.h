@@ -90,6 +90,7 @@ class ComputeNetworkResistance : public Compute {
   bigint impedance_step_ = -1;  // step whose lube_result_ holds the impedance (lube_impedance())
   double result_[8] = {0, 0, 0, 0, 0, 0, 0, 0};
   bool warned_no_path_ = false;
+  bool warned_short_ = false;  // the electrodes touch (said once)
   bool had_path_ = false;           // a conducting path existed at some evaluation
   long long lost_evaluations_ = 0;  // evaluations without a path after one existed
   int nmax_ = 0;

@@ -10,6 +10,7 @@
 #ifndef OHMDEM_STYLE_RESISTANCE_PATH_H
 #define OHMDEM_STYLE_RESISTANCE_PATH_H
 
+#include <cstdint>
 #include <vector>
 
 #include "conduction/contact_flows.h"
@@ -23,6 +24,10 @@ struct PathResult {
   int dropped = 0;        // floating nodes dropped
   int iterations = 0;     // of an iterative solver, 0 otherwise
   double residual = 0;    // its relative residual
+  // contacts joining the two electrodes directly where the model gives them no resistance
+  // (NetworkBuild::electrode_shorts), and the first one's atoms
+  int shorts = 0;
+  std::int64_t short_tags[2] = {0, 0};
 };
 
 class ResistancePath {

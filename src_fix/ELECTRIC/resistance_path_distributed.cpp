@@ -162,6 +162,13 @@ bool DistributedNetworkPath::evaluate(double * /*phi*/, PathResult &result)
                        .c_str());
   result = PathResult{s.resistance, static_cast<int>(contacts), static_cast<int>(s.floating_nodes),
                       s.iterations, s.relative_residual};
+  long long shorts[3] = {built_.electrode_shorts, built_.short_tags[0], built_.short_tags[1]};
+  long long all[3] = {0, 0, 0};
+  MPI_Allreduce(&shorts[0], &all[0], 1, MPI_LONG_LONG, MPI_SUM, world);
+  MPI_Allreduce(&shorts[1], &all[1], 2, MPI_LONG_LONG, MPI_MAX, world);
+  result.shorts = static_cast<int>(all[0]);
+  result.short_tags[0] = all[1];
+  result.short_tags[1] = all[2];
   return true;
 }
 

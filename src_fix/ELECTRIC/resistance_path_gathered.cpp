@@ -66,6 +66,9 @@ bool GatheredNetworkPath::evaluate(double *phi, PathResult &result)
   const ohmdem::NetworkSolution sol = net.solve(context_.current);
   result = PathResult{sol.resistance, built_.conducting_contacts, sol.floating_nodes_dropped,
                       sol.iterations, sol.relative_residual};
+  result.shorts = built_.electrode_shorts;
+  result.short_tags[0] = built_.short_tags[0];
+  result.short_tags[1] = built_.short_tags[1];
 
   // Per-atom potential: mean over the particle's contact nodes (0 without a contact).
   const auto &spots = built_.spots;

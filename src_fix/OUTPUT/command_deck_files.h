@@ -19,6 +19,7 @@ CommandStyle(deck_files,DeckFiles)
 #include <vector>
 
 #include "pointers.h"
+#include "writers/json_text.h"
 
 namespace LAMMPS_NS {
 
@@ -33,6 +34,13 @@ class DeckFiles : protected Pointers {
   // Process 0's answer ("" or an error message) on every process; an error stops the run.
   void finish(std::string message);
   std::string run_program(const std::vector<std::string> &argv);
+  std::string write_json(int narg, char **arg);
+  std::string check_continued_run(const std::string &file, const char *restart_word,
+                                  const char *changes_word, ohmdem::json::Object &object);
+  void share_changes();
+  std::string begin_run(const std::vector<std::string> &words);
+  std::string changed_;  // what a continued run changed (process 0)
+  int nchanged_ = 0;
 };
 
 }  // namespace LAMMPS_NS

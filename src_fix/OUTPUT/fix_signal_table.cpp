@@ -9,6 +9,8 @@
 
 #include <mpi.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -99,6 +101,7 @@ void FixSignalTable::parse(int narg, char **arg)
     }
     values_.push_back(value);
     columns_.push_back(w);
+    values_text_.push_back(w);
   }
   bool have_file = false;
   while (!a.done()) {
@@ -296,6 +299,7 @@ void FixSignalTable::end_of_step()
     row_[i] = sum;
   }
   modify->addstep_compute(update->ntimestep + nevery);
+  refuse_nan();
   if (table_) {
     try {
       table_->row(row_.data());
@@ -303,6 +307,33 @@ void FixSignalTable::end_of_step()
       error->one(FLERR, ("fix signal/table: " + std::string(e.what())).c_str());
     }
   }
+}
+
+// A NaN is never written into the signal: the run stops naming the column (R = inf, no
+// conducting path, is a value; NaN is the arithmetic of inputs outside the laws' range).
+// The values are global, the same on every process; the check is reduced all the same, so
+// that every process stops together.
+void FixSignalTable::refuse_nan()
+{
+  int bad = -1;
+  for (std::size_t i = 0; i < row_.size() && bad < 0; ++i)
+    if (std::isnan(row_[i])) bad = static_cast<int>(i);
+  if (comm->nprocs > 1) {
+    int any = -1;
+    MPI_Allreduce(&bad, &any, 1, MPI_INT, MPI_MAX, world);
+    bad = any;
+  }
+  if (bad < 0) return;
+  char when[96];
+  std::snprintf(when, sizeof when, "t = %.9g s (step " BIGINT_FORMAT ")", simulated_time(),
+                update->ntimestep);
+  const std::string what = columns_[bad] == values_text_[bad]
+                               ? "'" + columns_[bad] + "'"
+                               : "'" + columns_[bad] + "' (" + values_text_[bad] + ")";
+  error->all(FLERR, ("fix signal/table: column " + what + " is not a number (NaN) at " + when +
+                     ": the row is not written (the rows before it are kept); check the inputs "
+                     "of what the column reads against their ranges")
+                        .c_str());
 }
 
 void FixSignalTable::post_run()

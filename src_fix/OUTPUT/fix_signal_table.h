@@ -56,12 +56,14 @@ class FixSignalTable : public Fix {
 
   void parse(int narg, char **arg);
   void open_table();
+  void refuse_nan();  // stops the run when a value of the row is NaN
   double simulated_time();
   void resolve(Term &t);
   double evaluate(const Term &t);
 
   std::vector<Value> values_;
   std::vector<std::string> columns_;
+  std::vector<std::string> values_text_;  // each value as written in the command
   std::vector<double> row_;
   std::string path_;
   enum class Append { Auto, Yes, No } append_ = Append::Auto;

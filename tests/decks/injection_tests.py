@@ -11,6 +11,9 @@ created. The runs themselves may finish or stop with an error; they never run th
   study    the study drivers: no shell=True / os.system / os.popen in studies/ and
            inputs/cluster/, and studies/common.py's run() with the forms in its values
   static   no `shell` line with a variable in the decks (the commands use deck_files)
+  run_json a lubricant path holding a double quote, and one in a folder named
+           x","omega_inner":5000,"y":" : run.json stays valid JSON, the path one string value,
+           omega_inner once and the run's own (deck_files json writes every string)
 
 Usage: injection_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -170,9 +173,34 @@ def test_static(a, work):
                       f"{line.strip()}")
 
 
+def test_run_json(a, work):
+    import json
+    import shutil
+    vg68 = os.path.join(a.src, "inputs", "lubricants", "VG68")
+    for name, folder in (("quote", 'q"d'), ("key", 'x","omega_inner":5000,"y":"'),
+                         ("backslash", "b\\s")):
+        os.makedirs(os.path.join(work, folder), exist_ok=True)
+        shutil.copy(vg68, os.path.join(work, folder, "oil"))
+        path = "./" + folder + "/oil"
+        out = "json_" + name
+        r = run(deck(a, work, out=out, lubricant=path), work)
+        try:
+            with open(os.path.join(work, out, "run.json")) as f:
+                pairs = json.load(f, object_pairs_hook=lambda p: p)
+        except (OSError, ValueError) as e:
+            pairs = []
+            print(f"note: run_json {name}: {e}")
+        omegas = [v for k, v in pairs if k == "omega_inner"]
+        keys = [k for k, _ in pairs]
+        check(r.returncode == 0 and omegas == [500] and len(keys) == len(set(keys)) and
+              dict(pairs).get("lubricant") == path,
+              f"run_json: lubricant {path!r}: exit {r.returncode}, valid run.json, omega_inner "
+              f"{omegas}, the path one value ({dict(pairs).get('lubricant')!r})")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("test", choices=["deck", "sweep", "slurm", "study", "static"])
+    p.add_argument("test", choices=["deck", "sweep", "slurm", "study", "static", "run_json"])
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
     a = p.parse_args()

@@ -17,6 +17,22 @@ lost; doc/run_status.md).
                freed memory (app/liggghts_errors.cpp); the dynamic linker binds libliggghts'
                error members to the executable's (LD_DEBUG=bindings), which is what makes it so
                on every run, not only on the runs the tip would have come
+  error_one    an error raised on one process (LIGGGHTS' error->one: read_restart missing the
+               file of process 0, or of process 1 of 2) with -screen none: its ERROR line is in
+               the log and its message in run.json ("status": "failed", "error"); LIGGGHTS
+               writes it to the screen stream of that process only
+  restart_full restart files written onto a full disk (a 64 kB tmpfs, filled after a first
+               restart): write_restart and the restart command's periodic files each stop the
+               run naming the file and the full file system; the earlier restart file is kept
+               byte for byte and no half-written file is left (needs mount: skipped otherwise)
+  other_run    the resume of another run's restart: run A (F 320) writes restart.a/b; run B (F
+               200) into the same folder sets them aside (restart.a.previous, ...) as it starts;
+               continuing B from A's restart is refused naming restart_file, the other run and
+               the changed F, and leaves B's run.json and signal.txt as they were; with
+               restart_changes yes it runs and run.json records what changed
+  restart_quiet  a run continued from a restart with -screen none prints nothing on stdout
+               (LIGGGHTS' read_restart printed "version 3 8" with printf)
+  log_full     -log /dev/full: exit 1 naming the log and the reason, the deck not run
   post_full    ohmdem-post writing to a full stdout or a full --output file (/dev/full) exits 1
                naming it; a table whose last row was cut is read with a warning (no engine)
 
@@ -195,6 +211,131 @@ def test_error_exit(a, work):
                   f"{len(ours)} of {len(ERROR_MEMBERS)}")
 
 
+def test_error_one(a, work, nprocs):
+    deck_file = os.path.join(a.src, "tests", "decks", "in.error_one")
+    for proc in range(nprocs):
+        out = os.path.join(work, f"one_{nprocs}_{proc}")
+        log = os.path.join(work, f"one_{nprocs}_{proc}.log")
+        cmd = [a.exe, "-in", deck_file, "-var", "out", out, "-var", "proc", str(proc),
+               "-screen", "none", "-log", log]
+        if nprocs > 1:
+            cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
+        r = run(cmd, work)
+        text = open(log, errors="replace").read() if os.path.exists(log) else ""
+        want = f"ERROR on proc {proc}: Cannot open restart file {out}/part.{proc}"
+        check(r.returncode != 0 and want in text,
+              f"error_one: {nprocs} process(es), error on process {proc}: exit {r.returncode}, "
+              f"'{want}' in the log: {text.strip().splitlines()[-1:]}")
+        with open(os.path.join(out, "run.json")) as f:
+            m = json.load(f)
+        check(m.get("status") == "failed" and
+              m.get("error") == f"Cannot open restart file {out}/part.{proc}",
+              f"error_one: run.json status {m.get('status')}, error {m.get('error')!r}")
+
+
+def small_fs(work, name, size):
+    mnt = os.path.join(work, name)
+    os.makedirs(mnt)
+    m = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", mnt],
+                       capture_output=True, text=True)
+    if m.returncode != 0:
+        print(f"SKIPPED: {name} needs a small file system and mount is not allowed here "
+              f"({(m.stderr or m.stdout).strip()})")
+        sys.exit(SKIP)
+    return mnt
+
+
+def test_restart_full(a, work):
+    deck_file = os.path.join(a.src, "tests", "decks", "in.restart_full")
+    for mode in ("write", "periodic"):
+        mnt = small_fs(work, f"fs_{mode}", "64k")
+        try:
+            out, copy = os.path.join(mnt, "run"), os.path.join(work, f"copy_{mode}")
+            log = os.path.join(work, f"{mode}.log")
+            r = run([a.exe, "-in", deck_file, "-var", "out", out, "-var", "copy", copy,
+                     "-var", "mode", mode, "-screen", "none", "-log", log], work)
+            text = open(log, errors="replace").read()
+            target = os.path.join(out, "restart.a" if mode == "write" else "restart.b")
+            check(r.returncode == 1 and f"ERROR: restart file {target} was not written whole (its header is cut), its "
+                  "file system is full (0 bytes free): " in text,
+                  f"restart_full {mode}: exit {r.returncode}, the error names {target} and the "
+                  f"full file system: {[l for l in text.splitlines() if 'ERROR' in l][-1:]}")
+            with open(os.path.join(out, "restart.a"), "rb") as f, \
+                    open(os.path.join(copy, "restart.a"), "rb") as g:
+                kept, first = f.read(), g.read()
+            check(len(first) > 500 and kept == first,
+                  f"restart_full {mode}: restart.a kept byte for byte ({len(kept)} of "
+                  f"{len(first)} bytes)")
+            left = [f for f in os.listdir(out) if f.endswith(".writing")]
+            check(not left and (mode == "write" or not os.path.exists(target)),
+                  f"restart_full {mode}: no half-written file left ({left})")
+        finally:
+            subprocess.run(["umount", mnt])
+
+
+def test_other_run(a, work):
+    out = os.path.join(work, "shared")
+    base = ["-var", "out", out, "-screen", "none"]
+    r = run(deck(a, *base, "-var", "tend", "0.004", "-var", "restart_every", "1000"), work)
+    check(r.returncode == 0 and os.path.exists(os.path.join(out, "restart.b")),
+          f"other_run: run A (F 320) wrote its restart files (exit {r.returncode})")
+    r = run(deck(a, *base, "-var", "tend", "0.002", "-var", "F", "200", "-var", "restart_every",
+                 "0", "-log", os.path.join(work, "b.log")), work)
+    log = open(os.path.join(work, "b.log"), errors="replace").read()
+    left = sorted(f for f in os.listdir(out) if f.startswith("restart."))
+    check(r.returncode == 0 and left == ["restart.a.previous", "restart.b.previous"] and
+          "the previous run's restart.a, restart.b renamed" in log,
+          f"other_run: run B (F 200) into the same folder set run A's restart files aside: {left}")
+    with open(os.path.join(out, "run.json"), "rb") as f:
+        meta_b = f.read()
+    with open(os.path.join(out, "signal.txt"), "rb") as f:
+        signal_b = f.read()
+    resume = ["-var", "tend", "0.006", "-var", "F", "200", "-var", "start", "restart",
+              "-var", "restart_file", os.path.join(out, "restart.b.previous")]
+    r = run(deck(a, *base, *resume, "-log", os.path.join(work, "c.log")), work)
+    log = open(os.path.join(work, "c.log"), errors="replace").read()
+    want = ["deck variable restart_file", "it was written by run 1 of its folder",
+            "last run is run 2", "F 320 -> 200", "-var restart_changes yes"]
+    check(r.returncode == 1 and all(w in log for w in want),
+          f"other_run: continuing B from A's restart refused naming {want}: "
+          f"{[l for l in log.splitlines() if l.startswith('ERROR')][:1]}")
+    with open(os.path.join(out, "run.json"), "rb") as f, \
+            open(os.path.join(out, "signal.txt"), "rb") as g:
+        check(f.read() == meta_b and g.read() == signal_b,
+              "other_run: the refused resume left B's run.json and signal.txt as they were")
+    r = run(deck(a, *base, *resume, "-var", "restart_changes", "yes"), work)
+    m = json.load(open(os.path.join(out, "run.json")))
+    changed = m.get("restart_changes", "")
+    check(r.returncode == 0 and m["status"] == "finished" and "restart of run 1" in changed and
+          "F 320 -> 200" in changed,
+          f"other_run: with restart_changes yes it runs (exit {r.returncode}) and run.json says "
+          f"what changed: {changed!r}")
+
+
+def test_restart_quiet(a, work):
+    out = os.path.join(work, "quiet")
+    r = run(deck(a, "-var", "out", out, "-var", "tend", "2e-6", "-var", "restart_every", "1",
+                 "-screen", "none"), work)
+    r = subprocess.run(deck(a, "-var", "out", out, "-var", "tend", "4e-6", "-var", "start",
+                            "restart", "-var", "restart_file", os.path.join(out, "restart.b"),
+                            "-screen", "none"), cwd=work, capture_output=True, text=True)
+    check(r.returncode == 0 and r.stdout == "" and r.stderr == "",
+          f"restart_quiet: exit {r.returncode}, stdout {r.stdout[:60]!r}, stderr "
+          f"{r.stderr[:60]!r} (nothing with -screen none)")
+
+
+def test_log_full(a, work):
+    if not os.path.exists("/dev/full"):
+        print("SKIPPED: no /dev/full on this system")
+        sys.exit(SKIP)
+    out = os.path.join(work, "logfull")
+    r = run(deck(a, "-var", "out", out, "-var", "tend", "2e-6", "-screen", "none") +
+            ["-log", "/dev/full"], work)
+    check(r.returncode == 1 and "the log file cannot be written: No space left on device" in
+          r.stdout and not os.path.exists(os.path.join(out, "signal.txt")),
+          f"log_full: exit {r.returncode}, the reason said, nothing run: {r.stdout.strip()[-200:]}")
+
+
 def test_post_full(a, work):
     sig = os.path.join(work, "signal.txt")
     with open(sig, "w") as f:
@@ -247,6 +388,12 @@ def main():
         {"full_disk": lambda: test_full_disk(a, work),
          "kill_resume": lambda: test_kill_resume(a, work),
          "error_exit": lambda: test_error_exit(a, work),
+         "error_one": lambda: test_error_one(a, work, 1),
+         "error_one_mpi": lambda: test_error_one(a, work, 2),
+         "log_full": lambda: test_log_full(a, work),
+         "restart_full": lambda: test_restart_full(a, work),
+         "other_run": lambda: test_other_run(a, work),
+         "restart_quiet": lambda: test_restart_quiet(a, work),
          "post_full": lambda: test_post_full(a, work)}[a.test]()
     finish()
 

@@ -16,6 +16,10 @@ newcomer's first hour; doc/command_deck_files.md).
                 and the settle time of load fixed (tsettle) likewise
   long_path     an output path over PATH_MAX, and a component over NAME_MAX, stop with a
                 message (exit 1), not an abort inside LIGGGHTS (exit 134)
+  out_blank     -var out with a blank stops before the folder and its lock are made
+  lock_wait     a lock whose holder ends within a second or two (a run just stopped with
+                SIGTERM, one of its processes still ending): the next run waits for it and
+                takes the folder, instead of refusing it
 
 Usage: run_folder_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -175,9 +179,40 @@ def test_sliding(a, work):
               f"sliding: {bearing} load fixed: tsettle {settle} s in [{low:.4f}, {high:.4f}]")
 
 
+def test_out_blank(a, work):
+    """-var out with a blank broke fix signal/table's arguments after the folder and its lock
+    were made: refused first, nothing made, and the next run into the folder needs no
+    stale-lock removal."""
+    r = run(deck(a, "-var", "out", "with blank", "-var", "tend", "2e-6"), work)
+    made = sorted(os.listdir(work))
+    check(r.returncode == 1 and "ERROR: deck variable out: expected a folder without blanks" in
+          r.stdout and made == [],
+          f"out_blank: exit {r.returncode}, the variable and its form named, nothing made {made}")
+
+
+def test_lock_wait(a, work):
+    import socket
+    import time
+    folder = os.path.join(work, "held")
+    os.makedirs(folder)
+    import threading
+    ending = subprocess.Popen(["sleep", "1.5"])
+    threading.Thread(target=ending.wait).start()  # reaped when it ends, as mpirun reaps a rank
+    with open(os.path.join(folder, ".ohmdem.lock"), "w") as f:
+        f.write(f"pid {ending.pid} host {socket.gethostname()}\n")
+    t0 = time.time()
+    r = run(deck(a, "-var", "out", folder, "-var", "tend", "2e-6"), work)
+    waited = time.time() - t0
+    ending.wait()
+    check(r.returncode == 0 and "removed the stale lock" in r.stdout and waited > 1.0,
+          f"lock_wait: the run waited {waited:.1f} s for the ending holder and took the folder "
+          f"(exit {r.returncode}): {[l for l in r.stdout.splitlines() if 'ERROR' in l][:1]}")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("test", choices=["nested", "lock", "restart_cut", "long_path", "sliding"])
+    p.add_argument("test", choices=["nested", "lock", "restart_cut", "long_path", "sliding",
+                                    "out_blank", "lock_wait"])
     p.add_argument("--exe", required=True)
     p.add_argument("--src", required=True)
     a = p.parse_args()

@@ -4,8 +4,9 @@
 
   finished     exit 0; run.json "status": "finished", "time_reached" = tend; no warning about
                the conducting path (the balls start exactly touching)
-  restart_geometry  a restart continued with another Nb, Db or race diameter is refused; another
-               speed is not
+  restart_geometry  a restart continued with another Nb, Db or race diameter is refused (even with
+               restart_changes yes); another speed is refused unless restart_changes yes, and
+               run.json then records the change
   conduction_lost  a path lost after it existed is warned at the 1st, 10th, 100th, ...
                evaluation without it
   interrupted  SIGTERM during the run: exit 3; run.json "interrupted" with the time reached
@@ -13,10 +14,15 @@
                in the working folder
   failed       unstable settings (dt 2e-5, a ring of 1e-9 kg, a ring damping of 1e9, a density
                of 1): fix bearing/race stops the run naming the cause (exit 1); run.json
-               "failed" with the time reached; the rows written before the failure are kept in
+               "failed" with the time reached and the error's message; the rows written before
+               the failure are kept in
                signal.txt, none of them garbage
   deck_errors  impossible deck variables stop before the run with a message naming the
                variable (exit 1)
+  step_counts  a run that cannot reach its tend in one run's steps (dt 1e-20), that takes no
+               step (tend below dt, or a restart less than a step before tend), or that writes
+               no row (nout beyond the run's steps, fresh or from a restart) stops before it
+               starts, naming the variable; signal.txt is not written
 
 Usage: run_status_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -107,7 +113,8 @@ def test_failed(a, work):
     cases = [({"dt": 2e-5}, "sqrt(m/k)"),
              ({"Mring": 1e-9, "load": "radial"}, "M = 1e-09 kg"),
              ({"Cring": 1e9, "load": "radial"}, "2M/C"),
-             ({"rho": 1}, "m = 1.05e-06 kg")]
+             ({"rho": 1}, "m = 1.05e-06 kg"),
+             ({"mcage": 1e-9}, "the stiffest critical step, the cage on a ball sqrt(mu/k)")]
     for var, cause in cases:
         name = "_".join(f"{k}{v}" for k, v in var.items())
         out = os.path.join(work, "failed_" + name)
@@ -126,6 +133,8 @@ def test_failed(a, work):
         check("ran away" in log and cause in log,
               f"failed {var}: the run stops saying the contacts ran away and '{cause}'")
         check(m["status"] == "failed", f"failed {var}: run.json status {m['status']}")
+        check("ran away" in m.get("error", "") and cause in m.get("error", ""),
+              f"failed {var}: run.json's error says why: {m.get('error', '')[:80]!r}...")
         # the step that failed is not written: the last row is the step before it
         dt = var.get("dt", 1e-6)
         check(0 < m["time_reached"] < 0.05 and
@@ -146,12 +155,17 @@ def test_restart_geometry(a, work):
     restart = os.path.join(out, "half.restart")
     cases = [({"Nb": 12}, "deck variable Nb: 12, but the restart file has 13 balls"),
              ({"Db": 0.0125}, "deck variables Db and rho: a ball of 0.0125 m"),
-             ({"Dext": 0.0735, "Dinn": 0.0483}, "the balls read from the restart file are up to"),
+             # the geometry cannot change even when the change is declared
+             ({"Dext": 0.0735, "Dinn": 0.0483, "restart_changes": "yes"},
+              "the balls read from the restart file are up to"),
              ({"tend": 0.0005}, "deck variable tend: 0.0005 s lies before the time the run "
                                 "starts from, 0.001 s"),
              ({"restart_file": os.path.join(work, "none.restart")},
               "deck variable restart_file: no file"),
-             ({"omega": 600}, None)]  # the operating point may change
+             # another operating point: refused unless the change is declared, then recorded
+             ({"omega": 600}, "deck variable restart_file: " + restart + ": its run had other "
+                              "parameters (the restart's -> this run's): omega_inner 500 -> 600"),
+             ({"omega": 600, "restart_changes": "yes"}, None)]
     for var, msg in cases:
         name = "_".join(f"{k}{os.path.basename(str(v))}" for k, v in var.items())
         cont = os.path.join(work, "cont_" + name)
@@ -159,7 +173,10 @@ def test_restart_geometry(a, work):
         r = subprocess.run(command(a, cont, **opts), cwd=work)
         log = open(os.path.join(cont, "log.txt"), errors="replace").read()
         if msg is None:
-            check(r.returncode == 0, f"restart_geometry: {var} continues (exit {r.returncode})")
+            changed = meta(cont).get("restart_changes", "")
+            check(r.returncode == 0 and "omega_inner 500 -> 600" in changed,
+                  f"restart_geometry: {var} continues (exit {r.returncode}), run.json records "
+                  f"restart_changes {changed!r}")
         else:
             check(r.returncode == 1 and msg in log,
                   f"restart_geometry: {var} -> exit {r.returncode}, '{msg}' in the log")
@@ -185,6 +202,38 @@ def test_deck_errors(a, work):
         log = open(os.path.join(out, "log.txt"), errors="replace").read()
         check(r.returncode == 1 and f"ERROR: {msg}" in log,
               f"deck_errors: {var} -> exit {r.returncode}, '{msg}' in the log")
+
+
+def test_step_counts(a, work):
+    cases = [({"dt": 1e-20}, "deck variable dt: reaching tend = 0.02 s at dt = 1e-20 s takes "
+                             "2e+18 steps, more than one run takes (2147483647)"),
+             ({"tend": 1e-7}, "deck variable tend: 1e-07 s is below one time step (dt = 1e-6 s)"),
+             ({"nout": "1e9"}, "deck variable nout: signal.txt every 1e9 steps, but the run takes "
+                               "20000 steps to tend = 0.02 s: no row would be written")]
+    first = os.path.join(work, "first")
+    r = subprocess.run([a.exe, "-in", os.path.join(a.src, "tests", "decks", "in.restart_first"),
+                        "-var", "bearing_deck", os.path.join(a.src, "inputs", "bearing_6208",
+                                                             "in.bearing"),
+                        "-var", "out", first, "-var", "tend", "0.001", "-log", "none",
+                        "-screen", "none"], cwd=work)
+    check(r.returncode == 0, "step_counts: the first half of a restart")
+    restart = {"start": "restart", "restart_file": os.path.join(first, "half.restart"),
+               "restart_changes": "yes"}
+    cases += [({**restart, "tend": 0.0010000004},
+               "deck variable tend: 0.0010000004 s is less than one time step (dt = 1e-6 s) after "
+               "the time the run starts from, 0.001 s"),
+              # steps 1000 to 1500: no multiple of 800 (fix signal/table writes at those)
+              ({**restart, "tend": 0.0015, "nout": 800},
+               "deck variable nout: signal.txt every 800 steps, but the 500 steps from the "
+               "restart point to tend = 0.0015 s write no row")]
+    for var, msg in cases:
+        out = os.path.join(work, "err_" + "_".join(f"{k}{os.path.basename(str(v))}"
+                                                   for k, v in var.items()))
+        r = subprocess.run(command(a, out, **var), cwd=work, capture_output=True, text=True)
+        log = open(os.path.join(out, "log.txt"), errors="replace").read()
+        check(r.returncode == 1 and f"ERROR: {msg}" in log and
+              not os.path.exists(os.path.join(out, "signal.txt")),
+              f"step_counts: {var} -> exit {r.returncode}, '{msg}' in the log, no signal.txt")
 
 
 def main():

@@ -12,10 +12,14 @@
                   equal, bit for bit, to signal.txt of the same run; ohmdem-post gives the
                   same statistics from both
   npy_restart_append  the split run's signal.npy is the single run's, byte for byte
+  loaded_contacts n_contacts_race counts the race contacts that carry a load: at every step
+                  it equals the contacts of races.dump with a normal force > 0 (a ball exactly
+                  touching its race, fn = 0, carries no current and was counted)
 
 Usage: signal_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
 import argparse
+import json
 import os
 import subprocess
 import tempfile
@@ -47,8 +51,10 @@ def restart_pair(r, name, dt_second, **var):
                                                         "in.restart_first"),
                      bearing_deck=r.deck, tend=0.002, **var)
     # The second part continues into the same folder, from the restart file written there.
+    # another dt is another parameter: declared (restart_changes yes) when it differs
+    changes = {"restart_changes": "yes"} if dt_second != 1e-6 else {}
     r.run(f"{name}_split", tend=0.004, start="restart", dt=dt_second,
-          restart_file=os.path.join(split, "half.restart"), **var)
+          restart_file=os.path.join(split, "half.restart"), **changes, **var)
     return full, split
 
 
@@ -74,6 +80,9 @@ def test_restart_dt(r):
           max(abs(steps[i] - 2e-6 * (i + 1)) for i in range(len(steps))) < 1e-12,
           f"restart_dt: the second part goes on at the new step from 0.002 s "
           f"({len(second)} rows, last t = {second[-1]!r} s)")
+    with open(os.path.join(split, "run.json")) as f:
+        changed = json.load(f).get("restart_changes", "")
+    check("dt 1e-6 -> 2e-06" in changed, f"restart_dt: run.json records the new step: {changed!r}")
 
 
 def test_npy_equal(r, post):
@@ -115,6 +124,40 @@ def test_npy_restart_append(r):
           f"({len(b)} vs {len(a)} bytes, {rows} rows)")
 
 
+def races_dump_loads(path):
+    """{timestep: loaded contacts} of races.dump (f_inner[1] and f_outer[1]: the normal forces,
+    columns 6 and 12 of 'id x y vx vy f_inner[1..6] f_outer[1..6]')."""
+    counts, step, lines = {}, None, open(path).read().splitlines()
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("ITEM: TIMESTEP"):
+            step = int(lines[i + 1])
+            i += 2
+        elif lines[i].startswith("ITEM: ATOMS"):
+            i += 1
+            n = 0
+            while i < len(lines) and not lines[i].startswith("ITEM:"):
+                v = lines[i].split()
+                n += (float(v[5]) > 0) + (float(v[11]) > 0)
+                i += 1
+            counts[step] = n
+        else:
+            i += 1
+    return counts
+
+
+def test_loaded_contacts(r):
+    out, _ = r.run("loaded", tend=2e-5, dumpraces=1)
+    sig = read_signal(out)
+    loads = races_dump_loads(os.path.join(out, "races.dump"))
+    steps = [round(t / 1e-6) for t in sig["time"]]
+    bad = [(s, int(n), loads.get(s)) for s, n in zip(steps, sig["n_contacts_race"])
+           if loads.get(s) != int(n)]
+    check(len(steps) == 20 and not bad,
+          f"loaded_contacts: n_contacts_race is the loaded contacts of races.dump at every step "
+          f"(step, signal, dump where they differ: {bad[:3]})")
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("test")
@@ -129,7 +172,8 @@ def main():
          "restart_append": lambda: test_restart_append(r),
          "restart_dt": lambda: test_restart_dt(r),
          "npy_equal": lambda: test_npy_equal(r, os.path.abspath(a.post)),
-         "npy_restart_append": lambda: test_npy_restart_append(r)}[a.test]()
+         "npy_restart_append": lambda: test_npy_restart_append(r),
+         "loaded_contacts": lambda: test_loaded_contacts(r)}[a.test]()
     finish()
 
 

@@ -5,11 +5,19 @@ LIGGGHTS' partitions (inputs/bearing_6208/in.sweep) and through the Slurm array 
 hand (inputs/cluster/sweep_slurm.sh, every task index), collected by `ohmdem-post collect ROOT`
 with each row's parameters checked against its CSV row; resume; the deck variables of one case
 not leaking into the next; bad tables.
-Usage: sweep_table_tests.py partitions|slurm|reset|errors --exe OHMDEM --post POST --src DIR"""
+cells: a cell without its deck variable's form (a size "2;touch x", a text size) is refused by
+`cases.py check` naming line, column, variable and form; in a partition sweep that case alone
+fails, named, the valid rows run and the summary names it. progress: a Slurm task run again
+keeps one line per case in finished.txt, its counter never passes the table. engine_error: a
+value the engine refuses (F -5) on 2 partitions stops that partition alone: the other rows
+run, the terminal says which partition stopped and why, the summary names the case.
+Usage: sweep_table_tests.py partitions|slurm|reset|errors|cells|progress --exe OHMDEM --post POST
+       --src DIR"""
 import argparse
 import csv
 import io
 import os
+import re
 import subprocess
 import tempfile
 
@@ -219,9 +227,76 @@ def test_errors(ctx):
           "sweep_slurm.sh: nothing run on a bad call")
 
 
+def write_table(ctx, name, text):
+    path = os.path.join(ctx.wd, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def test_cells(ctx):
+    table = write_table(ctx, "cells.csv", "F,size\n200,0.5\n200,2;touch MARK_cells\n"
+                                          "200,large\n400,1\n")
+    rc, out = run(["/usr/bin/python3", ctx.cases_py, "check", table,
+                   "--deck", os.path.join(ctx.deck, "in.bearing")], ctx.wd)
+    want = [f"{table}:3: column 2 (size): deck variable size: expected a number, got "
+            "'2;touch MARK_cells'",
+            f"{table}:4: column 2 (size): deck variable size: expected a number, got 'large'",
+            "(2 of 4 cases; the others are valid)"]
+    check(rc == 2 and all(w in out for w in want),
+          f"cells: cases.py check refuses the cells by line, column and form (exit {rc}): "
+          f"{out.strip()[:300]}")
+    root = os.path.join(ctx.wd, "cells")
+    rc, out = ctx.sweep(root, table, 1)
+    folders = {f: os.path.exists(os.path.join(root, f, "signal.txt"))
+               for f in ("F_200_size_0.5", "F_400_size_1")}
+    check(all(folders.values()), f"cells: the valid rows ran ({folders}, exit {rc})")
+    check("sweep: case F=200,size=large FAILED: " in out and
+          "deck variable size: expected a number, got 'large'" in out,
+          "cells: the bad case failed alone, named with its variable and form")
+    check("sweep: summary: 2 of 4 cases done, 2 FAILED (F=200,size=2;touch MARK_cells; "
+          "F=200,size=large), 0 not finished" in out,
+          f"cells: the summary names the failed cases: "
+          f"{[l for l in out.splitlines() if 'summary' in l]}")
+    check(not os.path.exists(os.path.join(ctx.wd, "MARK_cells")), "cells: nothing ran")
+
+
+def test_progress(ctx):
+    table = ctx.grid("progress.csv", "size=0.5,1")
+    root = os.path.join(ctx.wd, "progress")
+    outs = [ctx.slurm_task(table, 2, 0, root) for _ in range(2)]
+    counts = [l for _, out in outs for l in out.splitlines()
+              if re.match(r"sweep: \d+/\d+ cases done", l)]
+    lines = open(os.path.join(root, "finished.txt")).read().splitlines()
+    check(all(rc == 0 for rc, _ in outs) and sorted(lines) == ["size=0.5 done", "size=1 done"],
+          f"progress: task 0 run twice: finished.txt holds each case once: {lines}")
+    check(counts and all(int(l.split()[1].split("/")[0]) <= 2 for l in counts) and
+          counts[-1].startswith("sweep: 2/2 cases done"),
+          f"progress: the counter never passes the table: {counts}")
+
+
+def test_engine_error(ctx):
+    table = write_table(ctx, "engine.csv", "F,size\n200,1\n-5,1\n300,1\n400,1\n")
+    root = os.path.join(ctx.wd, "engine")
+    rc, out = ctx.sweep(root, table, 2)
+    ran = [f for f in ("F_200_size_1", "F_300_size_1", "F_400_size_1")
+           if os.path.exists(os.path.join(root, f, "signal.txt"))]
+    check(rc != 0 and len(ran) == 3, f"engine_error: the valid rows ran on the other partition "
+          f"({ran}), the sweep exits non-zero ({rc})")
+    check(re.search(r"ERROR on partition \d: fix bearing/race: keyword 'force' expects the load "
+                    r"magnitude F > 0 \(N\), or v_NAME, got '-5' \(its processes stop; the "
+                    r"other partitions go on\)", out) is not None,
+          "engine_error: the terminal says which partition stopped and why")
+    check("sweep: summary: 3 of 4 cases done, 0 FAILED, 1 not finished (started, not ended: "
+          "F=-5,size=1)" in out,
+          f"engine_error: the summary names the case: "
+          f"{[l for l in out.splitlines() if 'summary' in l]}")
+
+
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("test", choices=["partitions", "slurm", "reset", "errors"])
+    p.add_argument("test", choices=["partitions", "slurm", "reset", "errors", "cells",
+                                    "progress", "engine_error"])
     p.add_argument("--exe", required=True)
     p.add_argument("--post", required=True)
     p.add_argument("--src", required=True)
@@ -229,7 +304,8 @@ def main():
     with tempfile.TemporaryDirectory(prefix="ohmdem_cases_") as wd:
         ctx = Ctx(a, wd)
         {"partitions": test_partitions, "slurm": test_slurm, "reset": test_reset,
-         "errors": test_errors}[a.test](ctx)
+         "errors": test_errors, "cells": test_cells, "progress": test_progress,
+         "engine_error": test_engine_error}[a.test](ctx)
     finish()
 
 

@@ -96,6 +96,13 @@ void Builder::add_contact(const ContactRecord &c)
   const int index = static_cast<int>(&c - scene_.contacts->data());
   out_.spots.push_back({p->tag, {mine, {pt[0], pt[1], pt[2]}, area}, index});
   if (q) out_.spots.push_back({q->tag, {other_side, {pt[0], pt[1], pt[2]}, area}, index});
+  // electrode keys lie below 2^32 (conduction_network.h)
+  const auto electrode = [](NodeKey k) { return k <= electrode_key(0xffffffffu); };
+  if (!model_.has_constriction() && built_here && mine != other_side && electrode(mine) &&
+      electrode(other_side) && out_.electrode_shorts++ == 0) {
+    out_.short_tags[0] = p->tag;
+    out_.short_tags[1] = q ? q->tag : 0;
+  }
   if (!model_.has_constriction() || !built_here) return;
   // The constriction of the spot, in series between the two bodies.
   const double rc = model_.constriction_resistance(gp, go, c.a, c.b);
@@ -148,6 +155,8 @@ void Builder::run()
   out_.spots.clear();
   out_.drawn.clear();
   out_.conducting_contacts = 0;
+  out_.electrode_shorts = 0;
+  out_.short_tags[0] = out_.short_tags[1] = 0;
   for (const ContactRecord &c : *scene_.contacts) add_contact(c);
   std::stable_sort(
       out_.spots.begin(), out_.spots.end(),

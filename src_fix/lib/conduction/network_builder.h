@@ -94,6 +94,11 @@ struct NetworkBuild {
   std::vector<Spot> spots;  // sorted by tag
   std::vector<VtkEdge> drawn;
   int conducting_contacts = 0;
+  // Conducting contacts that join two electrodes directly (the electrodes touch) where the
+  // model gives a contact spot no resistance (no constriction slot): a short circuit, which
+  // the network cannot hold as an edge. The first one's particle tags (0: a race).
+  int electrode_shorts = 0;
+  std::int64_t short_tags[2] = {0, 0};
 };
 
 // Clears `net` and adds the model's conductances: a constriction per conducting contact,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace ohmdem {
 
@@ -22,27 +23,61 @@ bool finite(const RaceStepState &s)
   return true;
 }
 
-// What the step is against: the ball on one contact, the ring on its contacts in parallel.
+// What the step is against: each body's critical step; the smallest is the likely cause.
 std::string likely_cause(const HertzContact &h, const RaceStepState &s)
 {
-  std::ostringstream o;
-  o.precision(3);
+  struct Step {
+    double seconds;
+    std::string text, check;
+  };
+  std::vector<Step> steps;
   const double fn = s.reference_fn > 0 ? s.reference_fn : 1.0;
+  auto text = [](double x) {
+    std::ostringstream o;
+    o.precision(3);
+    o << x;
+    return o.str();
+  };
   const double tb = hertz_critical_step(h, s.ball_mass, fn);
-  o << "; likely cause: the time step dt = " << s.dt << " s against the critical step of a ball "
-    << "on its contact sqrt(m/k) = " << tb << " s (m = " << s.ball_mass << " kg, k = dQ/ddelta at "
-    << fn << " N)";
+  if (tb > 0)
+    steps.push_back({tb,
+                     "a ball on its contact sqrt(m/k) = " + text(tb) + " s (m = " +
+                         text(s.ball_mass) + " kg, k = dQ/ddelta at " + text(fn) + " N)",
+                     "the ball's mass (its density and diameter)"});
   if (s.ring_mass > 0) {
     const int n = std::max(s.balls, 1);
     const double tr = hertz_critical_step(h, s.ring_mass / n, fn);
-    o << " and of the ring on its " << n << " contacts sqrt(M/(n k)) = " << tr
-      << " s (M = " << s.ring_mass << " kg)";
+    if (tr > 0)
+      steps.push_back({tr,
+                       "the ring on its " + std::to_string(n) + " contacts sqrt(M/(n k)) = " +
+                           text(tr) + " s (M = " + text(s.ring_mass) + " kg)",
+                       "the ring's mass (fix bearing/race keyword 'mass')"});
     // an explicit viscous kick overshoots when dt C / M > 2
     if (s.ring_damping > 0)
-      o << ", and the ring's damping step 2M/C = " << 2 * s.ring_mass / s.ring_damping
-        << " s (C = " << s.ring_damping << " N s/m)";
+      steps.push_back({2 * s.ring_mass / s.ring_damping,
+                       "the ring's damping step 2M/C = " + text(2 * s.ring_mass / s.ring_damping) +
+                           " s (M = " + text(s.ring_mass) + " kg, C = " + text(s.ring_damping) +
+                           " N s/m)",
+                       "the ring's damping (fix bearing/race keyword 'damp')"});
   }
-  o << ": take dt well below the smaller (a tenth of it), or check the masses and the damping";
+  if (s.cage_step > 0)
+    steps.push_back({s.cage_step,
+                     "the cage on a ball sqrt(mu/k) = " + text(s.cage_step) + " s (cage mass " +
+                         text(s.cage_mass) + " kg)",
+                     "the cage's mass (fix bearing/cage keyword 'mass')"});
+  std::ostringstream o;
+  o.precision(3);
+  if (steps.empty()) {
+    o << "; likely cause: the time step dt = " << s.dt << " s: check the masses and the damping";
+    return o.str();
+  }
+  std::stable_sort(steps.begin(), steps.end(),
+                   [](const Step &a, const Step &b) { return a.seconds < b.seconds; });
+  o << "; likely cause: the time step dt = " << s.dt << " s against the stiffest critical step, "
+    << steps.front().text;
+  for (std::size_t k = 1; k < steps.size(); ++k)
+    o << (k == 1 ? " (then " : ", ") << steps[k].text << (k + 1 == steps.size() ? ")" : "");
+  o << ": take dt well below it (a tenth of it), or check " << steps.front().check;
   return o.str();
 }
 

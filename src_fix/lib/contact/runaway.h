@@ -26,6 +26,9 @@ struct RaceStepState {
   double ring_damping = 0;                // viscous damping of the ring (N s/m)
   int balls = 0;                          // balls in contact (the ring's springs)
   double reference_fn = 0;                // a healthy load per ball (N): for the critical step
+  // The cage on a ball (another body's step the race cannot see: fix bearing/cage's), 0 when
+  // there is none: sqrt(mu/k) of a pocket contact, mu the reduced mass of cage and ball.
+  double cage_step = 0, cage_mass = 0;
 };
 
 // An approach beyond this fraction of the ball radius is far outside the elastic range of a
@@ -37,8 +40,9 @@ constexpr double kRunawayOffsetFraction = 0.5;
 // The critical step of a Hertz contact at the load fn: sqrt(m / k), k = dQ/d(delta).
 double hertz_critical_step(const HertzContact &h, double mass, double fn);
 
-// "" while the state is sound; else what ran away, with the numbers and the likely cause (the
-// step against the critical steps of a ball and of the ring on its contacts).
+// "" while the state is sound; else what ran away, with the numbers and the likely cause: the
+// stiffest of the critical steps (a ball on its contact, the ring on its contacts, the ring's
+// viscous kick 2M/C, the cage on a ball), named first, with the others after it.
 std::string race_runaway(const HertzContact &h, const RaceStepState &s);
 
 }  // namespace ohmdem

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -180,6 +181,31 @@ Lubricant read_lubricant_file(const std::string &path, const std::string &name)
                          std::to_string(lub.nu40) + " and " + std::to_string(lub.nu100));
   if (!(lub.expansion >= 0.0) || !(lub.eps_r >= 1.0))
     throw LubricantError(path + ": expected expansion >= 0 and eps_r >= 1");
+  // The ranges the laws hold in (doc/lubricant_catalog.md): beyond them the film, the
+  // capacitance and the impedance come out as overflows and NaN, not as a lubricant.
+  auto within = [&path](const char *key, double x, double lo, double hi, const char *what) {
+    if (!(x >= lo && x <= hi)) {
+      char msg[512];
+      std::snprintf(msg, sizeof msg, "%s: %s = %g is outside %s: expected %g to %g", path.c_str(),
+                    key, x, what, lo, hi);
+      throw LubricantError(msg);
+    }
+  };
+  within("nu40", lub.nu40, 2.0, 2e7, "Walther's range of kinematic viscosity (ASTM D341, mm^2/s)");
+  within("nu100", lub.nu100, 2.0, 2e7,
+         "Walther's range of kinematic viscosity (ASTM D341, mm^2/s)");
+  within("rho15", lub.rho15, 500.0, 2500.0, "the densities of liquid lubricants (kg/m^3)");
+  within("expansion", lub.expansion, 0.0, 2e-3, "the thermal expansion of liquids (1/K)");
+  const char *alpha_range = "the pressure-viscosity coefficients of lubricants (1/Pa)";
+  if (lub.alpha_table.empty()) within("alpha", lub.alpha, 1e-10, 1e-7, alpha_range);
+  for (std::size_t k = 0; k < lub.alpha_table.size(); ++k)
+    within(("alpha_" + std::to_string(k + 1)).c_str(), lub.alpha_table[k].second, 1e-10, 1e-7,
+           alpha_range);
+  within("eps_r", lub.eps_r, 1.0, 100.0, "relative permittivities (1 to 100)");
+  within("eps_slope", lub.eps_slope, -0.1, 0.1, "permittivity slopes (1/K)");
+  within("tref", lub.tref, -40.0, 200.0, "the temperature range of the laws (C)");
+  within("resistivity", lub.resistivity, 1e-8, 1e20, "resistivities (ohm m)");
+  if (lub.breakdown > 0) within("breakdown", lub.breakdown, 1e3, 1e10, "breakdown fields (V/m)");
   return lub;
 }
 

@@ -91,6 +91,28 @@ std::string copy_file(const std::string &from, const std::string &to)
   return "";
 }
 
+std::string replace_file(const std::string &path, const std::string &text)
+{
+  const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return "cannot write " + path + ": " + why(errno);
+  std::size_t done = 0;
+  int err = 0;
+  while (done < text.size() && err == 0) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0)
+      err = n < 0 ? errno : ENOSPC;
+    else
+      done += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err == 0 && ::rename(tmp.c_str(), path.c_str()) != 0) err = errno;
+  if (err == 0) return "";
+  ::unlink(tmp.c_str());
+  return "cannot write " + path + ": " + why(err) + " (the previous file, if any, is kept)";
+}
+
 namespace {
 
 // The header of LIGGGHTS 3.8's write_restart: flag (int), then the value; flags 0..48 in
@@ -217,8 +239,13 @@ std::string read_whole(const std::string &path)
 
 }  // namespace
 
-std::string check_restart_file(const std::string &path)
+namespace {
+
+// check_restart_file, and where the fixes' sections start in the data read (`fixes_at`, with
+// the data in `kept`; npos when the file was too large to read back).
+std::string check_restart(const std::string &path, std::string *kept, std::size_t *fixes_at)
 {
+  if (fixes_at) *fixes_at = std::string::npos;
   // A multi-file restart (write_restart FILE.%): FILE.base holds the header and the fixes,
   // FILE.0 ... FILE.(P-1) each process's atoms.
   const std::size_t percent = path.find('%');
@@ -287,10 +314,53 @@ std::string check_restart_file(const std::string &path)
   // Between the header and the atoms: the types and force fields (their layout is the
   // styles'), then the fixes' sections, which must end exactly where the atoms start.
   bool fixes = false;
-  for (std::size_t p = b.pos; p + 12 <= atoms_start && !fixes; ++p)
-    fixes = fix_sections_end_at(data, p, atoms_start);
+  std::size_t p = b.pos;
+  for (; p + 12 <= atoms_start && !fixes; ++p) fixes = fix_sections_end_at(data, p, atoms_start);
   if (!fixes)
     return bad + "its fixes' sections are damaged (they do not end where the atoms start)";
+  if (fixes_at) *fixes_at = p - 1;
+  if (kept) *kept = data;
+  return "";
+}
+
+}  // namespace
+
+std::string check_restart_file(const std::string &path)
+{
+  return check_restart(path, nullptr, nullptr);
+}
+
+std::string restart_fix_state(const std::string &path, const std::string &style, std::string &state,
+                              bool &found)
+{
+  found = false;
+  state.clear();
+  std::string data;
+  std::size_t at = std::string::npos;
+  const std::string bad = check_restart(path, &data, &at);
+  if (!bad.empty() || at == std::string::npos) return bad;
+  // -1, the number of fixes, then each fix's ID, style, state size and state
+  Bytes b{data, at + 4};
+  int nfix = 0;
+  b.take(&nfix, 4);
+  auto text = [&b, &data]() {
+    int n = 0;
+    b.take(&n, 4);
+    const std::string t = data.substr(b.pos, static_cast<std::size_t>(n) - 1);  // less its NUL
+    b.pos += static_cast<std::size_t>(n);
+    return t;
+  };
+  for (int i = 0; i < nfix; ++i) {
+    text();  // the ID
+    const std::string fix_style = text();
+    int size = 0;
+    b.take(&size, 4);
+    if (fix_style == style && !found) {
+      state = data.substr(b.pos, static_cast<std::size_t>(size));
+      found = true;
+    }
+    b.pos += static_cast<std::size_t>(size);
+  }
   return "";
 }
 
@@ -300,7 +370,7 @@ std::string lock_path(const std::string &folder)
 }
 
 LockAnswer lock_folder(const std::string &folder, long pid, const std::string &host,
-                       const std::function<bool(long)> &alive)
+                       const std::function<bool(long)> &alive, double wait_seconds)
 {
   const std::string file = lock_path(folder);
   const std::string mine = "pid " + std::to_string(pid) + " host " + host + "\n";
@@ -334,9 +404,22 @@ LockAnswer lock_folder(const std::string &folder, long pid, const std::string &h
       return answer;
     }
     if (readable && alive(holder)) {
+      double waited = 0;
+      while (waited < wait_seconds && alive(holder)) {
+        ::usleep(100000);
+        waited += 0.1;
+      }
+      if (!alive(holder)) {
+        --attempt;  // it ended while we waited: its lock is stale now
+        continue;
+      }
+      char how_long[64] = "";
+      if (wait_seconds > 0)
+        std::snprintf(how_long, sizeof how_long, ", still running after %g s", wait_seconds);
       answer.error = "the output folder " + folder + " is in use by the live run of pid " +
-                     std::to_string(holder) + " on this host (" + host + ", " + file +
-                     "): give another -var out, or wait for that run to end";
+                     std::to_string(holder) + " on this host (" + host + ", " + file + how_long +
+                     "): give another -var out, or wait for that run to end (a run just "
+                     "stopped may take a moment to end: run again in a few seconds)";
       return answer;
     }
     // Stale (its process has ended) or unreadable (cut while written): replace it.

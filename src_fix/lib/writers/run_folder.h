@@ -26,11 +26,21 @@ std::string make_folders(const std::string &path);
 // Copies FROM to TO (replaced whole: written beside it, then renamed).
 std::string copy_file(const std::string &from, const std::string &to);
 
+// Writes TEXT to PATH, replacing it whole: written beside it (PATH.tmpPID), then renamed, so
+// that PATH is never half-written; the message names PATH and the system's reason (ENOSPC).
+std::string replace_file(const std::string &path, const std::string &text);
+
 // A file written by LIGGGHTS 3.8's write_restart: it exists, is a regular file, and its
 // header can be read to its end marker (every section whole, the flags known ones). A file
 // cut anywhere before the end of its header, or not a restart file, is refused here:
 // read_restart itself loops forever on a cut header.
 std::string check_restart_file(const std::string &path);
+
+// The global state that the first fix of STYLE wrote into the restart file PATH (`found`
+// false when it has none, or the file is above the size check_restart_file reads); the
+// message of check_restart_file when the file is not whole.
+std::string restart_fix_state(const std::string &path, const std::string &style,
+                              std::string &state, bool &found);
 
 // The lock of an output folder: FOLDER/.ohmdem.lock holds "pid PID host HOST". A lock held by
 // a live process (kill(pid, 0)), or written on another host (its process cannot be checked),
@@ -40,8 +50,11 @@ struct LockAnswer {
   std::string error;  // "" when the lock is ours now
   std::string note;   // a stale lock replaced
 };
+// A live holder on this host is waited for up to `wait_seconds` (checked every 0.1 s): the
+// processes of a run just stopped with SIGTERM take a moment to end, and a resume started
+// right after would otherwise meet one of them.
 LockAnswer lock_folder(const std::string &folder, long pid, const std::string &host,
-                       const std::function<bool(long)> &alive);
+                       const std::function<bool(long)> &alive, double wait_seconds = 0);
 // Removes FOLDER's lock when it is PID's on HOST (another holder's lock is left alone).
 void unlock_folder(const std::string &folder, long pid, const std::string &host);
 std::string lock_path(const std::string &folder);

@@ -97,6 +97,31 @@ TEST(Runaway, DeepApproachNamesTheStepAgainstTheCriticalSteps)
   EXPECT_FALSE(has(race_runaway(h, s), "sqrt(M/(n k))"));
 }
 
+// The likely cause is the stiffest critical step, named first: the ring's viscous kick 2M/C
+// or a light cage, not always the ball's contact step.
+TEST(Runaway, StiffestCauseNamedFirst)
+{
+  const HertzContact h = inner_6208();
+  RaceStepState s = sound();
+  s.max_fn = h.stiffness_constant() * std::pow(0.03 * s.ball_radius, 1.5);
+  auto cause = [&h](const RaceStepState &st) {
+    const std::string why = race_runaway(h, st);
+    return why.substr(why.find("the stiffest critical step, ") + 28, 40);
+  };
+  s.dt = 2e-5;
+  EXPECT_TRUE(has(cause(s), "a ball on its contact sqrt(m/k)")) << cause(s);
+  s.dt = 1e-6;
+  s.ring_damping = 1e9;  // 2M/C = 0.3 ns
+  EXPECT_TRUE(has(cause(s), "the ring's damping step 2M/C")) << cause(s);
+  EXPECT_TRUE(has(race_runaway(h, s), "check the ring's damping")) << race_runaway(h, s);
+  s.ring_damping = 6000;
+  s.cage_step = 3.6e-8;  // a cage of 1e-9 kg on a ball
+  s.cage_mass = 1e-9;
+  EXPECT_TRUE(has(cause(s), "the cage on a ball sqrt(mu/k)")) << cause(s);
+  EXPECT_TRUE(has(race_runaway(h, s), "(cage mass 1e-09 kg)")) << race_runaway(h, s);
+  EXPECT_TRUE(has(race_runaway(h, s), "check the cage's mass")) << race_runaway(h, s);
+}
+
 TEST(Runaway, RingThatLeftTheBallsStops)
 {
   const HertzContact h = inner_6208();

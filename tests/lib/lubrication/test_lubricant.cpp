@@ -224,3 +224,26 @@ TEST(Lubricant, AlphaInterpolationAgainstTabulatedMineralOils)
   EXPECT_EQ(within, 10);
   EXPECT_LT(worst, 0.14);
 }
+
+// Values outside the laws' range are refused, naming the value and the range: a viscosity of
+// 1e300 gave NaN in every lubricated column of signal.txt.
+TEST(Lubricant, ValuesOutsideTheLawsRangeRefused)
+{
+  const std::string e =
+      error_of(good_with("variable nu40 index 68 # a\nvariable nu100 index 8.7",
+                         "variable nu40 index 1e300\nvariable nu100 index 1e299"));
+  EXPECT_NE(e.find("nu40 = 1e+300 is outside Walther's range"), std::string::npos) << e;
+  EXPECT_NE(e.find("expected 2 to 2e+07"), std::string::npos) << e;
+  EXPECT_NE(error_of(good_with("rho15 index 880", "rho15 index 1e9")).find("rho15 = 1e+09"),
+            std::string::npos);
+  EXPECT_NE(error_of(good_with("alpha index 2.2e-8", "alpha index 1")).find("alpha = 1 is outside"),
+            std::string::npos);
+  EXPECT_NE(error_of(good_with("eps_r index 2.07", "eps_r index 1e6")).find("eps_r = 1e+06"),
+            std::string::npos);
+  EXPECT_NE(error_of(good_with("expansion index 6.5e-4", "expansion index 0.5"))
+                .find("expansion = 0.5 is outside"),
+            std::string::npos);
+  // the catalog's own files are inside
+  for (const char *name : {"VG32", "VG68", "VG220", "PAO68"})
+    EXPECT_NO_THROW(read_lubricant_file(lubricant_path(name, OHMDEM_TEST_LUBRICANTS), name));
+}
