@@ -268,7 +268,7 @@ def expect_error(r, name, pattern, **var):
 
 def test_errors(r):
     A = RCI + RCO - DB
-    expect_error(r, "err_model", r"deck variable model: 2d or 3d, got 3D", model="3D")
+    expect_error(r, "err_model", r"deck variable model: expected 2d or 3d, got '3D'", model="3D")
     expect_error(r, "err_clearance", r"lets the ball pass between the grooves",
                  clearance=2.2 * A)
     expect_error(r, "err_shoulder", r"past the shoulder at 15 deg", shoulder=15, Fr=0, Fa=5000,

@@ -74,9 +74,12 @@ std::string begin_new_run(const std::string &folder, const std::vector<std::stri
 
 bool is_run_parameter(const std::string &key)
 {
-  static const std::set<std::string> progress = {"status", "time_reached",   "error",
-                                                 "tend",   "ohmdem_version", "restart_changes"};
-  return progress.count(key) == 0;
+  // how far the run got, and what it measured (model 3d: the mean contact angle at its end,
+  // and the nominal one beside it)
+  static const std::set<std::string> not_parameters = {
+      "status",         "time_reached",    "error",         "tend",
+      "ohmdem_version", "restart_changes", "contact_angle", "contact_angle_nominal"};
+  return not_parameters.count(key) == 0;
 }
 
 std::vector<ParameterChange> changed_parameters(

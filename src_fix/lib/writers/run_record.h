@@ -33,8 +33,8 @@ std::string begin_new_run(const std::string &folder, const std::vector<std::stri
                           long &run, std::vector<std::string> &renamed);
 
 // The members of a run.json that are the run's parameters: its progress (status,
-// time_reached, error), its length (tend), the build (ohmdem_version) and restart_changes left
-// out.
+// time_reached, error), its length (tend), the build (ohmdem_version), restart_changes and what
+// the run measured (contact_angle, contact_angle_nominal) left out.
 bool is_run_parameter(const std::string &key);
 
 struct ParameterChange {
