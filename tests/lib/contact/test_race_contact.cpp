@@ -2,8 +2,8 @@
 // The ball–race contact kernel (src_fix/lib/contact/race_contact.*) against references written
 // here from theory, not from the kernel's own formulas: the elliptic Hertz solution in
 // Johnson's pressure form with libstdc++'s elliptic integrals (the kernel uses the ellipticity
-// form and its own AGM, doc/methods/hertz_contact.md), the groove's geometry (approach, contact point,
-// normal), Mindlin's tangential stiffness, the Coulomb limit, rolling without slip and the
+// form and its own AGM, doc/methods/hertz_contact.md), the groove's geometry (approach, contact
+// point, normal), Mindlin's tangential stiffness, the Coulomb limit, rolling without slip and the
 // restitution damping of LIGGGHTS' Hertz model (contact/damping.h).
 #include <gtest/gtest.h>
 
@@ -25,8 +25,8 @@ using ohmdem::test::kPi;
 
 // SKF 6208 (doc/methods/hertz_contact.md "SKF 6208"): ball radius, race radii at the groove bottom,
 // groove radii (m). Steel on steel, E = 200 GPa, nu = 0.3: 1/E* = 2 (1 - nu^2)/E
-// (doc/methods/hertz_contact.md "Inputs") and, in LIGGGHTS' convention, 1/G* = 2 * 2 (2 - nu)(1 + nu)/E
-// (contact/hertz_contact.h).
+// (doc/methods/hertz_contact.md "Inputs") and, in LIGGGHTS' convention,
+// 1/G* = 2 * 2 (2 - nu)(1 + nu)/E (contact/hertz_contact.h).
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 constexpr double kEstar = 200e9 / (2 * (1 - 0.3 * 0.3));
 constexpr double kGstar = 200e9 / (4 * (2 - 0.3) * (1 + 0.3));
