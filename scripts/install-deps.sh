@@ -13,6 +13,7 @@ packages=(
   python3 python3-numpy python3-scipy       # independent references for signal statistics
   gnuplot-nox                               # plots (PNG through pngcairo)
   libmatio-dev                              # MATLAB .mat records (ohmdem-post --input mat)
+  zlib1g-dev                                # compressed MAT variables checked whole
 )
 missing=()
 for p in "${packages[@]}"; do

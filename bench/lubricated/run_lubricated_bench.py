@@ -4,7 +4,8 @@
 the mechanics alone, the dry R evaluated at every step (-var Revery 1), and the lubricated
 bearing's impedance evaluated at every step (-var Revery 1 -var lubricant VG68; the compute
 then gives R and Z at each evaluation), with ratios and what each mode gives for the quantity
-an instrument measures across the bearing (|Z| and its phase at fexc).
+an instrument measures across the bearing (|Z| and its phase at fexc), and the lubricated mode
+with the plain kernel (-var kernel plain) against the default lanes kernel.
 
 Two measures, as bench/resistance: wall time (the fastest of ROUNDS interleaved runs per mode:
 a shared machine only ever slows a run down) and, if valgrind is installed, instructions in
@@ -41,6 +42,8 @@ MODES = {
     "mechanics": ["-var", "Revery", "0"],
     "dry": ["-var", "Revery", "1"],
     "lubricated": ["-var", "Revery", "1", "-var", "lubricant", "VG68"],
+    # the same with the plain kernel (one contact at a time: the reference the lanes match)
+    "lub_plain": ["-var", "Revery", "1", "-var", "lubricant", "VG68", "-var", "kernel", "plain"],
 }
 
 
@@ -166,6 +169,15 @@ def main():
                  f"run-up); step {ir_steady['lubricated'] / ir_steady['dry']:.3f}x "
                  f"(instructions, steady rolling 15-17 ms)")
     print(line + "; goal 1.5x")
+    line = (f"kernel lanes / plain: evaluation alone "
+            f"{(t['lubricated'] - mech) / (t['lub_plain'] - mech):.2f}x (wall)")
+    if ir:
+        lanes = ir_steady["lubricated"] - ir_steady["mechanics"]
+        plain = ir_steady["lub_plain"] - ir_steady["mechanics"]
+        line += f", {lanes / plain:.2f}x (instructions, steady rolling)"
+    same = all(bool((steady["lubricated"][c] == steady["lub_plain"][c]).all())
+               for c in ("Zabs", "Zphase", "Cb", "Rb", "hmin_inner", "hmin_outer", "lambda_min"))
+    print(line + f"; the two signals {'identical' if same else 'DIFFER'}")
     # What an instrument across the bearing reads (|Z|, phase at fexc = 10 kHz), per mode.
     z, ph, cb = mean("lubricated", "Zabs"), mean("lubricated", "Zphase"), mean("lubricated", "Cb")
     r = mean("dry", "R")

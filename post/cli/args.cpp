@@ -121,6 +121,14 @@ void Args::print_help(std::ostream &out) const
   out << "  --help                  this text\n";
 }
 
+std::vector<std::string> Args::given_values(const std::string &except) const
+{
+  std::vector<std::string> all;
+  for (const auto &kv : given_)
+    if (kv.first != except) all.insert(all.end(), kv.second.begin(), kv.second.end());
+  return all;
+}
+
 bool Args::has(const std::string &name) const
 {
   return given_.count(name) != 0;

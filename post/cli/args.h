@@ -54,6 +54,8 @@ class Args {
   // One of the words in `choices` ("peaks|bins|envelope"), else an error listing them.
   std::string choice(const std::string &name, const std::vector<std::string> &choices) const;
   const std::vector<std::string> &positional() const { return positional_; }
+  // every value of every option given but `except`
+  std::vector<std::string> given_values(const std::string &except = "") const;
   const std::string &command() const { return command_; }
 
  private:

@@ -308,7 +308,11 @@ int run_collect(const std::vector<std::string> &argv)
 
   rep.meta =
       collect_meta(a, given, recursive, folders, g, quantity, unit, any_duty, want_diagnosis);
-  Output out(a);
+  std::vector<std::string> read;  // the runs' files: --output must be none of them
+  for (const std::string &run : folders.runs) {
+    for (const char *f : {"/signal.txt", "/signal.npy", "/run.json"}) read.push_back(run + f);
+  }
+  Output out(a, read);
   out.write(rep);
   return 0;
 }

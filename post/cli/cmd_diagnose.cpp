@@ -400,8 +400,11 @@ int run_diagnose(const std::vector<std::string> &argv)
     if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", "", sized, "");
     d.located = locate_by_template(s, d, o);
   }
-  if (a.has("--pulse-fold-out"))
+  if (a.has("--pulse-fold-out")) {
+    refuse_input_as_output("--pulse-fold-out", a.get("--pulse-fold-out"),
+                           input_files(a, "--pulse-fold-out"));
     write_fold(a.get("--pulse-fold-out"), record_fold(s, d, o), input_options(a).files.at(0));
+  }
   name_flags(d.detection);
   d.located.method = flag_named(d.located.method);
   d.located.height_source = flag_named(d.located.height_source);

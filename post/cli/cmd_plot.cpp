@@ -175,6 +175,22 @@ std::string run_name(const RunMetadata &meta)
   return name;
 }
 
+// A logarithmic axis shows values > 0 only: a figure without one (an all-zero spectrum) is an
+// error of its own, not gnuplot's "all points y value undefined".
+void check_logy(const Figure &fig)
+{
+  if (!fig.logy || !fig.image.empty()) return;
+  std::string names;
+  for (const PlotSeries &s : fig.series) {
+    for (double y : s.y)
+      if (std::isfinite(y) && y > 0) return;
+    names += (names.empty() ? "" : ", ") + s.title;
+  }
+  throw Error("plot --logy: no value of the figure is > 0 (" + names +
+              ": all zero or negative); a logarithmic axis has nothing to draw: plot without "
+              "--logy");
+}
+
 }  // namespace
 
 int run_plot(const std::vector<std::string> &argv)
@@ -188,6 +204,7 @@ int run_plot(const std::vector<std::string> &argv)
   declare_options(a);
   if (!a.parse(argv, std::cout)) return 0;
   if (!a.has("--output")) throw Error("plot: give the image file with --output FILE.png");
+  refuse_input_as_output("--output", a.get("--output"), input_files(a));
   const std::string kind =
       a.choice("--kind", {"signal", "spectrum", "envelope", "spectrogram", "indicators"});
   Figure fig;
@@ -209,6 +226,7 @@ int run_plot(const std::vector<std::string> &argv)
   if (!run.empty()) fig.title = "run " + run + ": " + fig.title;
   if (a.has("--title")) fig.title = a.get("--title");
   set_size(a, fig);
+  check_logy(fig);
   render_png(fig, a.get("--output"));
   std::cout << "wrote " << a.get("--output") << "\n";
   return 0;

@@ -77,7 +77,7 @@ int checked_exit(int status)
     return 1;
   }
   if (!failed_outputs().empty()) {
-    for (const auto &f : failed_outputs()) std::cerr << "ERROR: writing '" << f << "' failed\n";
+    for (const auto &f : failed_outputs()) std::cerr << "ERROR: " << f << "\n";
     return 1;
   }
   return status;

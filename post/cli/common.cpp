@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/common.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <iostream>
 
 #include "core/constants.h"
@@ -135,20 +138,56 @@ void add_output_options(Args &a)
   a.option("--unit", "UNIT", "unit of the signal, for column names (default: ohm for R)");
 }
 
-Output::Output(const Args &a) : out_(&std::cout), format_(parse_output_format(a.get("--format")))
+std::vector<std::string> input_files(const Args &a, const std::string &output,
+                                     const std::vector<std::string> &more)
+{
+  std::vector<std::string> files = a.positional();
+  const std::vector<std::string> values = a.given_values(output);
+  files.insert(files.end(), values.begin(), values.end());
+  if (!a.positional().empty()) files.push_back(find_run_metadata(a.positional().front()));
+  files.insert(files.end(), more.begin(), more.end());
+  return files;
+}
+
+void refuse_input_as_output(const std::string &option, const std::string &output,
+                            const std::vector<std::string> &inputs)
+{
+  struct stat out {};
+  if (::stat(output.c_str(), &out) != 0 || !S_ISREG(out.st_mode)) return;  // a new file
+  for (const std::string &in : inputs) {
+    struct stat st {};
+    if (in.empty() || in == "-" || ::stat(in.c_str(), &st) != 0) continue;
+    if (st.st_dev == out.st_dev && st.st_ino == out.st_ino)
+      throw Error("option " + option + " " + output + " is one of the inputs (" + in +
+                  (in == output ? "" : ", the same file") +
+                  "): writing it would destroy what is read; give another file");
+  }
+}
+
+Output::Output(const Args &a, const std::vector<std::string> &more_inputs)
+    : out_(&std::cout),
+      format_(parse_output_format(a.get("--format"))),
+      unwinding_(std::uncaught_exceptions())
 {
   if (a.has("--output")) {
     path_ = a.get("--output");
-    file_ = std::make_unique<std::ofstream>(path_);
-    if (!*file_) throw Error("cannot write '" + path_ + "'");
+    refuse_input_as_output("--output", path_, input_files(a, "--output", more_inputs));
+    file_ = std::make_unique<PendingStream>(path_);
   }
 }
 
 Output::~Output()
 {
   if (!file_) return;
-  file_->close();  // flushes: a full disk shows here
-  if (file_->fail()) failed_outputs().push_back(path_);
+  // a command that failed (an exception leaves through here) writes nothing: the error is its
+  if (std::uncaught_exceptions() > unwinding_) return;
+  const std::string why = file_->finish();
+  if (why.empty()) return;
+  const PendingFile &f = file_->file();
+  failed_outputs().push_back("writing '" + path_ + "' failed: " + why + "; " +
+                             (f.in_place()   ? "the output is lost or cut"
+                              : f.replaces() ? "the file is left as it was"
+                                             : "no file is left"));
 }
 
 std::vector<std::string> &failed_outputs()
@@ -170,6 +209,9 @@ void add_bearing_options(Args &a)
   a.option("--db", "M", "ball diameter (m)");
   a.option("--dp", "M", "pitch diameter (m)");
   a.option("--beta", "DEG", "contact angle (degrees)");
+  a.option("--contact-angle", "DEG",
+           "contact angle (degrees), as --beta; default: run.json's (a model 3d run's measured "
+           "mean)");
   a.option("--factors", "LIST",
            "BPFO,BPFI,BSF,FTF (or BPFO,BPFI): the maker's defect frequencies as multiples of "
            "the shaft frequency, for a bearing in no catalog (they win over the geometry)");
@@ -207,7 +249,10 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     have = true;
     c.geometry_source = meta.path;
   }
-  const bool explicit_geom = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has("--beta");
+  if (a.has("--beta") && a.has("--contact-angle"))
+    throw Error("give the contact angle once: --beta or --contact-angle, not both");
+  const char *angle = a.has("--contact-angle") ? "--contact-angle" : "--beta";
+  const bool explicit_geom = a.has("--nb") || a.has("--db") || a.has("--dp") || a.has(angle);
   if (explicit_geom) {
     if (!have && !(a.has("--nb") && a.has("--db") && a.has("--dp")))
       throw Error(
@@ -219,7 +264,7 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     }
     if (a.has("--db")) g.db = a.number("--db");
     if (a.has("--dp")) g.dp = a.number("--dp");
-    if (a.has("--beta")) g.contact_angle_deg = a.number("--beta");
+    if (a.has(angle)) g.contact_angle_deg = a.number(angle);
     if (have) g.name += " (modified)";
     have = true;
     c.geometry_source = "command line";
@@ -240,17 +285,25 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
                a.has("--rpm-variable");
   if (speeds > 1)
     throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr, --omega or --rpm-variable");
+  // the speed in the option's own unit, refused when not > 0 naming the option
+  const auto speed = [&](const char *name, const char *unit) {
+    return a.number_in(name, NAN, Range::above(0), "a shaft speed", unit);
+  };
   double fr = NAN;
-  if (a.has("--rpm")) fr = a.number("--rpm") / 60;
-  if (a.has("--shaft-hz")) fr = a.number("--shaft-hz");
-  if (a.has("--fr")) fr = a.number("--fr");
-  if (a.has("--omega")) fr = a.number("--omega") / (2 * kPi);
+  if (a.has("--rpm")) fr = speed("--rpm", "rpm") / 60;
+  if (a.has("--shaft-hz")) fr = speed("--shaft-hz", "Hz");
+  if (a.has("--fr")) fr = speed("--fr", "Hz");
+  if (a.has("--omega")) fr = speed("--omega", "rad/s") / (2 * kPi);
   if (a.has("--rpm-variable")) {
     if (a.positional().empty()) throw Error("option --rpm-variable needs a MAT input file");
-    fr = read_mat_scalar(a.positional().front(), a.get("--rpm-variable")) / 60;
+    const std::string &mat = a.positional().front(), &name = a.get("--rpm-variable");
+    const double rpm = read_mat_scalar(mat, name);
+    if (!(rpm > 0))
+      throw Error(mat + ": variable '" + name + "' (--rpm-variable) is " + format_number(rpm) +
+                  "; a shaft speed must be > 0 rpm");
+    fr = rpm / 60;
   }
   if (speeds) {
-    if (!(fr > 0)) throw Error("the shaft speed must be > 0");
     c.fr = fr;
     c.fr_source = a.has("--rpm-variable") ? "MAT variable " + a.get("--rpm-variable") + " (rpm)"
                                           : "command line";

@@ -13,6 +13,7 @@
 #include "bearing/bearing.h"
 #include "cli/args.h"
 #include "cli/setting_flags.h"
+#include "core/pending_file.h"
 #include "dsp/envelope.h"
 #include "io/load_signal.h"
 #include "io/run_metadata.h"
@@ -43,24 +44,38 @@ Signal load_input(const Args &a, const RunMetadata &meta, std::size_t min_sample
                   bool skip_sliding_phase = false, const std::string &rate_option = "--rate");
 
 void add_output_options(Args &a);
-// The --output files whose writing failed (a full disk): the command line exits non-zero
-// naming them (commands.cpp), after the command has returned.
+// The --output files whose writing failed (a full disk), each as its message ("writing 'F'
+// failed: No space left on device; no file is left"): the command line exits non-zero with
+// them (commands.cpp), after the command has returned.
 std::vector<std::string> &failed_outputs();
+// The files a command reads: its inputs, the value of every option given but `output` (the
+// option naming the file written) that names a file (--metadata, --log, --baseline, ...), the
+// run.json beside its first input, and `more`.
+std::vector<std::string> input_files(const Args &a, const std::string &output = "--output",
+                                     const std::vector<std::string> &more = {});
+// Refuses `output` (the value of `option`) when it is one of `inputs` (the same file, by device
+// and inode: a link or another path to it too): writing it would destroy the record.
+void refuse_input_as_output(const std::string &option, const std::string &output,
+                            const std::vector<std::string> &inputs);
 class Output {
  public:
-  explicit Output(const Args &a);  // --output FILE or stdout; --format
-  ~Output();                       // closes the file and notes a failed write in failed_outputs()
+  // --output FILE (refused when it is one of input_files(a, more_inputs)) or stdout; --format
+  // The file is written under a temporary name and renamed onto FILE when whole
+  // (core/pending_file.h): a failed write leaves no file, or the former one unchanged.
+  explicit Output(const Args &a, const std::vector<std::string> &more_inputs = {});
+  ~Output();  // finishes the file and notes a failed write in failed_outputs()
   Output(const Output &) = delete;
   Output &operator=(const Output &) = delete;
-  std::ostream &stream() { return file_ ? *file_ : *out_; }
+  std::ostream &stream() { return file_ ? file_->stream() : *out_; }
   OutputFormat format() const { return format_; }
   void write(const Result &r) { write_result(stream(), r, format_); }
 
  private:
-  std::unique_ptr<std::ofstream> file_;
+  std::unique_ptr<PendingStream> file_;
   std::string path_;
   std::ostream *out_;
   OutputFormat format_;
+  int unwinding_;  // exceptions in flight when made: more at its end means the command failed
 };
 
 void add_bearing_options(Args &a);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/spectrum_options.h"
 
+#include <algorithm>
 #include <climits>
 #include <limits>
 
@@ -42,7 +43,17 @@ SpectrumOptions spectrum_options(const Args &a, std::size_t n, double rate)
   }
   o.overlap = a.number("--overlap", 0.5);
   o.pad = static_cast<std::size_t>(a.integer_in("--pad", 1, 1, 64));
-  if (a.has("--nfft")) o.nfft = static_cast<std::size_t>(a.integer_in("--nfft", 0, 4));
+  if (a.has("--nfft")) {
+    // as --pad: at most 64 x the segment (a longer transform adds no information, only memory)
+    const std::size_t seg = o.segment ? o.segment : n;
+    const long long hi = 64 * static_cast<long long>(std::max<std::size_t>(seg, 4));
+    const long long v = a.integer("--nfft", 0);
+    if (v < 4 || v > hi)
+      throw Error("option --nfft expects a transform length in 4.." + std::to_string(hi) +
+                  " (at most 64 x the segment of " + std::to_string(seg) +
+                  " samples, as --pad 64), got " + std::to_string(v));
+    o.nfft = static_cast<std::size_t>(v);
+  }
   return o;
 }
 

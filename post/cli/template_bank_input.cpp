@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/pending_file.h"
 #include "dsp/butterworth.h"
 
 namespace ohmdem::post::cli {
@@ -173,8 +175,13 @@ void check_bank(const BankFile &b, const Signal &s, const std::string &record_pa
 void write_fold(const std::string &path, const FoldedPulse &p, const std::string &record_path)
 {
   if (!p.valid) throw Error("diagnose: --pulse-fold-out: no fold of the record: " + p.note);
-  std::ofstream out(path);
-  if (!out) throw Error("diagnose: --pulse-fold-out " + path + ": cannot write the file");
+  std::unique_ptr<PendingStream> file;  // renamed onto `path` when whole
+  try {
+    file = std::make_unique<PendingStream>(path);
+  } catch (const Error &e) {
+    throw Error(std::string("diagnose: --pulse-fold-out: ") + e.what());
+  }
+  std::ostream &out = file->stream();
   out.precision(9);
   out << "# the record's pulse fold (diagnose --pulse-fold-out): relative to the level\n"
       << "# record: " << record_path << "\n"
@@ -186,7 +193,9 @@ void write_fold(const std::string &path, const FoldedPulse &p, const std::string
       << "# bins no pass fell in: " << p.empty << "\n"
       << "# Y SE\n";
   for (std::size_t j = 0; j < p.y.size(); ++j) out << p.y[j] << ' ' << p.se[j] << '\n';
-  if (!out) throw Error("diagnose: --pulse-fold-out " + path + ": cannot write the file");
+  const std::string why = file->finish();
+  if (!why.empty())
+    throw Error("diagnose: --pulse-fold-out " + path + ": cannot write the file: " + why);
 }
 
 }  // namespace ohmdem::post::cli

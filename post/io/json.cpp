@@ -164,7 +164,14 @@ class Parser {
       do {
         skip();
         if (i_ >= s_.size() || s_[i_] != '"') fail("expected a string key");
+        const std::size_t key_at = i_;
         std::string k = string();
+        // RFC 8259 leaves a repeated name's meaning open: a second value (an unescaped text
+        // written into the file) must not silently replace the first
+        if (o.find(k)) {
+          i_ = key_at;
+          fail("the key \"" + k + "\" appears twice in one object (which value is meant?)");
+        }
         expect(':');
         o.set(k, value(depth + 1));
       } while (eat(','));

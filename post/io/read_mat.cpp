@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/sampled_signal.h"
+#include "io/mat_integrity.h"
 
 namespace ohmdem::post {
 
@@ -44,7 +46,7 @@ MatFile open_mat(const std::string &path)
 {
   {
     std::ifstream probe(path, std::ios::binary);
-    if (!probe) throw Error(path + ": cannot open");
+    if (!probe) throw Error(path + ": cannot open: " + std::strerror(errno));
   }
   static const bool log_set = [] {
     Mat_LogInitFunc("ohmdem-post", capture_log);
@@ -60,6 +62,9 @@ MatFile open_mat(const std::string &path)
     if (!last_matio_message().empty()) why += " (libmatio: " + last_matio_message() + ")";
     throw Error(path + ": " + why);
   }
+  // libmatio reads a cut variable's missing part as zeros and a damaged compressed one as what
+  // zlib made of it: the file's structure and checksums are checked first
+  check_mat_integrity(path);
   return f;
 }
 

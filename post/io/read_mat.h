@@ -28,7 +28,7 @@ struct MatVariableInfo {
 };
 
 // The variables of a MAT file, in file order. Throws Error for a file libmatio cannot open as
-// MAT v4/v5/v7.3.
+// MAT v4/v5/v7.3, or a damaged one (io/mat_integrity.h: every reader here checks it).
 std::vector<MatVariableInfo> mat_variables(const std::string &path);
 
 // The values of a real numeric vector (1xN or Nx1; a 1x1 is a vector of one) as doubles.

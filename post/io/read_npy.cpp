@@ -312,15 +312,22 @@ ColumnTable read_npy(const std::string &path, const TableOptions &opt)
   for (std::uint64_t c = 0; c < cols; ++c) row_bytes += l.fields[l.records ? c : 0].bytes;
   const std::uint64_t size = std::filesystem::file_size(path);
   const std::uint64_t present = (size - std::min(size, l.data_offset)) / row_bytes;
-  if (l.records && (size - std::min(size, l.data_offset)) % row_bytes != 0)
+  const std::uint64_t cut = (size - std::min(size, l.data_offset)) % row_bytes;
+  // Rows the header counts are never dropped: a file cut inside them is refused (as numpy.load
+  // refuses it). A row cut after them (fix signal/table stopped while writing rows it had not
+  // counted yet) is dropped with a warning, the whole ones kept.
+  if (present < rows)
+    throw Error(path + ": truncated: the header counts " + std::to_string(rows) +
+                " rows, the file holds " + std::to_string(present) +
+                (cut ? " whole rows and " + std::to_string(cut) + " of the next row's " +
+                           std::to_string(row_bytes) + " bytes"
+                     : std::string()) +
+                " (a cut file; numpy.load refuses it too)");
+  if (l.records && cut)
     warn(path +
          ": dropped the last row, cut before its end (a run stopped while writing it: a "
          "crash or a full disk): " +
-         std::to_string((size - std::min(size, l.data_offset)) % row_bytes) + " of its " +
-         std::to_string(row_bytes) + " bytes");
-  if (present < rows)
-    throw Error(path + ": truncated: the header counts " + std::to_string(rows) +
-                " rows, the file holds " + std::to_string(present));
+         std::to_string(cut) + " of its " + std::to_string(row_bytes) + " bytes");
   // More data than the header describes: a record table may hold uncounted rows (fix
   // signal/table stopped between writing a block and counting it: one block at most, fewer
   // than the rows counted before); anything else means an element type that is not the data's

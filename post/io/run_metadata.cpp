@@ -23,6 +23,15 @@ std::optional<double> number(const Json &o, const std::string &key, const std::s
   return v->number();
 }
 
+// A count (the number of balls): a whole number >= 1, never rounded (13.5 balls is no bearing).
+std::optional<double> count(const Json &o, const std::string &key, const std::string &path)
+{
+  const std::optional<double> v = number(o, key, path);
+  if (v && !(*v >= 1 && *v <= 1e9 && std::floor(*v) == *v))
+    throw Error(path + ": \"" + key + "\" must be a whole number >= 1, got " + Json(*v).dump());
+  return v;
+}
+
 std::optional<std::string> text(const Json &o, const std::string &key, const std::string &path)
 {
   const Json *v = o.find(key);
@@ -48,7 +57,7 @@ RunMetadata read_run_metadata(const std::string &path)
   m.defect = text(j, "defect", path);
   m.load = text(j, "load", path);
   m.omega_inner = number(j, "omega_inner", path);
-  m.nb = number(j, "nb", path);
+  m.nb = count(j, "nb", path);
   m.db = number(j, "db", path);
   m.dp = number(j, "dp", path);
   m.catalog_name = text(j, "catalog_name", path);

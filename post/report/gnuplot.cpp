@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/pending_file.h"
 
 namespace ohmdem::post {
 
@@ -24,12 +25,49 @@ bool executable(const std::string &p)
   return !p.empty() && ::access(p.c_str(), X_OK) == 0;
 }
 
-// gnuplot string literal in single quotes: only the quote itself needs doubling
+bool is_control(unsigned char c)
+{
+  return c < 0x20 || c == 0x7f;
+}
+
+// The text with each control character written visibly (\n, \r, \t, \xHH): a newline in a
+// gnuplot script ends the command, and what follows it would run as a command of its own.
+std::string visible(const std::string &s)
+{
+  std::string v;
+  for (unsigned char c : s) {
+    if (!is_control(c)) {
+      v += static_cast<char>(c);
+    } else if (c == '\n' || c == '\r' || c == '\t') {
+      v += c == '\n' ? "\\n" : c == '\r' ? "\\r" : "\\t";
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      v += buf;
+    }
+  }
+  return v;
+}
+
+// A gnuplot string literal in single quotes (no backquote substitution, no escapes: the quote
+// itself is doubled) of a text to show (titles, labels, legends): control characters shown as
+// visible escapes, so that no text (a title, a run folder's name, a column's) ends the line.
 std::string quote(const std::string &s)
 {
   std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("''") : std::string(1, c);
+  for (char c : visible(s)) q += c == '\'' ? std::string("''") : std::string(1, c);
   return q + "'";
+}
+
+// A file name in a gnuplot script: a control character cannot be written in a single-quoted
+// literal (it would end the line) and escaping it would name another file, so it is refused.
+std::string quote_path(const std::string &path, const std::string &what)
+{
+  for (unsigned char c : path)
+    if (is_control(c))
+      throw Error("cannot plot: " + what + " '" + visible(path) +
+                  "' holds a control character in its name (gnuplot cannot be given it)");
+  return quote(path);
 }
 
 class TempDir {
@@ -62,47 +100,6 @@ class TempDir {
   std::vector<std::string> files_;
 };
 
-// The image is written to a temporary file beside the target and renamed onto it only once
-// complete: a failed plot leaves neither an empty nor a partial PNG (nor an older one changed).
-class PendingFile {
- public:
-  explicit PendingFile(const std::string &target) : target_(target)
-  {
-    const auto slash = target.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "" : target.substr(0, slash + 1);
-    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
-    std::string tmpl = dir + "." + base + ".tmp-XXXXXX";
-    std::vector<char> buf(tmpl.begin(), tmpl.end());
-    buf.push_back('\0');
-    const int fd = ::mkstemp(buf.data());
-    if (fd < 0) throw Error("cannot write '" + target + "': " + std::strerror(errno));
-    ::close(fd);
-    path_ = buf.data();
-  }
-  ~PendingFile()
-  {
-    if (!path_.empty()) ::unlink(path_.c_str());
-  }
-  PendingFile(const PendingFile &) = delete;
-  PendingFile &operator=(const PendingFile &) = delete;
-  const std::string &path() const { return path_; }
-  void commit()
-  {
-    ::chmod(path_.c_str(), 0644 & ~current_umask());
-    if (::rename(path_.c_str(), target_.c_str()) != 0)
-      throw Error("cannot write '" + target_ + "': " + std::strerror(errno));
-    path_.clear();
-  }
-
- private:
-  static mode_t current_umask()
-  {
-    const mode_t m = ::umask(0);
-    ::umask(m);
-    return m;
-  }
-  std::string target_, path_;
-};
 // The image as "x y z" rows, one blank line between x columns (gnuplot grid data).
 void write_image(const PlotImage &im, const std::string &path)
 {
@@ -225,13 +222,14 @@ void render_png(const Figure &fig, const std::string &png_path)
         "plot needs gnuplot (Debian package gnuplot-nox); none found in PATH "
         "(or set OHMDEM_GNUPLOT)");
   if (fig.series.empty() && fig.image.empty()) throw Error("plot: nothing to draw");
+  quote_path(png_path, "the image file");  // refused before anything is created
   TempDir dir;
   PendingFile png(png_path);
   std::ostringstream script;
   script.precision(17);
   script << "set terminal pngcairo noenhanced size " << fig.width << "," << fig.height
          << " font 'Sans,10'\n"
-         << "set output " << quote(png.path()) << "\n"
+         << "set output " << quote_path(png.path(), "the image") << "\n"
          << "set title " << quote(fig.title) << "\n"
          << "set xlabel " << quote(fig.xlabel) << "\n"
          << "set ylabel " << quote(fig.ylabel) << "\n"
@@ -302,7 +300,8 @@ void render_png(const Figure &fig, const std::string &png_path)
   if (!fig.image.empty()) {
     const std::string data = dir.file("image.dat");
     write_image(fig.image, data);
-    script << quote(data) << " using 1:2:3 with image notitle" << (fig.series.empty() ? "" : ", ");
+    script << quote_path(data, "the data file") << " using 1:2:3 with image notitle"
+           << (fig.series.empty() ? "" : ", ");
   }
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const PlotSeries &s = fig.series[k];
@@ -316,8 +315,8 @@ void render_png(const Figure &fig, const std::string &png_path)
     }
     out.close();
     if (!out) throw Error("cannot write plot data to " + data);
-    script << (k ? ", " : "") << quote(data) << " using 1:2 with " << s.style << " lw 1.2 title "
-           << quote(s.title);
+    script << (k ? ", " : "") << quote_path(data, "the data file") << " using 1:2 with " << s.style
+           << " lw 1.2 title " << quote(s.title);
   }
   script << "\n";
   const std::string script_path = dir.file("figure.gp");
@@ -348,9 +347,10 @@ void render_png(const Figure &fig, const std::string &png_path)
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw Error("gnuplot failed writing '" + png_path + "': " + msg.str());
   struct stat st {};
-  if (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0)
+  if (!png.in_place() && (::stat(png.path().c_str(), &st) != 0 || st.st_size == 0))
     throw Error("gnuplot wrote no image to '" + png_path + "': " + msg.str());
-  png.commit();
+  const std::string why = png.commit();
+  if (!why.empty()) throw Error("cannot write '" + png_path + "': " + why);
 }
 
 }  // namespace ohmdem::post

@@ -110,6 +110,20 @@ void FixBearingBody::check_common_axis(double scale)
   }
 }
 
+void FixBearingBody::check_common_model()
+{
+  for (int k = 0; k < modify->nfix; ++k) {
+    const auto *other = dynamic_cast<const FixBearingBody *>(modify->fix[k]);
+    if (!other || other == this || other->three_d() == three_d()) continue;
+    char msg[512];
+    std::snprintf(msg, sizeof msg,
+                  "keyword 'model': this body is model %s and fix %s '%s' model %s: the races "
+                  "and the cage of a bearing share one model",
+                  three_d() ? "3d" : "2d", other->style, other->id, other->three_d() ? "3d" : "2d");
+    error->fix_error(FLERR, this, msg);
+  }
+}
+
 void FixBearingBody::set_extensive(std::vector<int> flags)
 {
   extensive_ = std::move(flags);

@@ -23,6 +23,8 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
   // The bearing axis given by 'centre' (a race's centre moves from it under load radial).
   double axis_x() const { return axis_x_; }
   double axis_y() const { return axis_y_; }
+  // The 3D bearing (model 3d) or the planar one: every race and the cage share one model.
+  virtual bool three_d() const { return false; }
 
  protected:
   // vector_size global values and peratom_cols per-atom columns of output; a global restart
@@ -53,6 +55,8 @@ class FixBearingBody : public Fix, public ohmdem::BearingBody {
   // Stops the run when another race or cage turns about another axis (`scale`: the length
   // below which two axes are the same, a millionth of a nanometre of the body's size).
   void check_common_axis(double scale);
+  // Stops the run when another race or cage has the other model (2d, 3d).
+  void check_common_model();
   // Which global outputs are sums over the balls (extensive: thermo_modify norm divides them
   // by the atom count), one flag per output.
   void set_extensive(std::vector<int> flags);

@@ -44,6 +44,10 @@ FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg)
   parse(narg, arg);
   // sums over the balls: contacts, pocket forces, torque, broken-bar contacts
   set_extensive({0, 0, 1, 1, 0, 1, 0, 1});
+  if (three_d_) {
+    size_vector = kVectorSize + 1;  // model 3d: the cage's axial position
+    set_extensive({0, 0, 1, 1, 0, 1, 0, 1, 0});
+  }
 }
 
 FixBearingCage::~FixBearingCage() = default;
@@ -78,8 +82,12 @@ void FixBearingCage::parse(int narg, char **arg)
       cy_ = axis_y_ = a.number(kw, "two coordinates x y (m)");
     } else if (kw == "angle") {
       angle0_ = a.number(kw, "the angular position of pocket 0 (degrees)") * ohmdem::kPi / 180.0;
+    } else if (kw == "model") {
+      const std::string m = a.word(kw, "2d or 3d");
+      if (m != "2d" && m != "3d") a.fail(kw, "2d or 3d", m.c_str());
+      three_d_ = m == "3d";
     } else {
-      a.unknown(kw.c_str(), "pockets radius clearance type mass inertia drag centre angle");
+      a.unknown(kw.c_str(), "pockets radius clearance type mass inertia drag centre angle model");
     }
   }
   const char *names[5] = {"pockets", "radius", "clearance", "type", "mass"};
@@ -100,7 +108,10 @@ void FixBearingCage::post_create()
 {
   // Which pocket each ball sits in (fixed at the first run; -1 = not yet) and the last
   // pocket force.
-  create_state({"-1.", "0.", "0.", "0."});  // POCKET, FORCE, FX, FY
+  if (three_d_)
+    create_state({"-1.", "0.", "0.", "0.", "0."});  // POCKET, FORCE, FX, FY, FZ
+  else
+    create_state({"-1.", "0.", "0.", "0."});  // POCKET, FORCE, FX, FY
   init();
 }
 
@@ -127,6 +138,7 @@ void FixBearingCage::build_model()
     error->fix_error(FLERR, this, ex.what());
   }
   check_common_axis(pitch_radius_);
+  check_common_model();
   const double spacing = 2.0 * ohmdem::kPi * pitch_radius_ / npockets_;
   if (2.0 * (rg + clearance_) >= spacing)
     error->fix_error(FLERR, this,
@@ -191,6 +203,7 @@ void FixBearingCage::setup(int vflag)
 {
   build_model();
   assign_pockets();
+  if (three_d_ && restored_) reapply_axial_forces_3d();
   if (reapply_restored_forces(FX, FY, -1)) return;
   post_force(vflag);
 }
@@ -200,15 +213,24 @@ void FixBearingCage::initial_integrate(int)
   const double dt = update->dt;
   omega_ += 0.5 * dt * (torque_ - drag_ * omega_) / inertia_;
   angle_ += dt * omega_;
+  if (three_d_) {
+    axial_half_kick_3d(dt);
+    cz_ += dt * vz_;
+  }
 }
 
 void FixBearingCage::final_integrate()
 {
   omega_ += 0.5 * update->dt * (torque_ - drag_ * omega_) / inertia_;
+  if (three_d_) axial_half_kick_3d(update->dt);
 }
 
 void FixBearingCage::post_force(int)
 {
+  if (three_d_) {
+    post_force_3d();
+    return;
+  }
   array_atom = state_->array_atom;  // may have moved when atoms were exchanged
   double **x = atom->x, **v = atom->v, **f = atom->f;
   ohmdem::CageContactState s;
@@ -304,6 +326,8 @@ double FixBearingCage::compute_vector(int n)
       return ball_orbit_;
     case 7:
       return nmasked_;
+    case 8:
+      return cz_;  // model 3d only
     default:
       return 0.0;
   }
@@ -311,6 +335,10 @@ double FixBearingCage::compute_vector(int n)
 
 void FixBearingCage::write_restart(FILE *fp)
 {
+  if (three_d_) {
+    write_restart_3d(fp);
+    return;
+  }
   const double list[kRestartSize] = {
       angle_,  omega_,  static_cast<double>(npockets_),  torque_,
       sum_fn_, max_fn_, static_cast<double>(ncontacts_), ball_orbit_};
@@ -322,6 +350,7 @@ void FixBearingCage::restart(char *buf)
   const double *list = reinterpret_cast<const double *>(buf);
   if (static_cast<int>(list[2]) != npockets_)
     error->fix_error(FLERR, this, "restart data has a different number of pockets");
+  if (three_d_) restart_3d(list);
   angle_ = list[0];
   omega_ = list[1];
   torque_ = list[3];

@@ -52,6 +52,8 @@ class FixBearingCage : public FixBearingBody {
     y = cy_;
   }
   ohmdem::BearingSurface surface() const override;
+  // model 3d (fix_bearing_cage_3d.cpp): cylindrical pockets, the cage free along its axis.
+  bool three_d() const override { return three_d_; }
 
  private:
   void parse(int narg, char **arg);
@@ -84,6 +86,18 @@ class FixBearingCage : public FixBearingBody {
   ohmdem::OrderedGather<3> gather_;
 
   std::unique_ptr<ohmdem::CageContactModel> model_;
+
+  // --- model 3d (fix_bearing_cage_3d.cpp)
+  void post_force_3d();
+  void axial_half_kick_3d(double dt);
+  void reapply_axial_forces_3d();
+  void write_restart_3d(FILE *fp);
+  void restart_3d(const double *list);
+  bool three_d_ = false;
+  double cz_ = 0, vz_ = 0;  // the cage's axial position and velocity (m, m/s)
+  double axial_ = 0;        // the balls' axial force on it (N)
+  std::vector<ohmdem::TaggedValues<1> > mine_axial_;  // per touching ball: its axial force
+  ohmdem::OrderedGather<1> gather_axial_;
 };
 
 }  // namespace LAMMPS_NS

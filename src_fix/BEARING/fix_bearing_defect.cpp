@@ -9,6 +9,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -91,8 +92,13 @@ FixBearingDefect::FixBearingDefect(LAMMPS *lmp, int narg, char **arg) : Fix(lmp,
         side_ = -1;
       else
         a.fail(kw, "leading or trailing", sd.c_str());
+    } else if (kw == "width") {
+      width_ =
+          a.non_negative(kw, "the pit's extent across the raceway, >= 0 (m; 0: the whole track)");
+    } else if (kw == "track") {
+      track_ = a.number(kw, "the contact angle of the pit's centre line (degrees)") * kDeg;
     } else {
-      a.unknown(kw.c_str(), "race atom cage position size arc depth start pocket side");
+      a.unknown(kw.c_str(), "race atom cage position size arc depth start pocket side width track");
     }
   }
   const bool zone = kind_ == Kind::Inner || kind_ == Kind::Outer || kind_ == Kind::Ball;
@@ -152,6 +158,11 @@ void FixBearingDefect::init()
     if (!race_)
       fail(std::string("an ") + (want_inner ? "inner" : "outer") + " defect needs an " +
            (want_inner ? "inner" : "outer") + " race among the 'race' IDs");
+    if (width_ > 0.0 && !race_->surface().three_d)
+      fail(
+          "keyword 'width' expects 0 with a model 2d race (its contacts have no place across "
+          "the groove), got " +
+          number_text(width_));
   } else if (kind_ == Kind::Cage) {
     cage_ = find_body(target_, true);
     if (!cage_) fail("keyword 'cage' expects the ID of a fix bearing/cage, got '" + target_ + "'");
@@ -286,6 +297,24 @@ double FixBearingDefect::recess(const ohmdem::BearingSurface &race, std::int64_t
   }
   if (ohmdem::in_pit(pit, s)) masked = true;
   return ohmdem::pit_recess(pit, s);
+}
+
+// Model 3d: a pit `width` across the raceway, centred on the contact angle `track`, holds the
+// contacts whose centre lies Rg (alpha - track) across the groove within it; the recess is the
+// smaller of the profiles along and across (the ball rests on the nearer edge).
+double FixBearingDefect::recess_at(const ohmdem::BearingSurface &race, std::int64_t tag, double dx,
+                                   double dy, double alpha, bool &masked) const
+{
+  if (!(width_ > 0.0) || !(kind_ == Kind::Inner || kind_ == Kind::Outer))
+    return recess(race, tag, dx, dy, masked);
+  if (race.body != race_) return 0.0;
+  ohmdem::Pit across;
+  across.width = width_;
+  across.depth = depth_;
+  across.ball_radius = race.ball_radius;
+  const double s = race.groove * (alpha - track_);
+  if (!ohmdem::in_pit(across, s)) return 0.0;  // beside the pit: not felt, not masked
+  return std::min(recess(race, tag, dx, dy, masked), ohmdem::pit_recess(across, s));
 }
 
 // The same arc offset and width as recess(), for the lubricated gap (a query: the mechanics do

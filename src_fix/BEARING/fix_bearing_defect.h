@@ -47,6 +47,8 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   bool acts_on_cage() const override { return kind_ == Kind::Cage; }
   double recess(const ohmdem::BearingSurface &race, std::int64_t tag, double dx, double dy,
                 bool &masked) const override;
+  double recess_at(const ohmdem::BearingSurface &race, std::int64_t tag, double dx, double dy,
+                   double alpha, bool &masked) const override;
   bool pit_near(const ohmdem::BearingSurface &race, double dx, double dy, double reach,
                 ohmdem::PitView &pit) const override;
   bool breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const override;
@@ -70,6 +72,8 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   double start_ = 0;                           // time from which the defect exists (s)
   int pocket_ = 0, side_ = 1;                  // cage defect
   double spin_ = 0;  // ball defect: the ball's rotation angle about z (rad)
+  double width_ = 0;  // race pit, model 3d: its extent across the raceway (m); 0: the whole track
+  double track_ = 0;  // the contact angle of its centre line (rad)
   double ball_radius_ = 0;
   bool warned_wide_ = false;  // the wide-zone warning, once per fix
 };

@@ -21,6 +21,7 @@
 #include "atom.h"
 #include "comm.h"
 #include "contact/race_contact.h"
+#include "contact/race_contact_3d.h"  // model3d_ (fix_bearing_race_3d.cpp)
 #include "contact/runaway.h"
 #include "error.h"
 #include "fix_property_atom.h"
@@ -72,6 +73,13 @@ FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
   if (settings_.load == Load::Fixed) u_ = settings_.interference;
   // sums over the balls: total normal force, torque, contacts, masked contacts
   set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0});
+  if (three_d()) {
+    // model 3d: 8 more values (the balls' axial force and moment are sums), 2 more columns.
+    size_vector = kVectorSize + 8;
+    size_peratom_cols = View::kColumns3d;
+    set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1});
+    if (settings_.model3d.preload_set) cz_ = settings_.model3d.preload;
+  }
 }
 
 FixBearingRace::~FixBearingRace() = default;
@@ -79,7 +87,7 @@ FixBearingRace::~FixBearingRace() = default;
 void FixBearingRace::post_create()
 {
   // Per-ball contact state: the contact, the last forces, the tangential spring history.
-  create_state(std::vector<std::string>(NCOL, "0."));
+  create_state(std::vector<std::string>(three_d() ? state_columns_3d() : NCOL, "0."));
   init();
 }
 
@@ -128,6 +136,7 @@ void FixBearingRace::build_model()
       s.load, load_force_, group->count(igroup), model_->hertz, ball_radius_);
   if (!overload.empty()) error->fix_error(FLERR, this, overload.c_str());
   check_common_axis(s.radius);
+  check_common_model();
   check_fit_between_races();
 }
 
@@ -150,13 +159,14 @@ void FixBearingRace::setup(int vflag)
   variables_.find();
   evaluate_variables();
   build_model();
-  if (restored_) {
+  if (three_d()) build_model_3d();
+  if (restored_ && !three_d()) {  // model 3d: its own check, in build_model_3d
     const double gap =
         ohmdem::worst_ball_gap(*atom, groupbit, settings_.inner, cx_, cy_, current_radius(), world);
     const std::string why = ohmdem::restart_geometry_changed(gap, settings_.radius, ball_radius_);
     if (!why.empty()) error->fix_error(FLERR, this, why.c_str());
   }
-  if (reapply_restored_forces(FX, FY, TZ)) return;
+  if (three_d() ? reapply_restored_forces_3d() : reapply_restored_forces(FX, FY, TZ)) return;
   post_force(vflag);
 }
 
@@ -194,6 +204,8 @@ ohmdem::BearingSurface FixBearingRace::surface() const
   s.radius = current_radius();
   s.angle = angle_;
   s.ball_radius = model_ ? model_->ball_radius : ball_radius_;
+  s.groove = settings_.groove;
+  s.three_d = three_d();
   return s;
 }
 
@@ -225,6 +237,10 @@ void FixBearingRace::ring_acceleration(double &ax, double &ay) const
 
 void FixBearingRace::initial_integrate(int)
 {
+  if (three_d()) {
+    initial_integrate_3d();
+    return;
+  }
   const double dt = update->dt;
   evaluate_variables();
   ring_half_kick(dt);
@@ -241,11 +257,19 @@ void FixBearingRace::initial_integrate(int)
 
 void FixBearingRace::final_integrate()
 {
+  if (three_d()) {
+    ring_half_kick_3d(update->dt);
+    return;
+  }
   ring_half_kick(update->dt);
 }
 
 void FixBearingRace::post_force(int)
 {
+  if (three_d()) {
+    post_force_3d();
+    return;
+  }
   array_atom = state_->array_atom;  // may have moved when atoms were exchanged
   double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega;
   double **torque = atom->torque;
@@ -363,6 +387,7 @@ bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, doubl
 
 double FixBearingRace::compute_vector(int n)
 {
+  if (n >= kVectorSize) return compute_vector_3d(n);
   switch (n) {
     case 0:
       return sum_fn_;
@@ -410,6 +435,10 @@ double FixBearingRace::compute_vector(int n)
 
 void FixBearingRace::write_restart(FILE *fp)
 {
+  if (three_d()) {
+    write_restart_3d(fp);
+    return;
+  }
   const double list[kRestartSize] = {time_,
                                      angle_,
                                      u_,
@@ -433,6 +462,10 @@ void FixBearingRace::write_restart(FILE *fp)
 void FixBearingRace::restart(char *buf)
 {
   const double *list = reinterpret_cast<const double *>(buf);
+  if (three_d()) {
+    restart_3d(list);
+    return;
+  }
   if (static_cast<bool>(list[9]) != settings_.inner)
     error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
   time_ = list[0];
@@ -457,5 +490,6 @@ void FixBearingRace::restart(char *buf)
 double FixBearingRace::memory_usage()
 {
   // Per-atom state lives in the fix property/atom, which reports its own.
-  return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage());
+  return static_cast<double>(mine_.capacity() * sizeof(mine_[0]) + gather_.memory_usage() +
+                             mine3d_.capacity() * sizeof(mine3d_[0]) + gather3d_.memory_usage());
 }

@@ -24,10 +24,13 @@ FixStyle(bearing/race,FixBearingRace)
 #include "BEARING/race_settings.h"
 #include "BEARING/race_variables.h"
 #include "common/ordered_reduce.h"
+#include "contact/hertz_contact.h"
 #include "support/race_contact_view.h"
 
 namespace ohmdem {
 struct RaceContactModel;
+struct RaceContactModel3d;
+struct RingMotion3d;
 }  // namespace ohmdem
 
 namespace LAMMPS_NS {
@@ -50,7 +53,10 @@ class FixBearingRace : public FixBearingBody {
 
   // For the electrical computes: the contact of local atom i with this race, valid after
   // this step's forces.
-  ohmdem::RaceContactView contact_of(int i) const { return ohmdem::RaceContactView(array_atom[i]); }
+  ohmdem::RaceContactView contact_of(int i) const
+  {
+    return ohmdem::RaceContactView(array_atom[i], three_d());
+  }
   // How far the surface under that contact falls away (m): the recess of the defects' pits
   // (inner, outer or ball) that this step's force used, 0 without defects. A query, so that no
   // published column changes (the positions and surfaces are those of post_force).
@@ -97,6 +103,26 @@ class FixBearingRace : public FixBearingBody {
   ohmdem::BearingSurface surface() const override;
   int race_type() const { return settings_.race_type; }
 
+  // model 3d (fix_bearing_race_3d.cpp): the race is a torus, contact angles come from the
+  // geometry, a ring under load radial is free in space.
+  bool three_d() const override { return settings_.model3d.on; }
+  // The ellipse of ball i's contact with this race in the area model `model`: model 3d at its
+  // contact angle of this step; model 2d the contact model's (contact_model()).
+  ohmdem::ContactEllipse ellipse_of(int i, ohmdem::AreaModel model) const;
+  // Model 3d, for the lubricated contact: ball i's contact with this race as the film sees it
+  // (its effective radii at the contact angle, the exact ellipse, the entrainment speed), or
+  // the gap to it when the ball does not press it; the ellipse in the compute's area model.
+  struct FilmGeometry {
+    bool pressed = false;
+    double fn = 0;          // N
+    double rx = 0, ry = 0;  // 1/A, 1/B at the contact angle (m)
+    double a = 0, b = 0;    // semi-axes, a across the groove (m)
+    double speed = 0;       // mean entrainment speed (m/s)
+    double gap = 0;         // not pressed: the gap to the groove along the contact line (m)
+    double e_prime = 0;     // E' = 2 E* (Pa)
+  };
+  FilmGeometry film_geometry_3d(int i, ohmdem::AreaModel model) const;
+
  private:
   using Load = ohmdem::RaceLoad;
 
@@ -138,6 +164,29 @@ class FixBearingRace : public FixBearingBody {
   double ball_mass_ = 0;          // largest ball mass of the group (kg)
   ohmdem::RunawayWatch runaway_;  // the steps that passed the runaway check
   int ball_type_ = 0;
+
+  // --- model 3d (fix_bearing_race_3d.cpp): the ring as a rigid body in space
+  static int state_columns_3d();  // the per-ball state's columns in model 3d
+  void build_model_3d();
+  ohmdem::RingMotion3d ring_motion_3d() const;
+  void post_force_3d();
+  void initial_integrate_3d();
+  void ring_half_kick_3d(double dt);
+  double compute_vector_3d(int n);
+  void write_restart_3d(FILE *fp);
+  void restart_3d(const double *list);
+  bool reapply_restored_forces_3d();
+  // The defects' recess under ball i's contact at contact angle alpha (rad), as defect_recess.
+  double defect_recess_3d(int i, double alpha, bool &in_zone) const;
+  std::unique_ptr<ohmdem::RaceContactModel3d> model3d_;
+  double cz_ = 0, vcz_ = 0;                          // axial position and velocity of the centre
+  double tilt_[2] = {0, 0}, tilt_rate_[2] = {0, 0};  // the axis' tilt (rotation vector x, y)
+  double tilt_inertia_ = 0, tilt_damp_ = 0;          // kg m^2, N m s
+  double fz_ = 0, moment_[2] = {0, 0};     // balls' axial force and tilting moment (last step)
+  double radial_sum_ = 0;                  // sum of Q cos(alpha): what the radius' u feels
+  double alpha_mean_ = 0, alpha_max_ = 0;  // |contact angle| over the contacts (degrees)
+  std::vector<ohmdem::TaggedValues<11> > mine3d_;
+  ohmdem::OrderedGather<11> gather3d_;
 };
 
 }  // namespace LAMMPS_NS

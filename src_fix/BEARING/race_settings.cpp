@@ -7,6 +7,7 @@
 #include <cstring>
 #include <string>
 
+#include "BEARING/race_settings_3d.h"
 #include "support/args.h"
 
 namespace ohmdem {
@@ -106,7 +107,7 @@ RaceSettings parse_race_settings(LAMMPS_NS::Error *error, int narg, char **arg, 
       if (std::strncmp(a.peek(), "v_", 2) == 0)
         s.force_var = a.word(kw, "v_NAME") + 2;  // an equal-style variable, each step
       else
-        s.load_force = a.positive(kw, "the load magnitude F > 0 (N), or v_NAME");
+        s.load_force = a.non_negative(kw, "the load magnitude F > 0 (N), or v_NAME");
       have_force = true;
     } else if (kw == "settle") {
       s.settle_time = a.positive(kw, "the settling time T > 0 (s)");
@@ -118,10 +119,11 @@ RaceSettings parse_race_settings(LAMMPS_NS::Error *error, int narg, char **arg, 
       dir_x = a.number(kw, "the radial load direction dx dy");
       dir_y = a.number(kw, "the radial load direction dx dy");
       if (!(std::hypot(dir_x, dir_y) > 0.0)) a.fail(kw, "a non-zero direction dx dy", "0 0");
-    } else {
+    } else if (!parse_race_keyword_3d(a, kw, s)) {
       a.unknown(kw.c_str(),
                 "radius groove type centre omega ramp omega_start load force settle interference "
-                "direction mass damp");
+                "direction mass damp " +
+                    std::string(race_keywords_3d()));
     }
   }
   if (!have_radius) a.fail("radius", "a value: the keyword is required", "nothing");
@@ -131,6 +133,10 @@ RaceSettings parse_race_settings(LAMMPS_NS::Error *error, int narg, char **arg, 
     a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(ntypes),
            std::to_string(s.race_type).c_str());
   check_load(a, s, have_force, have_settle, have_interference, dir_x, dir_y);
+  check_race_3d(a, s);
+  // Model 3d takes F = 0 (a ring under an axial load or moment alone); model 2d does not.
+  if (have_force && s.force_var.empty() && !(s.load_force > 0.0) && !s.model3d.on)
+    a.fail("force", "the load magnitude F > 0 (N), or v_NAME", "0");
   return s;
 }
 

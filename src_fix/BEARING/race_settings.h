@@ -32,6 +32,21 @@ struct RaceSettings {
   double settle_time = 0;           // settle: force control until this time (s)
   double ring_mass = 0, ring_damp = 0;
 
+  // model 3d (race_settings_3d.cpp; doc/fix_bearing_race.md "Model 3d"): the race is a torus,
+  // and a ring under load radial is free in space (its centre moves, its axis tilts).
+  struct Model3d {
+    bool on = false;
+    double clearance = 0;          // radial internal clearance of the bearing (m)
+    double alpha0 = 0;             // nominal contact angle (rad)
+    double shoulder = 0;           // largest contact angle the groove holds (rad), set by parse
+    double axial = 0, moment = 0;  // load radial: axial force (N), moment about z x d (N m)
+    bool preload_set = false;      // load radial: the axial position held at `preload` instead
+    double preload = 0;            // (m)
+    double tilt_inertia = 0;       // kg m^2 (0: mass * radius^2 / 2)
+    double tilt_damp = -1;         // N m s (< 0: damp * radius^2 / 2)
+    int given = 0;                 // which of its keywords were given (race_settings_3d.cpp)
+  } model3d;
+
   // The ring's radius or centre moves under a force: it has a mass.
   bool dynamic() const
   {

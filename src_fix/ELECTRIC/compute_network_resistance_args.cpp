@@ -91,6 +91,10 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
       lube_.wetted = a.positive(kw, "the wetted radius around a contact > 0 (m)");
     } else if (kw == "excitation") {
       lube_.excitation = a.positive(kw, "the voltage amplitude across the bearing > 0 (V)");
+    } else if (kw == "kernel") {
+      const std::string name = a.word(kw, ohmdem::lubrication::kBearingKernelNames);
+      if (!ohmdem::lubrication::bearing_kernel_named(name, lube_.kernel))
+        a.fail(kw, ohmdem::lubrication::kBearingKernelNames, name.c_str());
     } else if (kw == "breakdown") {
       lube_.breakdown_file = a.next_is("lubricant");
       breakdown_text_ = a.peek();  // a number as written, for run.json
@@ -101,7 +105,7 @@ void ComputeNetworkResistance::parse(int narg, char **arg)
     } else {
       a.unknown(kw.c_str(),
                 "current high low area model solver pair netlist vtk every closedform "
-                "lubricant temperature roughness fexc wetted excitation breakdown");
+                "lubricant temperature roughness fexc wetted excitation breakdown kernel");
     }
   }
   lube_.network = !closed_form_;  // the lubricated impedance follows closedform too

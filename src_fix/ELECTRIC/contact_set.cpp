@@ -96,8 +96,11 @@ void ContactSet::collect_races(std::vector<ohmdem::ContactRecord> &out)
       ct.fn = c.fn();
       ct.point[0] = c.point_x();
       ct.point[1] = c.point_y();
-      ct.point[2] = atom->x[i][2];
-      const ohmdem::ContactEllipse e = race_geometry(static_cast<int>(k)).ellipse(ct.fn);
+      // Model 3d: the point off the plane, the ellipse of its contact angle.
+      const bool three_d = races_[k]->three_d();
+      ct.point[2] = three_d ? c.point_z() : atom->x[i][2];
+      const ohmdem::ContactEllipse e = three_d ? races_[k]->ellipse_of(i, model_)
+                                               : race_geometry(static_cast<int>(k)).ellipse(ct.fn);
       ct.a = e.a;
       ct.b = e.b;
       out.push_back(ct);

@@ -37,6 +37,7 @@ class ContactSet : protected Pointers {
   // index in races() of a ball–race contact (-1 otherwise), `a`, `b` the contact ellipse.
   void collect(std::vector<ohmdem::ContactRecord> &out);
   const std::vector<FixBearingRace *> &races() const { return races_; }
+  ohmdem::AreaModel area_model() const { return model_; }  // greenwood or exact
   // Contact geometry of race k in the chosen area mode (valid once the races are set up).
   const ohmdem::HertzContact &race_geometry(int k);
   bool uses_pair() const { return pgl_ != nullptr; }

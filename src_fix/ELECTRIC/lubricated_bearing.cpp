@@ -2,10 +2,10 @@
 // compute network/resistance with a lubricant; see lubricated_bearing.h.
 #include "ELECTRIC/lubricated_bearing.h"
 
-#include <emmintrin.h>
 #include <mpi.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <exception>
@@ -19,6 +19,7 @@
 #include "atom.h"
 #include "common/constants.h"
 #include "error.h"
+#include "lubrication/bearing_kernels.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/pit_contact.h"
 #include "lubrication/race_admittance.h"
@@ -27,57 +28,6 @@ using namespace LAMMPS_NS;
 namespace lub = ohmdem::lubrication;
 
 namespace {
-
-typedef double v2d __attribute__((vector_size(16)));
-typedef std::int64_t v2i __attribute__((vector_size(16)));
-constexpr std::int64_t kAbsMask = 0x7fffffffffffffff;
-
-// The two sides' RaceMotion, lane s side s's.
-struct RaceLanes2 {
-  v2d cx, cy, w, vcx, vcy;
-};
-
-// The mean entrainment speed of a ball-race contact at point p: the tangential component of
-// the mean of the two surfaces' velocities, relative to the contact point, which travels with
-// the ball's orbit about the ring centre c. Pure rolling on a fixed outer ring gives
-// (omega_i - omega_cage) R_i at the inner contact. The ring's velocity at p is
-// FixBearingRace::surface_velocity's, from its terms taken once per race and step (m).
-// With n = p - x (ball centre to contact), the tangent t = (-n_y, n_x) (|t| = |n|) and
-// d = n . (p - c), the three velocities' tangential parts are t . ball = -n_y v_x + n_x v_y +
-// omega_z |n|^2, t . ring = -n_y vc_x + n_x vc_y + w d and t . orbit = Omega d, so
-//   |n| u = 1/2 (-n_y (v_x + vc_x) + n_x (v_y + vc_y) + omega_z |n|^2 + w d) - Omega d,
-// Omega = (o x v) / |o|^2 the orbit's rate (o = x - c). A ball's two contacts at once, lane s
-// the race of side s (SSE2, two doubles per operation).
-v2d entrainment_speeds(const double *x, const double *v, double omega_z, v2d px, v2d py,
-                       const RaceLanes2 &m)
-{
-  const v2d ox = x[0] - m.cx, oy = x[1] - m.cy;
-  const v2d orbit = (ox * v[1] - oy * v[0]) / (ox * ox + oy * oy);
-  const v2d nx = px - x[0], ny = py - x[1];
-  const v2d d = nx * (px - m.cx) + ny * (py - m.cy), n2 = nx * nx + ny * ny;
-  const v2d along =
-      0.5 * (nx * (v[1] + m.vcy) - ny * (v[0] + m.vcx) + omega_z * n2 + m.w * d) - orbit * d;
-  const v2d norm = (v2d)_mm_sqrt_pd((__m128d)n2);  // correctly rounded, as std::sqrt
-  const v2d magnitude = (v2d)((v2i)along & (v2i){kAbsMask, kAbsMask});  // fabs
-  return magnitude / norm;
-}
-
-// lub::series(y1, y2) with y = {G, B} two doubles per operation: each lane the scalar form's
-// operations, so the same bits. x - y is x + (-y) and (-x) y is -(x y) exactly, so its
-// (pr sr - pi (-si), pr (-si) + pi sr) is (pr sr + pi si, pi sr + (-(pr si))).
-v2d series_lanes(v2d y1, v2d y2)
-{
-  const v2d s = y1 + y2;  // sr, si
-  if (_mm_movemask_pd(_mm_cmpeq_pd((__m128d)s, _mm_setzero_pd())) == 3) return v2d{0.0, 0.0};
-  const v2d neg_lo = (v2d)(v2i){std::int64_t(0x8000000000000000ull), 0};  // -x in lane 0
-  // pr = r1 r2 - i1 i2, pi = r1 i2 + i1 r2
-  const v2d p =
-      v2d{y1[0], y1[0]} * y2 + (v2d)((v2i)(v2d{y1[1], y1[1]} * v2d{y2[1], y2[0]}) ^ (v2i)neg_lo);
-  const v2d sq = s * s;
-  const double n = sq[0] + sq[1];
-  const v2d q = v2d{p[1], p[0]} * (v2d)((v2i)v2d{s[1], s[1]} ^ (v2i)(v2d{0.0, -0.0}));
-  return (p * v2d{s[0], s[0]} + q) / v2d{n, n};
-}
 
 // A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
 // the pit's centre is at -offset.
@@ -271,10 +221,22 @@ void LubricatedBearing::break_down(LubricatedContact pair[2],
   }
 }
 
-LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
-                                             const double *g_dry)
+void LubricatedBearing::evaluate(const ResistanceContext &context, bool gather,
+                                 const double *g_dry)
 {
   if (!geometry_ready_) set_geometry(context);
+  if (race_[0]->three_d())
+    evaluate_3d(context, gather, g_dry);
+  else if (settings_.kernel == lub::BearingKernel::plain)
+    evaluate_with<lub::PlainKernel>(context, gather, g_dry);
+  else
+    evaluate_with<lub::LanesKernel>(context, gather, g_dry);
+}
+
+template <class Kernel>
+void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gather,
+                                      const double *g_dry)
+{
   const double inf = std::numeric_limits<double>::infinity();
   double hmin[2] = {inf, inf}, lambda_min = inf;  // [0] inner, [1] outer
 
@@ -286,15 +248,12 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   pit_fixes_.clear();
   records_ready_ = false;
   for (int side = 0; side < 2; ++side) {
-    RaceMotion &m = motion_[side];
+    lub::RaceFrame &m = motion_[side];
     race_[side]->centre(m.cx, m.cy);
     race_[side]->rigid_motion(m.w, m.vcx, m.vcy);
     batch_[side].clear();
     batch_[side].reserve(atom->nlocal);  // one contact per ball at most (collect())
   }
-  const RaceMotion &m0 = motion_[0], &m1 = motion_[1];
-  const RaceLanes2 motion = {
-      {m0.cx, m1.cx}, {m0.cy, m1.cy}, {m0.w, m1.w}, {m0.vcx, m1.vcx}, {m0.vcy, m1.vcy}};
   // Per ball its two contacts: per race its pressed contacts' inputs, or an idle record ...
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
@@ -303,9 +262,12 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
         g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance(context, i);
     const ohmdem::RaceContactView view[2] = {race_[0]->contact_of(i), race_[1]->contact_of(i)};
     // Both sides' speeds (a race the ball does not press: computed, not used).
-    const v2d speed = entrainment_speeds(atom->x[i], atom->v[i], atom->omega[i][2],
-                                         v2d{view[0].point_x(), view[1].point_x()},
-                                         v2d{view[0].point_y(), view[1].point_y()}, motion);
+    const lub::BallMotion ball = {atom->x[i],
+                                  atom->v[i],
+                                  atom->omega[i][2],
+                                  {view[0].point_x(), view[1].point_x()},
+                                  {view[0].point_y(), view[1].point_y()}};
+    const std::array<double, 2> speed = Kernel::speeds(ball, motion_);
     const int ref0 = collect(i, 0, g_ball, view[0], speed[0]);
     const int ref1 = collect(i, 1, g_ball, view[1], speed[1]);
     balls_in_[nballs++] = {static_cast<std::int64_t>(atom->tag[i]), {ref0, ref1}};
@@ -314,8 +276,8 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   // ... their admittances, a race's contacts together (lib/lubrication, race_admittance.h) ...
   for (int side = 0; side < 2; ++side) films_[side].resize(batch_[side].size());
   // (with each race's smallest films: a race pit's correction below leaves them as they are)
-  const auto minima = lub::RaceAdmittance::contacts(film_[0], batch_[0], films_[0].data(), film_[1],
-                                                    batch_[1], films_[1].data());
+  const lub::RaceMinima minima = Kernel::contacts(film_[0], batch_[0], films_[0].data(), film_[1],
+                                                  batch_[1], films_[1].data());
   for (int side = 0; side < 2; ++side) {
     const int k = inner_[side];
     hmin[k] = std::min(hmin[k], minima[side].minimum);
@@ -337,18 +299,17 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   const auto each_ball = [&](auto with_breakdown) {
     for (std::size_t n = 0; n < nballs; ++n) {
       const BallRefs &b = refs[n];
-      v2d y[2];  // f.y(omega) as {G, omega C}
+      std::complex<double> y[2];  // f.y(omega): G + j omega C
       const lub::ContactAdmittance *film[2] = {nullptr, nullptr};
       for (int side = 0; side < 2; ++side) {
         const int ref = b.ref[side];
         if (ref < 0) {
-          const std::complex<double> &idle = idle_[-1 - ref].y;
-          y[side] = v2d{idle.real(), idle.imag()};
+          y[side] = idle_[-1 - ref].y;
           continue;
         }
         const lub::ContactAdmittance &f = films[side][ref];
         film[side] = &f;
-        y[side] = v2d{f.g, omega * f.capacitance()};
+        y[side] = {f.g, omega * f.capacitance()};
       }
       if constexpr (decltype(with_breakdown)::value) {
         // break_down_ball reads the films of the pressed contacts only.
@@ -357,19 +318,17 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
         for (int side = 0; side < 2; ++side)
           if (film[side]) both[side] = *film[side];
         break_down(pair, both);
-        for (int side = 0; side < 2; ++side)
-          y[side] = v2d{pair[side].y.real(), pair[side].y.imag()};
+        for (int side = 0; side < 2; ++side) y[side] = pair[side].y;
       }
-      const v2d ball = series_lanes(y[0], y[1]);
+      const std::complex<double> ball = Kernel::series(y[0], y[1]);
       balls[n].tag = b.tag;
-      balls[n].v = {ball[0], ball[1]};
+      balls[n].v = {ball.real(), ball.imag()};
     }
   };
   if (breakdown)
     each_ball(std::true_type());
   else
     each_ball(std::false_type());
-  LubricatedResult out;
   std::complex<double> y_bearing;
   if (settings_.network || gather) network_->gather(contacts_, world);
   if (settings_.network) {
@@ -393,7 +352,6 @@ LubricatedResult LubricatedBearing::evaluate(const ResistanceContext &context, b
   local_min_[2] = lambda_min;
   y_bearing_ = y_bearing;
   current_ = context.current;
-  return out;
 }
 
 void LubricatedBearing::impedance(LubricatedResult &out) const

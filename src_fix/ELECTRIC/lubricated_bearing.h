@@ -17,6 +17,7 @@
 #include "ELECTRIC/resistance_context.h"
 #include "common/ordered_reduce.h"
 #include "conduction/conduction_model.h"
+#include "lubrication/bearing_kernels.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/lubricant.h"
 #include "lubrication/race_admittance.h"
@@ -37,6 +38,9 @@ struct LubricationSettings {
   double breakdown = 0.0;          // breakdown field of the film (V/m); 0: no breakdown
   bool breakdown_file = false;     // `breakdown lubricant`: the lubricant file's field instead
   bool network = false;            // the general network (keyword closedform no)
+  // The per-step arithmetic (keyword kernel): lanes (the default) or plain, the same bits
+  // (lib/lubrication/bearing_kernels.h).
+  ohmdem::lubrication::BearingKernel kernel = ohmdem::lubrication::BearingKernel::lanes;
   bool on() const { return lubricant != "none"; }
 };
 
@@ -61,11 +65,6 @@ struct LubricatedContact {
 class FixBearingRace;
 class LubricatedNetwork;
 
-// A race's rigid motion on this step: centre (m), angular speed (rad/s), centre velocity (m/s).
-struct RaceMotion {
-  double cx = 0, cy = 0, w = 0, vcx = 0, vcy = 0;
-};
-
 class LubricatedBearing : protected Pointers {
  public:
   // Reads the lubricant (throws LubricantError with the message for the user).
@@ -78,10 +77,10 @@ class LubricatedBearing : protected Pointers {
   ~LubricatedBearing() override;
   // Collective: this step's admittance of the bearing; `gather` (an export step) also gathers
   // the records of all processes (network()) when the closed form runs. g_dry: the dry closed
-  // form's conductance of this step per local atom (NaN where it has none), or null. The
-  // result's impedance and minima are left to impedance() and minima().
-  LubricatedResult evaluate(const ResistanceContext &context, bool gather = false,
-                            const double *g_dry = nullptr);
+  // form's conductance of this step per local atom (NaN where it has none), or null. Its
+  // impedance and minima are read by impedance() and minima().
+  void evaluate(const ResistanceContext &context, bool gather = false,
+                const double *g_dry = nullptr);
   // Collective: the last evaluation's smallest films and lambda over all processes (outputs
   // 13-15) into out. Apart from evaluate(): a step where nothing reads them has no reduction.
   void minima(LubricatedResult &out) const;
@@ -97,6 +96,9 @@ class LubricatedBearing : protected Pointers {
 
  private:
   void set_geometry(const ResistanceContext &context);
+  // evaluate() with the settings' kernel (lib/lubrication/bearing_kernels.h).
+  template <class Kernel>
+  void evaluate_with(const ResistanceContext &context, bool gather, const double *g_dry);
   // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
   // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
   // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
@@ -110,6 +112,10 @@ class LubricatedBearing : protected Pointers {
   void break_down(LubricatedContact pair[2],
                   const ohmdem::lubrication::ContactAdmittance film[2]) const;
   double ball_dry_conductance(const ResistanceContext &context, int i);
+  // Model 3d races (lubricated_bearing_3d.cpp): each contact its own effective radii, ellipse
+  // and entrainment speed at its contact angle (FixBearingRace::film_geometry_3d), its
+  // admittance from lub::contact_admittance; evaluate()'s records and sums as in model 2d.
+  void evaluate_3d(const ResistanceContext &context, bool gather, const double *g_dry);
 
   LubricationSettings settings_;
   double omega_ = 0;  // 2 pi fexc
@@ -119,7 +125,7 @@ class LubricatedBearing : protected Pointers {
   ohmdem::BallBetweenRaces dry_;  // the dry conductance of a ball (the metallic path)
   // Per side (0 high, 1 low): the race, its contacts' constants, 0 inner / 1 outer.
   const FixBearingRace *race_[2] = {nullptr, nullptr};
-  RaceMotion motion_[2];             // this step's, set by evaluate()
+  ohmdem::lubrication::RaceFrame motion_[2];  // this step's, set by evaluate()
   double local_min_[3] = {0, 0, 0};  // this process's h_min inner, outer, lambda (evaluate())
   std::complex<double> y_bearing_{0.0, 0.0};  // the bearing's admittance (evaluate())
   double current_ = 0;                        // the current of that evaluation (A)

@@ -38,6 +38,7 @@ void ClosedFormPath::set_geometry()
 bool ClosedFormPath::evaluate(double *phi, PathResult &result)
 {
   if (!geometry_ready_) set_geometry();
+  if (context_.contacts->races()[context_.high.index]->three_d()) return evaluate_3d(phi, result);
   const ohmdem::BallBetweenRaces::Kernel model = between_races_.kernel();
   const double inf = std::numeric_limits<double>::infinity();
 
@@ -101,6 +102,10 @@ bool ClosedFormPath::evaluate(double *phi, PathResult &result)
 
 void ClosedFormPath::contact_flows(std::vector<ohmdem::ContactFlow> &rows)
 {
+  if (context_.contacts->races()[context_.high.index]->three_d()) {
+    contact_flows_3d(rows);
+    return;
+  }
   const auto &races = context_.contacts->races();
   const FixBearingRace &race_hi = *races[context_.high.index];
   const FixBearingRace &race_lo = *races[context_.low.index];

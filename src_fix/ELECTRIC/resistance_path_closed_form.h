@@ -37,6 +37,9 @@ class ClosedFormPath : public ResistancePath, protected Pointers {
 
  private:
   void set_geometry();  // at the first evaluation: the races' geometry is known then
+  // Model 3d (resistance_path_closed_form_3d.cpp): each ball's spots as they are this step.
+  bool evaluate_3d(double *phi, PathResult &result);
+  void contact_flows_3d(std::vector<ohmdem::ContactFlow> &rows);
 
   const ResistanceContext &context_;
   bool geometry_ready_ = false;

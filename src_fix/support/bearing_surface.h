@@ -21,6 +21,8 @@ struct BearingSurface {
   double angle = 0;           // rotation of the body about z (rad)
   double ball_radius = 0;     // radius of the balls that touch it (m)
   int pockets = 0;            // cage: number of pockets
+  double groove = 0;          // race: groove radius (m)
+  bool three_d = false;       // race: model 3d (contacts across the groove at their angle)
   bool is_race() const { return kind != BodyKind::Cage; }
   bool inner() const { return kind == BodyKind::InnerRace; }
 };
@@ -48,6 +50,15 @@ class BearingDefect {
   // lies. `masked` is set when the contact point lies in the zone (no current).
   virtual double recess(const BearingSurface &race, std::int64_t tag, double dx, double dy,
                         bool &masked) const = 0;
+  // Model 3d: the same for a contact at the contact angle alpha (rad, in the race's frame), which
+  // lies Rg alpha across the groove from its bottom. A defect without an extent across the
+  // raceway (the whole track) answers recess().
+  virtual double recess_at(const BearingSurface &race, std::int64_t tag, double dx, double dy,
+                           double alpha, bool &masked) const
+  {
+    (void)alpha;
+    return recess(race, tag, dx, dy, masked);
+  }
   // The race pit on `race` whose zone comes within `reach` (m, along the race) of the contact
   // on the line (dx, dy) from the race centre, as `pit`; false when this defect has none there
   // (a ball's pit, a cage defect). Its recess at the contact is recess()'s.

@@ -149,6 +149,23 @@ def test_mpi(r):
 
 
 
+def test_kernels(r):
+    # The films' arithmetic: the plain kernel (one contact at a time, the reference) and the
+    # lanes kernel (the default) give the same signal to the last digit, healthy and over an
+    # inner pit (the strip's correction) with the films broken down (100 V at 20 MV/m: the ball
+    # loop's breakdown branch).
+    broken = dict(defect="inner", size=1, excitation=100, breakdown=2e7)
+    for name, extra in (("healthy", {}), ("pit_breakdown", broken)):
+        out = {}
+        for kernel in ("plain", "lanes"):
+            sim, _ = r.run(f"kernel_{kernel}_{name}", lubricant="VG68", kernel=kernel, tend=0.004,
+                           dt=DT, nout=1, **extra)
+            out[kernel] = open(os.path.join(sim, "signal.txt")).read()
+        check(out["plain"] == out["lanes"],
+              f"kernel plain and lanes: signal.txt identical ({name}, "
+              f"{len(out['plain'].splitlines()) - 1} rows)")
+
+
 def eta_vg68(t):
     """VG68's dynamic viscosity (Pa s) at t C, written out: ASTM D341 (Walther) through its
     40 and 100 C points, times the density 880 (1 - 6.5e-4 (t - 15)) kg/m^3."""
@@ -200,5 +217,6 @@ def test_temperature_laws(r):
 if __name__ == "__main__":
     run_named_test({"paper_point": test_paper_point, "none_unchanged": test_none_unchanged,
                     "regime": test_regime, "exponents": test_exponents, "mpi": test_mpi,
+                    "kernels": test_kernels,
                     "temperature_laws": test_temperature_laws},
                    "ohmdem_lub_")

@@ -10,6 +10,7 @@ scipy.io.savemat (MAT v5, uncompressed unless named _z; one v4 file).
   bad.mat      c (complex vector), m (3x4 double matrix), s (struct), cell (cell array),
                name (char), e (empty 0x0 double), nan (vector with a NaN), only vector v
   not_mat.mat  a text file with the .mat extension
+  zero_rpm.mat x (1x300 double) and RPM (1x1 double 0): a recorded speed that is no speed
 Run: /usr/bin/python3 tests/post/make_mat_fixtures.py
 """
 import os
@@ -39,6 +40,8 @@ def main():
            "name": "DE_time", "e": np.zeros((0, 0)), "nan": nan.reshape(-1, 1),
            "v": v.reshape(-1, 1)}
     scipy.io.savemat(os.path.join(HERE, "bad.mat"), bad)
+    scipy.io.savemat(os.path.join(HERE, "zero_rpm.mat"),
+                     {"x": x.reshape(1, -1), "RPM": np.array([[0.0]])})
     with open(os.path.join(HERE, "not_mat.mat"), "w") as f:
         f.write("1\n2\n3\n")
 

@@ -15,6 +15,7 @@ x(k) = 0.5 sin(2 pi 50 k / 1000) + 0.01 k, k = 0..299, sampled at 1 kHz (t = k /
   big.npy         1-D '>f8' (big-endian): refused
   complex.npy     1-D complex128: refused
   cut.npy         c2d.npy without its last 10 bytes: refused (truncated)
+  cut_record.npy  table.npy without its last 7 bytes (inside its last counted row): refused
   subarray.npy    records with a (2,)-shaped field: refused
 Run: /usr/bin/python3 tests/post/make_npy_fixtures.py
 """
@@ -47,6 +48,8 @@ def main():
     np.save(os.path.join(HERE, "complex.npy"), x.astype(np.complex128))
     raw = open(os.path.join(HERE, "c2d.npy"), "rb").read()
     open(os.path.join(HERE, "cut.npy"), "wb").write(raw[:-10])
+    raw = open(os.path.join(HERE, "table.npy"), "rb").read()
+    open(os.path.join(HERE, "cut_record.npy"), "wb").write(raw[:-7])
     np.save(os.path.join(HERE, "subarray.npy"), np.zeros(4, dtype=[("v", "<f8", (2,))]))
 
 

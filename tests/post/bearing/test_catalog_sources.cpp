@@ -4,7 +4,6 @@
 // 6201; factors from the command line (--factors); and diagnose with the MFPT NICE entry on
 // MFPT's measured records (../shared/data/bearing-real-mfpt, beside the source tree).
 #include <gtest/gtest.h>
-#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdio>
@@ -80,42 +79,6 @@ TEST(CatalogSources, FactorsGiveTheFrequenciesAndWinOverGeometry)
   EXPECT_NEAR(two.bsf, 2.3567, 1e-4);
   for (const char *bad : {"", "1,2,3", "3.58;5.41", "5.4,3.5", "a,b", "3.5,5.4,-1,0.4", "3.5,5.4,"})
     EXPECT_THROW(parse_factors(bad), SettingError) << bad;
-}
-
-bool present(const std::string &path)
-{
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0;
-}
-
-// MFPT's 14 fault records (7 inner, 7 outer, 25 Hz as recorded, 48 828 Hz) with the NICE entry:
-// diagnose names the family of each record's file.
-TEST(CatalogSources, DiagnoseWithTheNiceEntryFindsTheFamilyOfEachMfptRecord)
-{
-  const std::string dir = std::string(OHMDEM_SOURCE_DIR) + "/../shared/data/bearing-real-mfpt";
-  if (!present(dir + "/README.md")) GTEST_SKIP() << dir << " not found";
-  const BearingGeometry nice = catalog_entry(kCatalog, "MFPT_NICE").geometry();
-  const char *loads[2][7] = {{"1_0", "2_50", "3_100", "4_150", "5_200", "6_250", "7_300"},
-                             {"1_25", "2_50", "3_100", "4_150", "5_200", "6_250", "7_300"}};
-  int right = 0;
-  for (int k = 0; k < 2; ++k)
-    for (const char *load : loads[k]) {
-      const std::string kind = k == 0 ? "inner" : "outer";
-      InputOptions io;
-      io.files = {dir + "/records/mfpt_" + kind + "_vload_" + load + "lbs.mat"};
-      io.column = "accel_g";
-      io.rate = 48828;
-      DiagnoseOptions o;
-      o.geometry = nice;
-      o.fr = 25;  // as recorded (the README: the shaft ran 0.5-1.3 % slower)
-      o.estimate_size = false;
-      const Diagnosis d = diagnose(load_signal(io, RunMetadata{}), o);
-      std::printf("[ MFPT NICE ] %-6s %-7s lbs: %-6s at %.2f Hz\n", kind.c_str(), load,
-                  d.defect.c_str(), d.frequency_hz);
-      EXPECT_EQ(d.defect, kind) << io.files[0];
-      right += d.defect == kind;
-    }
-  EXPECT_EQ(right, 14);
 }
 
 }  // namespace

@@ -156,42 +156,5 @@ TEST(Diagnose, CageTrainIsCage)
   EXPECT_NEAR(d.frequency_hz, sig.frequency, 0.005 * sig.frequency);
 }
 
-TEST(Diagnose, NoiseSweepReportsTheSnrLimit)
-{
-  // SNR = AC power of the clean rectangle train / white-noise power, over the full 500 kHz
-  // band of a 1 MHz record of 0.2 s
-  const double snrs[] = {20, 10, 0, -10, -15, -20, -25, -30, -35, -40};
-  std::printf("\n[ SNR sweep  ] 6208, 500 rad/s, 1 deg defect, 1 MHz, 0.2 s, 2 seeds per cell\n");
-  std::printf("[ SNR sweep  ] %8s %-22s %-22s %-22s\n", "SNR(dB)", "inner", "outer", "ball");
-  double limit[3] = {1e9, 1e9, 1e9};  // lowest SNR down to which every run was right
-  bool broken[3] = {false, false, false};
-  const char *kinds[] = {"inner", "outer", "ball"};
-  for (double snr : snrs) {
-    std::printf("[ SNR sweep  ] %8.0f", snr);
-    for (int k = 0; k < 3; ++k) {
-      int right = 0;
-      double score = 0;
-      std::string got;
-      for (std::uint64_t seed : {11, 12}) {
-        const auto sig = make(kinds[k], 1.0, snr, seed);
-        const Diagnosis d = diagnose(sig.signal, options_6208());
-        right += d.defect == kinds[k];
-        score += d.score / 2;
-        if (d.defect != kinds[k]) got = d.defect;
-      }
-      char cell[64];
-      std::snprintf(cell, sizeof cell, "%d/2 score %.2f%s%s", right, score,
-                    got.empty() ? "" : " got ", got.c_str());
-      std::printf(" %-22s", cell);
-      if (right == 2 && !broken[k]) limit[k] = snr;
-      if (right < 2) broken[k] = true;
-    }
-    std::printf("\n");
-  }
-  std::printf("[ SNR sweep  ] works down to: inner %.0f dB, outer %.0f dB, ball %.0f dB\n",
-              limit[0], limit[1], limit[2]);
-  for (int k = 0; k < 3; ++k) EXPECT_LE(limit[k], -10) << kinds[k];
-}
-
 }  // namespace
 }  // namespace ohmdem::post

@@ -61,26 +61,55 @@ TEST(Cli, PlotsArePngFiles)
   EXPECT_NE(bad.out.find("unknown column 'nope'"), std::string::npos) << bad.out;
 }
 
-TEST(Cli, FailedPlotLeavesNoFile)
+// A zero signal's spectrum on a logarithmic axis: a message of its own (not gnuplot's "all
+// points y value undefined"), no file.
+TEST(Cli, LogyOfAnAllZeroSpectrumIsAMessage)
 {
   if (!test::have_gnuplot()) GTEST_SKIP() << "gnuplot not installed (Debian package gnuplot-nox)";
-  // a zero signal on a logarithmic axis: gnuplot fails after opening its output
   std::string text = "# time R\n";
   for (int i = 0; i < 256; ++i) text += std::to_string(i * 1e-3) + " 0\n";
   const std::string sig = test::write_temp("zero_signal.txt", text);
-  const std::string png = ohmdem::test::temp_dir().string() + "/failed.png";
+  const std::string png = ohmdem::test::temp_dir().string() + "/zero_logy.png";
   std::remove(png.c_str());
   const CliRun r = run("plot --kind spectrum " + sig + " --logy --output " + png);
   EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out,
+            "ERROR: plot --logy: no value of the figure is > 0 (spectrum: all zero or "
+            "negative); a logarithmic axis has nothing to draw: plot without --logy\n");
+  struct stat st {};
+  EXPECT_NE(::stat(png.c_str(), &st), 0) << png << " was written";
+  EXPECT_EQ(run("plot --kind spectrum " + sig + " --output " + png).status, 0);  // linear: drawn
+}
+
+TEST(Cli, FailedPlotLeavesNoFile)
+{
+  // a gnuplot that writes part of its image, then fails
+  const std::string dir = ohmdem::test::temp_dir().string();
+  const std::string fake =
+      test::write_temp("failing_gnuplot",
+                       "#!/bin/sh\nout=$(sed -n \"s/^set output '\\(.*\\)'$/\\1/p\" \"$1\")\n"
+                       "printf 'partial' > \"$out\"\necho 'gnuplot: it failed' >&2\nexit 1\n");
+  ::chmod(fake.c_str(), 0755);
+  std::string text = "# time R\n";
+  for (int i = 0; i < 256; ++i)
+    text += std::to_string(i * 1e-3) + " " + std::to_string(i % 5) + "\n";
+  const std::string sig = test::write_temp("ramp_signal.txt", text);
+  const std::string png = dir + "/failed.png";
+  std::remove(png.c_str());
+  const std::string plot = "OHMDEM_GNUPLOT=" + fake + " " + OHMDEM_POST_EXE +
+                           " plot --kind spectrum " + sig + " --output " + png;
+  const CliRun r = shell(plot);
+  EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.out.find("ERROR: gnuplot failed writing"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("gnuplot: it failed"), std::string::npos) << r.out;
   struct stat st {};
   EXPECT_NE(::stat(png.c_str(), &st), 0) << "an empty or partial " << png << " was left";
   // an existing figure is left as it was
   std::ofstream(png) << "old figure";
-  EXPECT_EQ(run("plot --kind spectrum " + sig + " --logy --output " + png).status, 1);
+  EXPECT_EQ(shell(plot).status, 1);
   EXPECT_EQ(test::slurp(png), "old figure");
   // and nothing else stays in the folder (the temporary image is removed)
-  const CliRun ls = shell("ls -a " + ohmdem::test::temp_dir().string());
+  const CliRun ls = shell("ls -a " + dir);
   EXPECT_EQ(ls.out.find("failed.png.tmp"), std::string::npos) << ls.out;
 }
 

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <functional>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "io/load_signal.h"
@@ -85,6 +87,29 @@ TEST(Npy, RowsBeyondTheCountAreReadWithANote)
   EXPECT_EQ(t.rows(), 300u);
   ASSERT_FALSE(t.notes.empty());
   EXPECT_NE(t.notes.back().find("10 whole rows beyond the header's count"), std::string::npos);
+}
+
+// A record table cut inside the rows its header counts is refused with one error (numpy.load
+// refuses it: "cannot reshape array of size 299 into shape (300,)"), no warning that a row was
+// dropped before it; a row cut after the counted ones is dropped with a warning, the rest read.
+TEST(Npy, CutInsideTheCountedRowsIsRefusedWithoutAWarning)
+{
+  std::vector<std::string> warnings;
+  const auto saved = warning_sink();
+  warning_sink() = [&](const std::string &m) { warnings.push_back(m); };
+  const std::string whole = test::slurp(npy("table.npy"));
+  const std::string cut = test::write_temp("cut_record.npy", whole.substr(0, whole.size() - 7));
+  const std::string e = error_of([&] { read_npy(cut); });
+  EXPECT_NE(e.find(cut + ": truncated: the header counts 300 rows, the file holds 299 whole rows "
+                         "and 13 of the next row's 20 bytes"),
+            std::string::npos)
+      << e;
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  const std::string more = test::write_temp("uncounted_cut.npy", whole + whole.substr(200, 5));
+  EXPECT_EQ(read_npy(more).rows(), 300u);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("dropped the last row, cut before its end"), std::string::npos);
+  warning_sink() = saved;
 }
 
 TEST(Npy, LoadSignalAndReadTableDetectTheFormat)
