@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # The README's demo: installs what is missing, builds, runs the SKF 6208 scene healthy and with
-# an inner-race defect, post-processes both (indicators, spectra, diagnosis) and plots them.
+# an inner-race defect (the deck's default ring load, force), post-processes both (indicators,
+# spectra, diagnosis) and plots them. From a fresh clone the build takes most of its time.
 #   scripts/demo.sh [OUTPUT_DIR]      (default: demo-output)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -40,7 +41,7 @@ done
 echo "note: inner_defect_spectrum.png also shows small peaks at odd multiples of BPFI/2 (313, 939,"
 echo "  1565 Hz, about 40 dB under the BPFI lines). They are the time step's: BPFI's period is"
 echo "  1600.5 steps of 1 us, so the pulse edges, which fall on steps, alternate between two"
-echo "  widths every other pulse. With -var dt 5e-7 they sink to -66 dB (README, the demo)."
+echo "  widths every other pulse. With -var dt 5e-7 they sink to -66 dB (doc/deck_bearing.md)."
 gnuplot -e "sig='$out/healthy/signal.txt'; png='$out/healthy_kinematics.png'; name='healthy'" \
   scripts/plot_kinematics.gp
 echo "demo done: figures and signals in $out"

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The table of doc/lubricated_contact.md "Defects: a pit under the film": the Cb dip of each
+"""The table of doc/methods/lubricated_contact.md "Defects: a pit under the film": the Cb dip of each
 crossing of a pit by a ball (inner, outer, ball defect; 1 deg, 5 um, 6208 deck at the paper's
 point, dt = 1e-5 s, every step from 16 to 85 ms), relative to the healthy bearing's median Cb.
 Per crossing (the steps with n_masked > 0, widened by 0.5 ms on either side):

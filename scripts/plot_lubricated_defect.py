@@ -1,13 +1,11 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The README figure of a lubricated 6208 with a 1 degree inner-race defect: Cb(t) and |Z|(t)
-of the VG68 run beside R(t) of the dry run, same deck, same defect (doc/lubricated_contact.md,
-"Defects"). Runs the two decks (a few ms after the sliding phase: several crossings of the pit)
-and draws the figure headless with gnuplot (pngcairo). The figure in README.md,
-doc/img/lubricated_inner_defect.png, is made by
-    /usr/bin/python3 scripts/plot_lubricated_defect.py build/ohmdem out/lubdefect \\
-        doc/img/lubricated_inner_defect.png
-Usage: plot_lubricated_defect.py OHMDEM WORKDIR PNG [--from T0] [--to T1]"""
+of the VG68 run beside R(t) of the dry run, same deck, same defect (doc/methods/
+lubricated_contact.md, "Defects"). Runs the two decks (a few ms after the sliding phase:
+several crossings of the pit) into OUT/dry and OUT/vg68 and draws OUT/lubricated_inner_defect.png
+headless with gnuplot (pngcairo); the README's copy is doc/img/lubricated_inner_defect.png.
+Usage: plot_lubricated_defect.py OHMDEM OUT [--from T0] [--to T1]"""
 import argparse
 import os
 import subprocess
@@ -15,6 +13,7 @@ import sys
 
 import numpy as np
 
+FIGURE = "lubricated_inner_defect.png"
 DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs", "bearing_6208",
                     "in.bearing")
 
@@ -36,11 +35,15 @@ def run(exe, folder, **var):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("exe")
-    ap.add_argument("workdir")
-    ap.add_argument("png")
+    ap.add_argument("workdir", metavar="OUT", help="output folder: the runs and the figure")
+    ap.add_argument("png", nargs="?", help=argparse.SUPPRESS)
     ap.add_argument("--from", dest="t0", type=float, default=0.016)
     ap.add_argument("--to", dest="t1", type=float, default=0.0225)
     a = ap.parse_args()
+    if a.png is not None:  # the former third argument, the figure's path
+        ap.error(f"the figure is written into the output folder, OUT/{FIGURE}: give OHMDEM OUT "
+                 f"(not a PNG path '{a.png}')")
+    a.png = os.path.join(a.workdir, FIGURE)
     common = dict(defect="inner", size=1.0, tend=a.t1, dt=1e-5, nout=1)
     dry = run(os.path.abspath(a.exe), os.path.abspath(os.path.join(a.workdir, "dry")), **common)
     lub = run(os.path.abspath(a.exe), os.path.abspath(os.path.join(a.workdir, "vg68")),

@@ -437,7 +437,7 @@ def append_sizing_map(out):
     with open(path) as f:
         body = f.read().split("\n", 1)[1]  # without its title
     with open(os.path.join(out, "detectability.md"), "a") as f:
-        f.write("\n## Sizing map (issue 26)\n" + body)
+        f.write("\n## Sizing map\n" + body)
 
 
 if __name__ == "__main__":

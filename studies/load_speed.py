@@ -66,7 +66,7 @@ def ring_period(force, omega):
 
 
 def greenwood_area(q, a, b):
-    """Greenwood's contact area (m^2) for load q and curvature sums a, b (1/m); doc/hertz_contact.md."""
+    """Greenwood's contact area (m^2) for load q and curvature sums a, b (1/m); doc/methods/hertz_contact.md."""
     e_eff = E / (2 * (1 - NU ** 2))
     r_eff = (a * b * (a + b) / 2) ** (-1 / 3)
     c = (3 * q * r_eff / (4 * e_eff)) ** (1 / 3)

@@ -320,13 +320,50 @@ int run_diagnose(const std::vector<std::string> &argv)
     base = load_named(io, meta);
     // a healthy record at another rate would be compared line by line at wrong frequencies:
     // refused, never resampled silently
-    if (std::fabs(base.rate / s.rate - 1) > 1e-9)
+    if (std::fabs(base.rate / s.rate - 1) > 1e-9) {
+      // the command that brings the faster of the two to the slower one's rate, as acquire
+      // takes it: the file's column, its rate when it has no time stamps, a filter below the
+      // new Nyquist frequency (0.4 of the rate), the new record's column named so that the
+      // record's own column option selects it in both files
+      const bool base_faster = base.rate > s.rate;
+      const Signal &fast = base_faster ? base : s;
+      const double slow_rate = base_faster ? s.rate : base.rate;
+      const std::string path = base_faster ? io.files[0] : input_options(a).files.at(0);
+      const bool rated = a.has("--rate") || a.has("--rate-variable");
+      const bool stamped = base_faster ? !a.has("--baseline-rate") && !rated : !rated;
+      auto word = [](const std::string &w) {
+        if (!w.empty() && w.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                              "0123456789_./+-") == std::string::npos)
+          return w;
+        std::string q = "'";
+        for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return q + "'";
+      };
+      const std::string given = a.has("--column")     ? a.get("--column")
+                                : a.has("--variable") ? a.get("--variable")
+                                                      : "";
+      const bool headerless = s.name == "x" || s.name.rfind("column ", 0) == 0;
+      const std::string name = !given.empty() ? given : headerless ? "1" : s.name;
+      std::string stem = path.substr(path.find_last_of('/') + 1);
+      stem = stem.substr(0, stem.find_last_of('.'));
+      const std::string resampled = stem + "_" + format_number(slow_rate, 10) + "Hz.txt";
+      const std::string cmd =
+          "ohmdem-post acquire " + word(path) + (given.empty() ? "" : " --column " + word(given)) +
+          (stamped ? "" : " --input-rate " + format_number(fast.rate, 10)) + " --lowpass " +
+          format_number(0.4 * slow_rate, 10) + " --rate " + format_number(slow_rate, 10) +
+          " --name " + word(name) + " --output " + word(resampled);
       throw Error("diagnose: --baseline " + io.files[0] + " is sampled at " +
                   format_number(base.rate, 10) + " Hz, the record at " + format_number(s.rate, 10) +
-                  " Hz: a baseline must have the record's rate; resample it first (ohmdem-post "
-                  "acquire BASELINE --input-rate " +
-                  format_number(base.rate, 10) + " --lowpass F --rate " +
-                  format_number(s.rate, 10) + " --output FILE)");
+                  " Hz: a baseline must have the record's rate; " +
+                  (base_faster
+                       ? "resample the baseline to it: " + cmd +
+                             ", then diagnose with --baseline " + word(resampled) +
+                             (given.empty() ? " --column " + word(name) : "") +
+                             " (no --baseline-rate)"
+                       : "resample the record to the baseline's rate: " + cmd + ", then diagnose " +
+                             word(resampled) + " with the same --baseline" +
+                             (rated ? " (no --rate: it has time stamps)" : "")));
+    }
     o.baseline = &base;
   }
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);

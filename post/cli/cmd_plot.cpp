@@ -16,6 +16,7 @@
 #include "core/text_scan.h"
 #include "dsp/envelope.h"
 #include "dsp/spectrogram.h"
+#include "dsp/stats.h"
 #include "io/read_table.h"
 #include "report/gnuplot.h"
 #include "report/plot_figures.h"
@@ -62,6 +63,11 @@ Figure spectrum_plot(const Args &a, const Signal &s, const RunMetadata &meta, bo
   p.unit = unit_of(a, s.name);
   p.envelope = envelope_kind;
   p.logy = a.has("--logy");
+  if (meta.present()) {  // a simulated run: its numerical floor is drawn as such
+    const Indicators ind = indicators(s.x);
+    p.signal_mean = ind.mean;
+    p.signal_std = ind.std;
+  }
   return spectrum_figure(sp, p);
 }
 

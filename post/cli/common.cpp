@@ -200,8 +200,8 @@ void add_bearing_options(Args &a)
 {
   a.section("Bearing and speed");
   a.option("--bearing", "NAME",
-           "a bearing of the catalog (inputs/bearings, e.g. 6208 the paper's, 6205-2RS_JEM "
-           "CWRU's drive end)");
+           "a bearing of the catalog (inputs/bearings, e.g. machado2014 the paper's, "
+           "6205-2RS_JEM CWRU's drive end)");
   a.option("--catalog", "DIR",
            "bearing catalog folder (default: $OHMDEM_CATALOG, else the installed "
            "share/ohmdem/inputs/bearings, else the source tree's inputs/bearings)");

@@ -59,8 +59,9 @@ struct Kurtogram {
 // E G^3 = (720 + 144 (M-1) + 8 (M-1)(M-2)) / ((M+1)...(M+5)); sd(SK) -> 2/sqrt(M) (Antoni).
 // The quantile is the larger of the Pearson type III (Wilson-Hilferty, three moments) and the
 // Cornish-Fisher (four moments) ones: the skewness matters (1.1 at M = 64) and the normal
-// 2/sqrt(M) z_alpha under-estimates the tail. Checked against Monte Carlo (doc/ohmdem-post.md):
-// the exceedance rate is 0.2 to 1.2 alpha for M >= 16, alpha in [2e-5, 0.05].
+// 2/sqrt(M) z_alpha under-estimates the tail. Checked against Monte Carlo
+// (doc/methods/spectral_analysis.md): the exceedance rate is 0.2 to 1.2 alpha for M >= 16,
+// alpha in [2e-5, 0.05].
 double sk_threshold(std::size_t m, double alpha);
 
 // Levels split [0, fs/2] into 1, 2, 3, 4, 6, 8, 12, ... bands (the 1/3-binary tree of Antoni's

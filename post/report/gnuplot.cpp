@@ -142,6 +142,36 @@ std::vector<int> marker_label_rows(const std::vector<PlotMarker> &markers, doubl
   return rows;
 }
 
+MarkerLabelLayout marker_label_layout(const std::vector<PlotMarker> &markers, double xmin,
+                                      double xmax, int width, int height)
+{
+  MarkerLabelLayout l;
+  const std::vector<int> rows = marker_label_rows(markers, xmin, xmax, 0.85 * width);
+  std::size_t longest = 0;
+  int nrows = 0;
+  for (std::size_t i = 0; i < markers.size(); ++i) {
+    longest = std::max(longest, markers[i].label.size());
+    nrows = std::max(nrows, rows[i] + 1);
+  }
+  const double row_px = longest * kMarkerCharPx + kMarkerGapPx;
+  const double top_px = kTitlePx + nrows * row_px;
+  l.graph_top = 1 - top_px / height;
+  for (int r : rows)
+    l.label_bottom.push_back(l.graph_top + (kMarkerGapPx / 2 + r * row_px) / height);
+  l.row_height = row_px / height;
+  return l;
+}
+
+std::string y_tick_format(double lo, double hi)
+{
+  if (!(std::isfinite(lo) && std::isfinite(hi) && hi > lo)) return "";
+  // ticks at most a tenth of the span apart; %g prints 6 significant digits
+  const double magnitude = std::max(std::fabs(lo), std::fabs(hi));
+  const int digits = static_cast<int>(std::ceil(std::log10(magnitude / ((hi - lo) / 10)))) + 1;
+  if (digits <= 6) return "";
+  return "%." + std::to_string(std::min(digits, 15)) + "g";
+}
+
 std::string find_gnuplot()
 {
   if (const char *env = std::getenv("OHMDEM_GNUPLOT")) return executable(env) ? env : "";
@@ -205,11 +235,34 @@ void render_png(const Figure &fig, const std::string &png_path)
          << "set ylabel " << quote(fig.ylabel) << "\n"
          << "set grid lc rgb '#dddddd'\nset key below\n";
   if (fig.logy) script << "set logscale y\nset format y '%g'\n";
+  // a bound as gnuplot reads it: all its digits (a microvolt range is no 0.000000), or *
+  auto bound = [](double v) {
+    std::ostringstream b;
+    b.precision(17);
+    if (std::isfinite(v))
+      b << v;
+    else
+      b << '*';
+    return b.str();
+  };
   if (std::isfinite(fig.xmin) || std::isfinite(fig.xmax))
-    script << "set xrange [" << (std::isfinite(fig.xmin) ? std::to_string(fig.xmin) : "*") << ":"
-           << (std::isfinite(fig.xmax) ? std::to_string(fig.xmax) : "*") << "]\n";
+    script << "set xrange [" << bound(fig.xmin) << ":" << bound(fig.xmax) << "]\n";
+  // A linear axis whose values differ far less than their size (a healthy R varying by 1e-7
+  // of its mean) gets the digits that tell its ticks apart.
+  if (!fig.logy && fig.image.empty()) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto &s : fig.series)
+      for (double y : s.y)
+        if (std::isfinite(y)) lo = std::min(lo, y), hi = std::max(hi, y);
+    if (std::isfinite(fig.ymin)) lo = fig.ymin;
+    if (std::isfinite(fig.ymax)) hi = fig.ymax;
+    const std::string format = y_tick_format(lo, hi);
+    if (!format.empty()) script << "set format y " << quote(format) << "\n";
+  }
   int tag = 1;
-  // Labels of close markers at different heights (the x range: the figure's, else the markers').
+  // The markers' labels stand above the graph, each centred on its line: in rows (close
+  // markers in different rows), each row a label's length high, so no label crosses a line,
+  // the data or another label. The x range: the figure's, else the markers' and the data's.
   double x0 = fig.xmin, x1 = fig.xmax;
   for (const auto &m : fig.markers) {
     if (!std::isfinite(fig.xmin)) x0 = std::isfinite(x0) ? std::min(x0, m.x) : m.x;
@@ -220,21 +273,29 @@ void render_png(const Figure &fig, const std::string &png_path)
       if (!std::isfinite(fig.xmin) && x < x0) x0 = x;
       if (!std::isfinite(fig.xmax) && x > x1) x1 = x;
     }
-  const std::vector<int> rows = marker_label_rows(fig.markers, x0, x1, 0.85 * fig.width);
-  for (std::size_t k = 0; k < fig.markers.size(); ++k) {
-    const PlotMarker &m = fig.markers[k];
-    script << "set arrow " << tag << " from " << m.x << ", graph 0 to " << m.x
-           << ", graph 1 nohead dt 2 lw 1 lc rgb " << quote(m.color) << "\n"
-           << "set label " << tag << " " << quote(m.label) << " at " << m.x << ", graph "
-           << 0.98 - 0.13 * rows[k] << " rotate by 90 right offset -0.6,0 tc rgb " << quote(m.color)
-           << " font 'Sans,8'\n";
-    ++tag;
+  std::vector<PlotMarker> shown;
+  for (const auto &m : fig.markers)
+    if (m.x >= x0 && m.x <= x1) shown.push_back(m);
+  if (!shown.empty()) {
+    const MarkerLabelLayout layout = marker_label_layout(shown, x0, x1, fig.width, fig.height);
+    // the title above the labels, at the top of the image
+    script << "set tmargin at screen " << layout.graph_top << "\nunset title\n"
+           << "set label " << tag++ << " " << quote(fig.title) << " at screen 0.5, screen "
+           << 1 - kTitlePx / 2 / fig.height << " center\n";
+    for (std::size_t k = 0; k < shown.size(); ++k) {
+      const PlotMarker &m = shown[k];
+      script << "set arrow " << tag << " from " << m.x << ", graph 0 to " << m.x
+             << ", graph 1 nohead dt 2 lw 1 lc rgb " << quote(m.color) << "\n"
+             << "set label " << tag << " " << quote(m.label) << " at first " << m.x << ", screen "
+             << layout.label_bottom[k] << " rotate by 90 left tc rgb " << quote(m.color)
+             << " font 'Sans," << kMarkerFontPt << "'\n";
+      ++tag;
+    }
   }
   if (!fig.image.empty())
     script << "set cblabel " << quote(fig.image.zlabel) << "\nset palette rgb 33,13,10\n";
   if (std::isfinite(fig.ymin) || std::isfinite(fig.ymax))
-    script << "set yrange [" << (std::isfinite(fig.ymin) ? std::to_string(fig.ymin) : "*") << ":"
-           << (std::isfinite(fig.ymax) ? std::to_string(fig.ymax) : "*") << "]\n";
+    script << "set yrange [" << bound(fig.ymin) << ":" << bound(fig.ymax) << "]\n";
   script << "plot ";
   if (!fig.image.empty()) {
     const std::string data = dir.file("image.dat");

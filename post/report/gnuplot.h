@@ -47,12 +47,32 @@ struct Figure {
 // no file (and an existing png_path unchanged).
 void render_png(const Figure &fig, const std::string &png_path);
 
-// The height at which each marker's label is drawn (0: at the top, 1: one label's length
-// lower, ...): markers closer on the x axis than a label's width (a rotated line of text) get
+// The row in which each marker's label is drawn (0: just above the graph, 1: a label's length
+// higher, ...): markers closer on the x axis than a label's width (a rotated line of text) get
 // different heights, so that FTF's harmonics or 3xBPFO beside 2xBPFI do not overlap. Markers
 // in [xmin, xmax] on a plot `width_px` wide; the result follows the order of `markers`.
 std::vector<int> marker_label_rows(const std::vector<PlotMarker> &markers, double xmin, double xmax,
                                    double width_px);
+
+// Where the markers' labels go: above the graph, whose top is at `graph_top` (screen
+// fraction), each label centred on its line with its bottom at `label_bottom[i]` (screen
+// fraction; the order of `markers`), rows `row_height` apart (a label's length): close markers'
+// labels in different rows (marker_label_rows). Sizes in pixels of a `width` x `height` image.
+struct MarkerLabelLayout {
+  double graph_top = 1;
+  std::vector<double> label_bottom;
+  double row_height = 0;
+};
+constexpr int kMarkerFontPt = 8;
+constexpr double kMarkerCharPx = 6;  // an 8-point character of the labels (pngcairo)
+constexpr double kMarkerGapPx = 6;   // between the graph and a row, and between rows
+constexpr double kTitlePx = 34;      // the title line above the labels
+MarkerLabelLayout marker_label_layout(const std::vector<PlotMarker> &markers, double xmin,
+                                      double xmax, int width, int height);
+
+// The format of a linear axis's tick labels on [lo, hi] when %g's 6 digits would print several
+// ticks alike (a span under about 1e-5 of the values), e.g. "%.8g"; "" otherwise.
+std::string y_tick_format(double lo, double hi);
 
 // Finds the gnuplot executable; "" if none.
 std::string find_gnuplot();

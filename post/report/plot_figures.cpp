@@ -6,6 +6,7 @@
 #include "bearing/defect_lines.h"
 #include "core/error.h"
 #include "core/text_scan.h"
+#include "dsp/stats.h"
 #include "io/table_select.h"
 
 namespace ohmdem::post {
@@ -69,10 +70,18 @@ Figure spectrum_figure(const Spectrum &sp, const SpectrumPlot &p)
   fig.xmin = p.fmin;
   fig.xmax = p.fmax;
   fig.logy = p.logy;
+  const double spread = p.signal_std / std::fabs(p.signal_mean);
+  if (spread < kNumericalFloorSpread) {
+    fig.ymax = kNumericalFloorSpread * std::fabs(p.signal_mean);
+    if (!p.logy) fig.ymin = 0;
+    fig.series.front().title += ": " + p.quantity + " at the run's numerical floor (std " +
+                                format_number(spread, 2) +
+                                " of its mean), axis up to 1e-5 of the mean";
+  }
   return fig;
 }
 
-// Issue 17: STFT magnitude (dB) as an image, the defect frequencies h x order x fr(t) of FTF,
+// The STFT magnitude (dB) as an image, the defect frequencies h x order x fr(t) of FTF,
 // BPFO, BPFI and 2BSF as curves following the shaft speed.
 Figure spectrogram_figure(const Spectrogram &sg, const SpectrogramPlot &p)
 {

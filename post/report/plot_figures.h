@@ -6,6 +6,7 @@
 #ifndef OHMDEM_POST_REPORT_PLOT_FIGURES_H
 #define OHMDEM_POST_REPORT_PLOT_FIGURES_H
 
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,6 +33,10 @@ struct SpectrumPlot {
   std::string bearing;                          // its bearing's name
   int harmonics = 3;                            // of FTF, BPFO, BPFI, 2BSF
   bool logy = false;
+  // A simulated signal's mean and standard deviation (NaN: a measured record, or unknown): a
+  // spread std/|mean| under kNumericalFloorSpread is the run's numerical floor, whose spectrum
+  // is drawn on the scale of that floor (up to 1e-5 of the mean), not autoscaled into lines.
+  double signal_mean = NAN, signal_std = NAN;
 };
 Figure spectrum_figure(const Spectrum &sp, const SpectrumPlot &p);
 

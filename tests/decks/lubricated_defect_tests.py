@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Deck-level tests of defects and film breakdown in the lubricated 6208 (doc/lubricated_contact.md,
+"""Deck-level tests of defects and film breakdown in the lubricated 6208 (doc/methods/lubricated_contact.md,
 "Defects" and "Film breakdown"). The defect signature is read from the run's Cb column by
 ohmdem-post diagnose (the kinematic frequencies come from the bearing's geometry, not from
 the engine's lubricated code); breakdown is checked against the dry R of the same run.
@@ -54,7 +54,7 @@ def test_defect_inner(r, post):
     # over part of its Hertz zone and of its wetted circle), relative to the healthy bearing,
     # from 0.5 ms before the crossing to 0.5 ms after (the pit enters a contact's 1.26 mm wetted
     # circle ~0.17 ms before the contact point reaches it at 7.25 m/s). Measured 0.56 to 1.06 %
-    # (scripts/lubricated_defect_table.py, the pit as a strip, doc/lubricated_contact.md); the
+    # (scripts/lubricated_defect_table.py, the pit as a strip, doc/methods/lubricated_contact.md); the
     # recess over the whole wetted circle, an upper bound on the gap's change, gave 0.96 to
     # 1.55 %, and nothing before the crossing.
     t = sig["time"]

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the lubricated 6208's general network and AC netlist (compute
-network/resistance with a lubricant, doc/lubricated_contact.md "The network"):
+network/resistance with a lubricant, doc/methods/lubricated_contact.md "The network"):
   network  the complex network solve (closedform no) against the closed form (closedform yes),
            to 1e-12, with 1 and 2 processes; the per-contact local array's lubricated columns.
   ngspice  the exported AC netlist run by ngspice's .ac analysis (its own sparse LU on the

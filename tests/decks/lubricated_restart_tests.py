@@ -18,7 +18,7 @@ LUB_COLUMNS = ["Zabs", "Zphase", "Cb", "Rb", "hmin_inner", "hmin_outer", "lambda
 # 3000 steps of 1e-5 s, split at 15 ms: the halves straddle the end of the sliding phase (11.4
 # ms), so the second half starts with balls still settling into rolling.
 DT, TEND, THALF = 1e-5, 0.03, 0.015
-# Not the deck's defaults (doc/lubricated_contact.md), so that each keyword's value must come
+# Not the deck's defaults (doc/methods/lubricated_contact.md), so that each keyword's value must come
 # back from the deck with the restart: a warmer VG68, rougher surfaces, another frequency and
 # wetted radius.
 LUBRICANT = dict(lubricant="VG68", temperature=60.0, roughness=1.5e-7, fexc=20000.0,

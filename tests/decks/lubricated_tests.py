@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Deck-level tests of the lubricated 6208 (compute network/resistance keyword lubricant,
-doc/lubricated_contact.md). The film is checked against Hamrock and Dowson's formula written
+doc/methods/lubricated_contact.md). The film is checked against Hamrock and Dowson's formula written
 out here from the run's own loads and speeds (not through the engine's code); the phase
 against the capacitor's -pi/2; `lubricant none` against the dry run, byte for byte.
 Usage: lubricated_tests.py TEST --exe OHMDEM --src SOURCE_DIR

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Validation of the lubricated 6208 from deck runs (doc/lubricated_contact.md, "Validation
+"""Validation of the lubricated 6208 from deck runs (doc/methods/lubricated_contact.md, "Validation
 from runs"): the Hertz-zone capacitance against Hertz (Greenwood's area, the deck's) and
 Hamrock-Dowson written out here from the runs' own loads and speeds, with its load and speed
 exponents; the outer-zone factor over loads, speeds and temperatures; the regime from ohmic
@@ -40,7 +40,7 @@ def curvatures(inner):
 
 def hertz_zone(q, u, inner, eta, alpha):
     """eps0 pi a b / h_c of one contact with eps_r = 1: Greenwood's area a b = c^2 (the
-    deck's area model; doc/hertz_contact.md) over Hamrock and Dowson's central film."""
+    deck's area model; doc/methods/hertz_contact.md) over Hamrock and Dowson's central film."""
     A, B = curvatures(inner)
     r_eff = (A * B * (A + B) / 2) ** (-1 / 3)
     c2 = (3 * q * r_eff / (4 * E_STAR)) ** (2 / 3)
@@ -163,7 +163,7 @@ def test_outer_zone(r):
               f"{hz['Cb']:.3e} {f:6.2f}")
     # The gap outside the Hertz zone does not grow with the load nor thin with the film:
     # the factor falls as the load grows the ellipse and as the film thins. Expected within
-    # the published band of 3 to 11 (doc/lubricated_contact.md, where it falls and why).
+    # the published band of 3 to 11 (doc/methods/lubricated_contact.md, where it falls and why).
     check(all(3.0 <= f <= 11.0 for f in factors),
           f"outer-zone factor of the bearing {min(factors):.2f} .. {max(factors):.2f} "
           f"(published band 3-11 measured on a roller bearing; ~3.5 for loaded ball bearings)")

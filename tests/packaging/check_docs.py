@@ -4,7 +4,12 @@
 LAMMPS/LIGGGHTS doc page, in order, the plain-text (doc/src/*.txt) syntax block, and says how a
 fix or compute behaves under fix_modify (or compute_modify), across runs (start/stop) and during
 minimize, and what a command leaves in restart files; the keywords of the Markdown syntax list
-and of the plain-text block are the same (a keyword added to one only is named).
+and of the plain-text block are the same (a keyword added to one only is named). The command
+pages of ohmdem-post (doc/post/*.md but input.md and library.md) and the deck's page
+(doc/deck_bearing.md) have the sections of a command page, in order, and at most 150 lines
+(doc/post/diagnose.md any length).
+Every such page has a Validity section: a table whose last column names the check that gives
+each row (a command in backticks anyone can rerun: ctest, a script, a study).
 
     check_docs.py SOURCE_DIR
 """
@@ -13,8 +18,46 @@ import os
 import re
 import sys
 
-SECTIONS = ["Syntax", "Examples", "Description", "Output info", "Restart info",
+SECTIONS = ["Syntax", "Examples", "Description", "Output info", "Restart info", "Validity",
             "Restrictions", "Related commands", "Default", "References"]
+# a command page of ohmdem-post or the deck: Restart info where it applies
+COMMAND_SECTIONS = ["Syntax", "Examples", "Description", "Output info", "Restart info",
+                    "Validity", "Restrictions", "Related commands", "Default"]
+COMMAND_OPTIONAL = {"Restart info"}
+MAX_COMMAND_LINES = 150
+
+
+def validity_problems(text):
+    """The Validity section holds a table whose last column is `check`, each row's check a
+    command in backticks."""
+    body = text.split("\n## Validity")[-1].split("\n## ")[0] if "\n## Validity" in text else ""
+    rows = [r for r in body.splitlines() if r.startswith("|")]
+    if len(rows) < 3 or not re.match(r"^\|.*\|\s*check\s*\|\s*$", rows[0]):
+        return ["Validity has no table whose last column is 'check'"]
+    out = []
+    for r in rows[2:]:
+        cells = re.split(r"(?<!\\)\|", r.strip())[1:-1]
+        if not cells or not re.search(r"`[^`]+`", cells[-1]):
+            out.append("Validity row names no check in backticks: " + r[:60])
+    return out
+
+
+def command_page_problems(path):
+    text = open(path, encoding="utf-8").read()
+    found = re.findall(r"^## (.+?)\s*$", text, flags=re.M)
+    out = []
+    missing = [s for s in COMMAND_SECTIONS if s not in found and s not in COMMAND_OPTIONAL]
+    if missing:
+        out.append("missing section(s): " + ", ".join(missing))
+    elif [s for s in found if s in COMMAND_SECTIONS] != [s for s in COMMAND_SECTIONS if s in found]:
+        out.append("sections out of order: " + ", ".join(found))
+    if "## Validity" in text:
+        out += validity_problems(text)
+    n = text.count("\n")
+    # diagnose holds the detection, identification, sizing and placing: no length limit
+    if n > MAX_COMMAND_LINES and os.path.basename(path) != "diagnose.md":
+        out.append("%d lines, more than %d" % (n, MAX_COMMAND_LINES))
+    return out
 
 
 def keyword_drift(markdown, block):
@@ -73,6 +116,8 @@ def problems(path):
     for needle, what in needles:
         if needle not in restart:
             out.append("Restart info does not say what %s does" % what)
+    if "## Validity" in text:
+        out += validity_problems(text)
     refs = text.split("## References")[-1] if "## References" in text else ""
     if "Machado" not in refs:
         out.append("References do not cite the paper (Machado et al. 2014)")
@@ -94,8 +139,17 @@ def main():
         for msg in problems(p):
             print("ERROR: %s: %s" % (os.path.relpath(p, sys.argv[1]), msg))
             bad += 1
-    print("doc check: %d style page(s), %d problem(s)" % (len(pages), bad))
-    return 1 if bad else 0
+    commands = sorted(p for p in glob.glob(os.path.join(sys.argv[1], "doc", "post", "*.md"))
+                      if os.path.basename(p) not in ("input.md", "library.md"))
+    commands += glob.glob(os.path.join(sys.argv[1], "doc", "deck_bearing.md"))
+    bad_commands = 0
+    for p in commands:
+        for msg in command_page_problems(p):
+            print("ERROR: %s: %s" % (os.path.relpath(p, sys.argv[1]), msg))
+            bad_commands += 1
+    print("doc check: %d style page(s), %d problem(s); %d command page(s), %d problem(s)"
+          % (len(pages), bad, len(commands), bad_commands))
+    return 1 if bad or bad_commands else 0
 
 
 if __name__ == "__main__":

@@ -5,7 +5,7 @@
 Writes into reference/ (next to this script):
   sig_<name>.txt          the input vectors, one value per line, printed to round-trip (%.17g)
   indicators.json         per vector: peak, mean, rms, std, skewness, kurtosis (Pearson), crest,
-                          shape, impulse, clearance, as defined in doc/ohmdem-post.md
+                          shape, impulse, clearance, as defined in doc/post/stats.md
   hilbert_<name>.txt      |scipy.signal.hilbert(x)| for two vectors (odd and even length)
   welch_<name>.txt        scipy.signal.welch PSD (hann, nperseg 256, 50 % overlap, detrend
                           'constant', density, one-sided) as "frequency psd" rows

@@ -16,7 +16,7 @@ using namespace ohmdem;
 
 namespace {
 
-// SKF 6208 (paper Tables 1-2, doc/hertz_contact.md "SKF 6208"): ball radius, race radii,
+// SKF 6208 (paper Tables 1-2, doc/methods/hertz_contact.md "SKF 6208"): ball radius, race radii,
 // groove radii (m); steel E = 200 GPa, nu = 0.3; gamma = 5.88e7 S/m (paper Table 2).
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 constexpr double kGamma = 5.88e7;

@@ -80,7 +80,7 @@ for ratio in (1.0, 1.0 + 1e-6, 1.01, 2.0, 5.0, 20.0, 100.0, 1000.0, 1e5):
     print("    {%s, %s, %s,\n     %s, %s, %s}," % (g(A), g(B), g(kappa), g(a), g(b), g(delta)))
 print("};")
 
-# SKF 6208 (paper Tables 1-2, doc/hertz_contact.md): ball radius, race radii, groove radii.
+# SKF 6208 (paper Tables 1-2, doc/methods/hertz_contact.md): ball radius, race radii, groove radii.
 rb, R_inn, R_ext, Rc_inn, Rc_ext = 6.3e-3, 24e-3, 36.6e-3, 6.55e-3, 6.65e-3
 bearing = {
     "Inner": (1 / rb + 1 / R_inn, 1 / rb - 1 / Rc_inn),

@@ -3,7 +3,7 @@
 // references written here: a pocket is a slot whose flat walls lie at +-(ball radius +
 // clearance) from the radial line through its centre (doc/fix_bearing_cage.md); a ball past
 // the play presses a wall as a sphere on a flat, Hertz Q = (4/3) E* sqrt(rb) delta^1.5
-// (doc/hertz_contact.md, the sphere case), along the wall's normal, with the restitution
+// (doc/methods/hertz_contact.md, the sphere case), along the wall's normal, with the restitution
 // damping of LIGGGHTS' Hertz model (contact/damping.h) and no friction.
 #include <gtest/gtest.h>
 

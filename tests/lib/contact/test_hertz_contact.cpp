@@ -26,7 +26,7 @@ struct Ref6208 {
 
 using namespace ohmdem;
 
-// SKF 6208 (paper Tables 1-2, doc/hertz_contact.md "SKF 6208").
+// SKF 6208 (paper Tables 1-2, doc/methods/hertz_contact.md "SKF 6208").
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 const double kEstar = effective_modulus(200e9, 0.3, 200e9, 0.3);
 
@@ -147,8 +147,8 @@ TEST(HertzForceLaw, RoundTripAndStiffness)
   }
 }
 
-// doc/hertz_contact.md "SKF 6208": inner kappa 9.42, outer 5.97; K_inner 3.10e10, K_outer 2.94e10
-// N/m^1.5.
+// doc/methods/hertz_contact.md "SKF 6208": inner kappa 9.42, outer 5.97; K_inner 3.10e10,
+// K_outer 2.94e10 N/m^1.5.
 TEST(Hertz6208, EllipticityAndStiffnessConstant)
 {
   const HertzContact in(ball_inner_race(kRb, kRinn, kRcInn), kEstar);
@@ -165,8 +165,9 @@ TEST(Hertz6208, EllipticityAndStiffnessConstant)
               out.stiffness_constant());
 }
 
-// Greenwood (paper eqs 2-5) vs exact for the 6208. doc/hertz_contact.md "SKF 6208": S +2.5 %
-// (inner), +1.2 % (outer); ellipticity +9 % and +5 %; rolling-direction half-width b about -3 %.
+// Greenwood (paper eqs 2-5) vs exact for the 6208. doc/methods/hertz_contact.md "SKF 6208":
+// S +2.5 % (inner), +1.2 % (outer); ellipticity +9 % and +5 %; rolling-direction half-width b
+// about -3 %.
 TEST(Hertz6208, GreenwoodVsExactTable)
 {
   struct Row {

@@ -2,8 +2,8 @@
 // The ball–race contact kernel (src_fix/lib/contact/race_contact.*) against references written
 // here from theory, not from the kernel's own formulas: the elliptic Hertz solution in
 // Johnson's pressure form with libstdc++'s elliptic integrals (the kernel uses the ellipticity
-// form and its own AGM, doc/hertz_contact.md), the groove's geometry (approach, contact point,
-// normal), Mindlin's tangential stiffness, the Coulomb limit, rolling without slip and the
+// form and its own AGM, doc/methods/hertz_contact.md), the groove's geometry (approach, contact
+// point, normal), Mindlin's tangential stiffness, the Coulomb limit, rolling without slip and the
 // restitution damping of LIGGGHTS' Hertz model (contact/damping.h).
 #include <gtest/gtest.h>
 
@@ -23,10 +23,10 @@ using ohmdem::RaceSide;
 using ohmdem::Vec2;
 using ohmdem::test::kPi;
 
-// SKF 6208 (doc/hertz_contact.md "SKF 6208"): ball radius, race radii at the groove bottom,
+// SKF 6208 (doc/methods/hertz_contact.md "SKF 6208"): ball radius, race radii at the groove bottom,
 // groove radii (m). Steel on steel, E = 200 GPa, nu = 0.3: 1/E* = 2 (1 - nu^2)/E
-// (doc/hertz_contact.md "Inputs") and, in LIGGGHTS' convention, 1/G* = 2 * 2 (2 - nu)(1 + nu)/E
-// (contact/hertz_contact.h).
+// (doc/methods/hertz_contact.md "Inputs") and, in LIGGGHTS' convention,
+// 1/G* = 2 * 2 (2 - nu)(1 + nu)/E (contact/hertz_contact.h).
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 constexpr double kEstar = 200e9 / (2 * (1 - 0.3 * 0.3));
 constexpr double kGstar = 200e9 / (4 * (2 - 0.3) * (1 + 0.3));
@@ -35,7 +35,7 @@ constexpr double kMu = 0.1;
 
 // Elliptic Hertz contact from the pressure p = p0 sqrt(1 - x^2/a^2 - y^2/b^2) on an ellipse of
 // eccentricity e (m = e^2 = 1 - b^2/a^2), for the half curvature sums A' <= B' (Johnson's
-// elliptical contact, the solution doc/hertz_contact.md cites):
+// elliptical contact, the solution doc/methods/hertz_contact.md cites):
 //   A' = p0 b (K - E) / (E* m a^2),   B' = p0 b (E / (1 - m) - K) / (E* m a^2),
 //   delta = p0 b K / E*,   P = (2/3) pi a b p0,
 // with K(e), E(e) the complete elliptic integrals of modulus e. A sphere (m -> 0) gives back
@@ -132,7 +132,7 @@ TEST(RaceContact, HertzForceIsKDelta15WithTheExactConstant)
     const RaceContactModel m = model(side);
     const double K = stiffness_reference(rolling_sum(side, inner ? kRinn : kRext),
                                          groove_sum(inner ? kRcInn : kRcExt), kEstar);
-    // doc/hertz_contact.md "SKF 6208": K_hertz 3.104e10 (inner), 2.942e10 (outer) N/m^1.5.
+    // doc/methods/hertz_contact.md "SKF 6208": K_hertz 3.104e10 (inner), 2.942e10 (outer) N/m^1.5.
     EXPECT_LT(rel(K, inner ? 3.104e10 : 2.942e10), 1e-3);
     for (double delta : {1e-8, 1e-7, 1e-6, 5e-6, 2e-5}) {
       double shear = 0;

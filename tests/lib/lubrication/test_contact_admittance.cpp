@@ -15,7 +15,7 @@ using ohmdem::test::kPi;
 namespace {
 const double kEprime = 2.0e11 / (1.0 - 0.3 * 0.3);
 
-// The 6208 inner contact (doc/hertz_contact.md) at load w and entrainment speed u.
+// The 6208 inner contact (doc/methods/hertz_contact.md) at load w and entrainment speed u.
 ContactInput inner_6208(double w, double u)
 {
   const ohmdem::CurvatureSums s = ohmdem::ball_inner_race(0.0063, 0.024, 0.00655);

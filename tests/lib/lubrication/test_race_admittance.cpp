@@ -3,8 +3,8 @@
 // evaluates at every step, against contact_admittance() and idle_gap_capacitance() called
 // with the same contact (the reference: contact_admittance is itself checked against the plain
 // formulas in test_keyed_cache.cpp and against Hamrock-Dowson in test_ehl_film.cpp). The
-// accuracy budget of the fast path (doc/lubricated_contact.md, "Speed") is 1e-10 relative on
-// each contact's h_c, h_min, C and G; this test holds it to 1e-12, 10x what it reaches now
+// accuracy budget of the fast path (doc/methods/lubricated_contact.md, "Speed") is 1e-10 relative
+// on each contact's h_c, h_min, C and G; this test holds it to 1e-12, 10x what it reaches now
 // (~8e-14), over loads 0.1 N to 3 kN, speeds to 50 m/s, oils from thin to thick (viscosity 5 mPa s
 // to 1 Pa s: temperatures), lambda from below 0.1 to beyond 30, and recessed gaps. Where
 // RaceAdmittance leaves out erfc, the metallic term it drops must be below 1e-17 of G and the

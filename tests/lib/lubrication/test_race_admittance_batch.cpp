@@ -4,7 +4,7 @@
 // bit for bit (the scalar path, itself held to the budget against contact_admittance() by
 // test_race_admittance.cpp), whatever its lane, its batch's size and its neighbours, in every
 // compiled form (SSE2, AVX2, AVX-512: the last two where the CPU has them); and within the
-// accuracy budget of doc/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; held
+// accuracy budget of doc/methods/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; held
 // here to 1e-12) against contact_admittance(), the reference.
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Exact resistance between `ehigh` and `0` of a SPICE netlist written by write_spice_netlist.
 
-An independent reference for ill-conditioned networks (doc/conduction_network.md, Accuracy).
+An independent reference for ill-conditioned networks (doc/methods/conduction_network.md, Accuracy).
 Every R value is read as an exact decimal (Fraction); nodes are eliminated one at a time by
 the star-mesh transform (Kron reduction): node k with total conductance d_k adds
 g_ik * g_jk / d_k between each pair of its neighbours. Rational arithmetic makes it exact;

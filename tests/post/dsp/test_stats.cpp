@@ -106,7 +106,7 @@ TEST(Stats, ConstantSignalHasUndefinedMoments)
 
 TEST(Stats, RectangleTrainKurtosisFollowsDutyCycle)
 {
-  // doc/ohmdem-post.md (stats): an ideal rectangle train occupying a fraction d of the time
+  // doc/post/stats.md: an ideal rectangle train occupying a fraction d of the time
   // has kurtosis (1 - 3 d (1 - d)) / (d (1 - d)), which falls as d grows.
   for (int width : {5, 20, 100}) {
     std::vector<double> x(100000, 1.39);

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The figures of plot, made from what the library computed: indicators sorted by the swept
 // parameter with the rows left out told, their errors in settings; the spectrogram's fault lines
-// only with the shaft speed.
+// only with the shaft speed; the defect lines' labels above the graph; ticks told apart.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <set>
 
 #include "core/error.h"
 #include "io/read_table.h"
@@ -120,6 +122,48 @@ TEST(PlotFigures, MarkerLabelsOfCloseLinesDoNotOverlap)
   EXPECT_NE(rows[0], rows[4]);   // FTF, 2xFTF
   EXPECT_NE(rows[10], rows[7]);  // 3xBPFO, 2xBPFI
   EXPECT_EQ(rows[3], 0);         // BPFI alone: at the top, as before
+}
+
+// The labels stand above the graph in rows a label's length apart: every label's bottom lies
+// above the graph's top, rows do not overlap, and the title keeps its line at the top.
+TEST(PlotFigures, MarkerLabelsStandAboveTheGraph)
+{
+  std::vector<PlotMarker> m;
+  for (int h = 1; h <= 3; ++h) {
+    m.push_back({h * 31.5158, std::to_string(h) + "xFTF"});
+    m.push_back({h * 409.706, std::to_string(h) + "xBPFO"});
+    m.push_back({h * 624.801, std::to_string(h) + "xBPFI"});
+  }
+  const MarkerLabelLayout l = marker_label_layout(m, 0, 2400, 1100, 600);
+  const std::vector<int> rows = marker_label_rows(m, 0, 2400, 0.85 * 1100);
+  ASSERT_EQ(l.label_bottom.size(), m.size());
+  const double label_px = 6 * kMarkerCharPx;  // "3xBPFO"
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    EXPECT_GT(l.label_bottom[i], l.graph_top) << m[i].label;
+    EXPECT_LE(l.label_bottom[i] + label_px / 600, 1 - kTitlePx / 600 + 1e-12) << m[i].label;
+    for (std::size_t j = 0; j < m.size(); ++j)
+      if (rows[j] == rows[i] + 1) {
+        EXPECT_GE(l.label_bottom[j] - l.label_bottom[i], label_px / 600) << m[i].label;
+      }
+  }
+}
+
+// A healthy R's ticks (1.383770 to 1.383795 ohm) need more than %g's 6 digits; a plain range
+// none.
+TEST(PlotFigures, TickFormatTellsCloseTicksApart)
+{
+  const std::string f = y_tick_format(1.383770, 1.383795);
+  ASSERT_FALSE(f.empty());
+  std::set<std::string> printed;
+  for (int k = 0; k <= 10; ++k) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f.c_str(), 1.383770 + k * 2.5e-6);
+    printed.insert(buf);
+  }
+  EXPECT_EQ(printed.size(), 11u) << f;
+  EXPECT_EQ(y_tick_format(0, 1), "");
+  EXPECT_EQ(y_tick_format(-0.004, 0.004), "");
+  EXPECT_EQ(y_tick_format(1, 1), "");
 }
 
 }  // namespace ohmdem::post

@@ -162,7 +162,7 @@ TEST(RealData, BaselineAtAnotherRateIsRefused)
                  "/sig08.txt --baseline-rate 48000");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.out.find("sampled at 48000 Hz, the record at 12000 Hz: a baseline must have the "
-                       "record's rate; resample it first (ohmdem-post acquire"),
+                       "record's rate; resample the baseline to it: ohmdem-post acquire"),
             std::string::npos)
       << r.out;
   const std::string base12 = ohmdem::test::temp_path("sig08_12k.txt");
