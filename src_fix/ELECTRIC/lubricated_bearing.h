@@ -3,7 +3,7 @@
 // frequency from this step's race contacts, ball and ring velocities. Each ball-race contact
 // gets one record (contact()); the records feed the closed form (each ball its two contacts
 // in series, the balls in parallel), the general network (lubricated_network.*), the AC
-// netlist and the local array. The physics is in lib/lubrication (doc/lubricated_contact.md).
+// netlist and the local array. The physics is in lib/lubrication (doc/methods/lubricated_contact.md).
 // Adapter code (LIGGGHTS types).
 #ifndef OHMDEM_STYLE_LUBRICATED_BEARING_H
 #define OHMDEM_STYLE_LUBRICATED_BEARING_H
@@ -108,7 +108,7 @@ class LubricatedBearing : protected Pointers {
   // A pressed contact's record from its admittance.
   void fill(const ohmdem::lubrication::ContactAdmittance &c, LubricatedContact &out) const;
   // A ball's two records under the excitation: a film whose voltage exceeds the breakdown
-  // field times its gap conducts through its metal (doc/lubricated_contact.md).
+  // field times its gap conducts through its metal (doc/methods/lubricated_contact.md).
   void break_down(LubricatedContact pair[2],
                   const ohmdem::lubrication::ContactAdmittance film[2]) const;
   double ball_dry_conductance(const ResistanceContext &context, int i);

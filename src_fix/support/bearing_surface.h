@@ -27,7 +27,7 @@ struct BearingSurface {
   bool inner() const { return kind == BodyKind::InnerRace; }
 };
 
-// A race pit seen from a contact (the lubricated gap's strip, doc/lubricated_contact.md): the
+// A race pit seen from a contact (the lubricated gap's strip, doc/methods/lubricated_contact.md): the
 // contact's arc offset from the pit's centre and the pit's arc width at the race's radius (m),
 // its depth (m) and the radius of the ball that rolls over it (m).
 struct PitView {

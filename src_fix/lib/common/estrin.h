@@ -3,7 +3,7 @@
 // largest power of two below N, each evaluated alike, joined as low + high x^(2^j). The
 // operations form a tree of depth ~2 log2(N) instead of Horner's chain of 2(N-1) dependent
 // ones: in the lubricated contact's hot loop the dependency chain, not the instruction count,
-// sets the time (doc/lubricated_contact.md, "Speed"). One template for double and for
+// sets the time (doc/methods/lubricated_contact.md, "Speed"). One template for double and for
 // lanes.h's four- and eight-lane vectors: every lane does the scalar form's operations in its order, so
 // the same bits (with FMA contraction off, as the lubricated kernels are built).
 #ifndef OHMDEM_ESTRIN_H

@@ -3,7 +3,7 @@
 // (plain C++). glibc's erfc with its exponentials costs ~160 instructions here; this one 66
 // plus its exponential's ~40, within 3e-14 relative of it up to x = 6 and 2e-13 up to 26 (the
 // rounding of x^2 in the exponent; tests/lib/common/test_fast_erfc.cpp): far inside the
-// per-contact accuracy budget of doc/lubricated_contact.md, "Speed".
+// per-contact accuracy budget of doc/methods/lubricated_contact.md, "Speed".
 //
 // For x >= 0, with t = 2/(2 + x) and s = 2t - 1 = (2 - x)/(2 + x) in (-1, 1]:
 //   erfc(x) = t exp(-x^2 + g(s)),  g(s) = ln(erfc(x)/t) + x^2,

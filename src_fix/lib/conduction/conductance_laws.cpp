@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The conduction laws: paper eq. 1 with the small-angle bound, Holm's constriction; see
-// conductance_laws.h, doc/conduction_network.md and doc/compute_network_resistance.md.
+// conductance_laws.h, doc/methods/conduction_network.md and doc/compute_network_resistance.md.
 #include "conduction/conductance_laws.h"
 
 #include <algorithm>

@@ -9,7 +9,7 @@
 // It diverges as theta -> 0. Two spots of radii c = sqrt(S/pi) on a sphere of radius r
 // cannot be closer than touching, so their centres are at least c_i + c_j apart along the
 // surface: theta >= theta_min = (c_i + c_j) / r (capped at pi). This bound is applied, which
-// keeps C_ij finite. Derivation, limits and tests: doc/conduction_network.md.
+// keeps C_ij finite. Derivation, limits and tests: doc/methods/conduction_network.md.
 #ifndef OHMDEM_CONDUCTANCE_MODELS_H
 #define OHMDEM_CONDUCTANCE_MODELS_H
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Hertz elliptic contact kernel. Equations and sources: doc/hertz_contact.md.
+// Hertz elliptic contact kernel. Equations and sources: doc/methods/hertz_contact.md.
 #include "contact/hertz_contact.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Hertz contact geometry of two elastic bodies with principal curvatures (elliptic contact),
-// plain C++ (no LIGGGHTS types). Physics and sources: doc/hertz_contact.md.
+// plain C++ (no LIGGGHTS types). Physics and sources: doc/methods/hertz_contact.md.
 //
 // Conventions: SI units; curvature sums are FULL sums of both bodies' curvatures (1/R, not
 // 1/(2R)), convex positive, concave negative.

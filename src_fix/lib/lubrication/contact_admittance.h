@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The admittance Y = G + j omega C of a lubricated ball-race contact and of a bearing's
 // closed form (each ball its two contacts in series, the balls in parallel). Plain C++;
-// equations and sources in doc/lubricated_contact.md.
+// equations and sources in doc/methods/lubricated_contact.md.
 #ifndef OHMDEM_LUBRICATION_CONTACT_ADMITTANCE_H
 #define OHMDEM_LUBRICATION_CONTACT_ADMITTANCE_H
 
@@ -72,7 +72,7 @@ struct ContactAdmittance {
 // G = g_dry. recess = 0 gives exactly the contact without a pit.
 ContactAdmittance contact_admittance(const ContactInput &in);
 
-// Film breakdown (doc/lubricated_contact.md "Film breakdown"). The voltage amplitude across a
+// Film breakdown (doc/methods/lubricated_contact.md "Film breakdown"). The voltage amplitude across a
 // contact of admittance y_self in series with y_other (the ball's other contact) under the
 // voltage amplitude v across the ball: v |y_other / (y_self + y_other)|.
 double contact_voltage(std::complex<double> y_self, std::complex<double> y_other, double v);

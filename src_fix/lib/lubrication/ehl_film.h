@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Elastohydrodynamic film of an elliptical contact: Hamrock and Dowson's central and minimum
 // film thickness (fully flooded, isothermal, Newtonian; Hamrock and Dowson 1977, Hamrock 1994
-// ch. 22), and the film parameter. Plain C++; doc/lubricated_contact.md.
+// ch. 22), and the film parameter. Plain C++; doc/methods/lubricated_contact.md.
 #ifndef OHMDEM_LUBRICATION_EHL_FILM_H
 #define OHMDEM_LUBRICATION_EHL_FILM_H
 

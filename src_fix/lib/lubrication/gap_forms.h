@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The closed form of the gap integral's midpoint rule (contact_admittance.cpp,
-// gap_capacitance), shared with race_admittance.cpp. Plain C++; doc/lubricated_contact.md.
+// gap_capacitance), shared with race_admittance.cpp. Plain C++; doc/methods/lubricated_contact.md.
 #ifndef OHMDEM_LUBRICATION_GAP_FORMS_H
 #define OHMDEM_LUBRICATION_GAP_FORMS_H
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // A loaded contact of a race whose wetted circle meets a race pit (a strip across the raceway,
 // pit_gap.h): the Hertz zone's film and metal and the gap around it over the strip instead of
-// a recess added over the whole wetted circle. Plain C++; doc/lubricated_contact.md, "Defects:
+// a recess added over the whole wetted circle. Plain C++; doc/methods/lubricated_contact.md, "Defects:
 // a pit under the film".
 #ifndef OHMDEM_LUBRICATION_PIT_CONTACT_H
 #define OHMDEM_LUBRICATION_PIT_CONTACT_H

@@ -3,7 +3,7 @@
 // raceway, [x1, x2] in the contact's rolling coordinate x, where the race falls away by the
 // recess profile r(x). The two integrals it changes: the oil-filled gap around the Hertz
 // ellipse out to the wetted circle, and the Hertz zone's film. Plain C++; equations in
-// doc/lubricated_contact.md, "Defects: a pit under the film".
+// doc/methods/lubricated_contact.md, "Defects: a pit under the film".
 #ifndef OHMDEM_LUBRICATION_PIT_GAP_H
 #define OHMDEM_LUBRICATION_PIT_GAP_H
 

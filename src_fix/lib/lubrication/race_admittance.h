@@ -5,7 +5,7 @@
 // form mean, the gap integral's race terms, the permittivity's Gauss sum as one fraction), the
 // inline logarithm, exponential and erfc of common/, and no erfc where the metallic fraction
 // cannot change the result (below). Same equations as contact_admittance.h, within the
-// accuracy budget of doc/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; ~1e-13
+// accuracy budget of doc/methods/lubricated_contact.md "Speed" (1e-10 relative on h, C and G; ~1e-13
 // reached, tests/lib/lubrication/test_race_admittance.cpp). Plain C++.
 #ifndef OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
 #define OHMDEM_LUBRICATION_RACE_ADMITTANCE_H
@@ -133,7 +133,7 @@ class RaceAdmittance {
   // The gap integral (contact_admittance.cpp, gap_capacitance): 2 rx, 2 ry, r_wet^2, the
   // form means of (sqrt(2 rx), sqrt(2 ry)), and eps0 eps_r sqrt(rx ry) 2 pi.
   double p_ = 0, q_ = 0, r2_ = 0, pq_s_ = 0, pq_y_ = 1, scale_ = 0;
-  // Per race rather than per contact (doc/lubricated_contact.md, "Speed"): sqrt(2 rx),
+  // Per race rather than per contact (doc/methods/lubricated_contact.md, "Speed"): sqrt(2 rx),
   // sqrt(2 ry); sqrt(2 rx)/b and sqrt(2 ry)/a at 1 N; the Hertz ellipse's form mean over the
   // race's (s at 1 N, y); 1/sigma, 1/resistivity; the peak pressure (GPa) at 1 N; the
   // permittivity's sum as P(q)/Q(q) (coefficients from the constant term; rational_ false:

@@ -2,7 +2,7 @@
 // A network of complex admittances Y = G + j omega C (AC steady state, phasors): the nodal
 // system Y v = i with the low electrode grounded and a current I injected into the high
 // electrode, solved by a sparse LU. The impedance Z = v(high) / I. Plain C++ (Eigen).
-// Used by compute network/resistance with a lubricant (doc/lubricated_contact.md).
+// Used by compute network/resistance with a lubricant (doc/methods/lubricated_contact.md).
 #ifndef OHMDEM_NETWORK_COMPLEX_NETWORK_H
 #define OHMDEM_NETWORK_COMPLEX_NETWORK_H
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // The conduction network's facade: edges in, R and potentials out. The graph, the exact
 // reductions and the solve strategy are in network_graph.*, network_reductions.* and
-// network_solve.*. Numerics (why each step is there): doc/conduction_network.md.
+// network_solve.*. Numerics (why each step is there): doc/methods/conduction_network.md.
 #include "network/conduction_network.h"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 // enters `high`, `low` is at 0 V, and R = V_high / I.
 //
 // Plain C++ (no LIGGGHTS types). Eigen is hidden behind a PIMPL so that including this
-// header stays cheap. Physics and numerics: doc/conduction_network.md.
+// header stays cheap. Physics and numerics: doc/methods/conduction_network.md.
 //
 // Determinism: the result depends only on the multiset of (a, b, g) added, never on the
 // insertion order (edges are sorted canonically before anything is summed), so contacts

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Exact reductions of a conduction network (internal to network/): Kirchhoff's series and
 // dangling-node rules before a solve, and the subtraction-free Kron elimination used when a
-// factorization cannot reach its accuracy. doc/conduction_network.md.
+// factorization cannot reach its accuracy. doc/methods/conduction_network.md.
 #ifndef OHMDEM_NETWORK_REDUCTIONS_H
 #define OHMDEM_NETWORK_REDUCTIONS_H
 

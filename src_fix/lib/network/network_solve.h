@@ -2,7 +2,7 @@
 // The solve strategy of a conduction network (internal to network/): the grounded, diagonally
 // scaled Laplacian of the reduced graph solved by CG (diagonal, incomplete Cholesky or
 // multigrid preconditioner, warm-started), else by sparse LDL^T with iterative refinement,
-// else by the exact Kron elimination. Why each step: doc/conduction_network.md.
+// else by the exact Kron elimination. Why each step: doc/methods/conduction_network.md.
 #ifndef OHMDEM_NETWORK_SOLVE_H
 #define OHMDEM_NETWORK_SOLVE_H
 

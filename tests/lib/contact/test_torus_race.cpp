@@ -23,7 +23,7 @@ using ohmdem::TorusGroove;
 using ohmdem::Vec3;
 using ohmdem::test::kPi;
 
-// The paper's 6208 (doc/hertz_contact.md): ball radius, races at the groove bottom, grooves.
+// The paper's 6208 (doc/methods/hertz_contact.md): ball radius, races at the groove bottom, grooves.
 constexpr double kRb = 6.3e-3, kRinn = 24e-3, kRext = 36.6e-3, kRcInn = 6.55e-3, kRcExt = 6.65e-3;
 constexpr double kE = 200e9, kNu = 0.3;
 constexpr double kEstar = kE / (2 * (1 - kNu * kNu));
