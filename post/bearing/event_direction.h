@@ -48,11 +48,11 @@ EventDirection event_direction(const std::vector<double> &first, const std::vect
 struct Signal;
 struct DiagnoseOptions;
 struct RaceToSize;
-struct LocatedDefect;
+struct DefectLocation;
 // An outer defect's place from the load direction (position_reference "load direction") when
 // the record's second axis is given (o.across) under a radial load; else l is left as it is.
 void place_outer_by_event_direction(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
-                                    LocatedDefect &l);
+                                    DefectLocation &l);
 
 }  // namespace ohmdem::post
 

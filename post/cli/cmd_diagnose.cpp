@@ -7,9 +7,8 @@
 #include <sstream>
 
 #include "bearing/diagnose.h"
-#include "bearing/double_impulse.h"
+#include "bearing/locate/locate.h"
 #include "bearing/order_diagnose.h"
-#include "bearing/pass_energy.h"
 #include "bearing/pulse_template.h"
 #include "cli/commands.h"
 #include "cli/common.h"
@@ -101,6 +100,25 @@ void read_curve(const std::string &path, const std::string &flag, const std::str
     throw Error("diagnose: " + flag + " " + path + ": needs at least two lines " + form);
 }
 
+std::string size_method_help()
+{
+  std::string h = "how the size is read (default: chosen by the record: template with a "
+                  "--template-bank, else area on an electrical level record; accel-curve with a "
+                  "--size-curve, else double-impulse on a vibration record):";
+  for (const SizeMethod *m : size_methods()) h += std::string(" ") + m->name() + " (" + flag_named(m->summary()) + ");";
+  h.back() = '.';
+  return h;
+}
+
+std::string place_method_help()
+{
+  std::string h = "how the place is read (default: pulses on an electrical level record, passes "
+                  "on a vibration record):";
+  for (const PlaceMethod *m : place_methods()) h += std::string(" ") + m->name() + " (" + flag_named(m->summary()) + ");";
+  h.back() = '.';
+  return h;
+}
+
 }  // namespace
 
 int run_diagnose(const std::vector<std::string> &argv)
@@ -168,12 +186,8 @@ int run_diagnose(const std::vector<std::string> &argv)
            "the --size-curve's own error, the relative standard deviation of its area (from "
            "simulations the curve does not use; sizing.py writes it in the curve's header): "
            "the size's interval includes it (default 0: the pass-to-pass scatter only)");
-  a.option("--size-method", "METHOD",
-           "area (default: the electrical pulses' area), double-impulse (an accelerometer "
-           "record: the delay between the ball's entry and exit events in the pit) or "
-           "accel-curve (an accelerometer record: the passes' energy on the model's "
-           "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s) or template (an "
-           "electrical record: its folded pulse's shape fitted with the --template-bank)");
+  a.option("--size-method", "METHOD", size_method_help());
+  a.option("--place-method", "METHOD", place_method_help());
   a.option("--template-bank", "FILE",
            "the model's pulse templates for --size-method template: folds of simulations of the "
            "same scene at known sizes (and angles from the load) through the record's chain "
@@ -236,22 +250,13 @@ int run_diagnose(const std::vector<std::string> &argv)
     if (o.record_filter)
       o.record_delay_s = sos_dc_delay_s(o.record_filter->sos, o.record_filter->fs);
   }
-  // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
-  const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
-  const bool double_impulse = size_method == "double-impulse";
-  const bool accel_curve = size_method == "accel-curve";
-  const bool by_template = size_method == "template";
-  if (!double_impulse && !accel_curve && !by_template && size_method != "area")
-    throw Error(
-        "diagnose: --size-method must be area, double-impulse, accel-curve or template, got '" +
-        size_method + "'");
-  if (by_template != a.has("--template-bank"))
-    throw Error(by_template ? "diagnose: --size-method template needs --template-bank FILE"
-                            : "diagnose: --template-bank needs --size-method template");
+  // the size and place methods, by name from their tables (bearing/locate/size_method.h)
+  if (a.has("--size-method")) o.size_method = &size_method(a.get("--size-method"));
+  if (a.has("--place-method")) o.place_method = &place_method(a.get("--place-method"));
   std::optional<BankFile> bank;
-  if (by_template) {
+  if (a.has("--template-bank")) {
     bank = read_template_bank(a.get("--template-bank"));
-    check_bank(*bank, s, input_options(a).files.at(0), o.geometry.name, "", o.load);
+    check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, "", o.load);
     o.template_bank = &bank->bank;
     o.fine_fold_period = bank->fine_fold_period;
   }
@@ -268,7 +273,8 @@ int run_diagnose(const std::vector<std::string> &argv)
     o.fine_fold_period = how == "fine";
   }
   if (a.has("--size-curve"))  // accel-curve: the passes' energy against size, else the area
-    read_curve(a.get("--size-curve"), "--size-curve", accel_curve ? "ENERGY_V2S" : "AREA_S",
+    read_curve(a.get("--size-curve"), "--size-curve",
+               record_kind(s.x) == RecordKind::vibration ? "ENERGY_V2S" : "AREA_S",
                o.curve_size_deg, o.curve_rel_area_s);
   if (a.has("--width-curve"))
     read_curve(a.get("--width-curve"), "--width-curve", "WIDTH_S", o.width_curve_size_deg,
@@ -369,37 +375,39 @@ int run_diagnose(const std::vector<std::string> &argv)
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
   if (other_channel) o.other_channel = &*other_channel;
   const std::optional<Signal> across = across_input(a, meta, s);
-  if (across && !double_impulse && !accel_curve)
-    throw Error(
-        "diagnose: --across-column is read by the accelerometer size methods (--size-method "
-        "double-impulse or accel-curve)");
   if (across) o.across = &*across;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
-  if (accel_curve && (in_orders || a.has("--pulse-height") || a.has("--width-curve")))
-    throw Error(
-        "diagnose: --size-method accel-curve needs a record at constant speed and takes no "
-        "--pulse-height or --width-curve (they belong to the area method)");
-  if (double_impulse &&
-      (in_orders || a.has("--size-curve") || a.has("--pulse-height") || a.has("--width-curve")))
-    throw Error(
-        "diagnose: --size-method double-impulse needs a record at constant speed and "
-        "takes no --size-curve, --width-curve or --pulse-height (they belong to the area method)");
-  if (by_template && in_orders)
-    throw Error(
-        "diagnose: --size-method template needs a record at constant speed (the bank's folds "
-        "are at the scene's speed)");
+  std::string no_size;
+  if (o.estimate_size) {
+    // the method's own check of the settings, and what it needs of the record
+    const SizeMethod &sm = o.size_method ? *o.size_method : default_size_method(s, o);
+    sm.check(o);
+    if (in_orders && sm.needs().constant_speed) {
+      const std::string why = "the " + std::string(sm.name()) +
+                              " size method needs a record at constant speed (the speed varies "
+                              "by " +
+                              format_number(100 * sa->speed.variation, 3) + " % > --tolerance)";
+      if (o.size_method) throw Error("diagnose: " + why);
+      no_size = why;  // the method the record chose: said in the output, not refused
+      o.estimate_size = false;
+    }
+    if (bank) {
+      const std::string sized = o.assume_defect;
+      if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", nullptr, sized, "");
+    }
+  }
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
-  if (double_impulse && o.estimate_size) d.located = locate_by_double_impulse(s, d, o);
-  if (accel_curve && o.estimate_size) d.located = locate_by_pass_energy(s, d, o);
-  if (by_template && o.estimate_size) {
-    const std::string sized = o.assume_defect.empty() ? d.defect : o.assume_defect;
-    if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", "", sized, "");
-    d.located = locate_by_template(s, d, o);
+  if (!no_size.empty() && (d.defect == "inner" || d.defect == "outer")) {
+    d.located.size_status = d.located.position_status = LocateStatus::not_determined;
+    d.located.method = "not determined: " + no_size;
+    d.located.position_note = "not determined: " + no_size;
   }
+  if (bank && o.assume_defect.empty() && (d.defect == "inner" || d.defect == "outer"))
+    check_bank(*bank, s, "", nullptr, d.defect, "");
   if (a.has("--pulse-fold-out")) {
     refuse_input_as_output("--pulse-fold-out", a.get("--pulse-fold-out"),
                            input_files(a, "--pulse-fold-out"));
