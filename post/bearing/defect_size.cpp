@@ -123,8 +123,10 @@ DefectLocation locate_defect(const Signal &s, const Diagnosis &found, const Diag
     l.height_source = "theory: Nb equal parallel paths, one lost: 1/(Nb-1)";
   } else {
     l.method =
-        radial ? "needs {diagnose.pulse_height} (the jump at the load zone's centre, from a "
-                 "simulation of the scene) under a radial load"
+        radial ? "not determined: under a radial load the jump depends on the ball's place in the "
+                 "load zone: give the model's data of the scene ({diagnose.model}: a bank or the "
+                 "area's curve) or {diagnose.pulse_height} (the jump at the zone's centre, from a "
+                 "simulation of the scene)"
                : "needs the load mode ({diagnose.load}, or run.json) or {diagnose.pulse_height}";
     return l;
   }
@@ -145,7 +147,7 @@ DefectLocation locate_defect(const Signal &s, const Diagnosis &found, const Diag
   l.window_rel_area_s = a.window_rel_area_s;
   // Where the record's entry-to-exit width lies on the model's width curve (which starts where
   // the chain resolves the pulse), the size comes from the width: the area stops growing past
-  // ~1 deg when the ring is free to move (doc/ohmdem-post.md, "Size and position").
+  // ~1 deg when the ring is free to move (doc/methods/size_pulse_area.md).
   CurveReading w;
   if (a.passes > 0) {
     const PulseEdges pe = pulse_edge_width(s.x, s.rate, d.frequency_hz);

@@ -7,7 +7,7 @@
 // smear the passes); the same window half a period later (between the passes) is the
 // background, whose energy is subtracted. On the simulator's vibration this energy grows
 // monotonically with the pit's size, where the entry and exit events of the double impulse
-// merge behind the anti-alias filter (doc/ohmdem-post.md).
+// merge behind the anti-alias filter (doc/methods/size_pass_energy.md).
 #ifndef OHMDEM_POST_BEARING_PASS_ENERGY_H
 #define OHMDEM_POST_BEARING_PASS_ENERGY_H
 

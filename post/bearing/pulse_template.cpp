@@ -377,7 +377,7 @@ DefectLocation locate_by_template(const Signal &s, const Diagnosis &found, const
   l.valid = false;
   l.size_deg = l.size_lo_deg = l.size_hi_deg = l.arc_m = std::nan("");
   l.pulse_height = 0;
-  l.height_source = "no pulse height: the model's pulse templates ({diagnose.template_bank})";
+  l.height_source = "no pulse height: the model's pulse templates ({diagnose.model})";
   DefectLocation why;
   const RaceToSize r = race_to_size(found, o, "the pulse template", why);
   if (!r.race) {
@@ -386,7 +386,7 @@ DefectLocation locate_by_template(const Signal &s, const Diagnosis &found, const
   }
   if (!o.template_bank) {
     set_method(l, r, "not determined: the template fit needs the model's bank "
-                     "({diagnose.template_bank})");
+                     "({diagnose.model})");
     return l;
   }
   const FoldedPulse p = fold_pulse(s.x, s.rate, r.f, kTemplateOversample,

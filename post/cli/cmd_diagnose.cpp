@@ -14,6 +14,7 @@
 #include "cli/common.h"
 #include "cli/other_channel_input.h"
 #include "cli/shaft_angle.h"
+#include "cli/model_input.h"
 #include "cli/template_bank_input.h"
 #include "core/constants.h"
 #include "core/error.h"
@@ -71,35 +72,6 @@ std::string numerical_floor(const Signal &s, const RunMetadata &meta)
          "1-degree pit); the statistics below describe numerical blips, not a defect";
 }
 
-// Lines "SIZE_DEG VALUE" ('#' comments), at least two, both columns increasing; `flag` and
-// `value` name the option and the second column in the errors.
-void read_curve(const std::string &path, const std::string &flag, const std::string &value,
-                std::vector<double> &sizes, std::vector<double> &values)
-{
-  std::ifstream in(path);
-  if (!in) throw Error("diagnose: " + flag + " " + path + ": cannot open the file");
-  const std::string form = "'SIZE_DEG " + value + "'";
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ls(line);
-    double sz = 0, ar = 0;
-    if (!(ls >> sz >> ar) || !std::isfinite(sz) || !std::isfinite(ar))
-      throw Error("diagnose: " + flag + " " + path + ": expected lines " + form + ", got '" + line +
-                  "'");
-    if (!sizes.empty() && (sz <= sizes.back() || ar <= values.back()))
-      throw Error("diagnose: " + flag + " " + path + ": sizes and " +
-                  (value == "AREA_S"    ? "areas"
-                   : value == "WIDTH_S" ? "widths"
-                                        : "energies") +
-                  " must both increase from line to line");
-    sizes.push_back(sz);
-    values.push_back(ar);
-  }
-  if (sizes.size() < 2)
-    throw Error("diagnose: " + flag + " " + path + ": needs at least two lines " + form);
-}
-
 std::string size_method_help()
 {
   std::string h = "how the size is read (default: chosen by the record: template with a "
@@ -121,10 +93,25 @@ std::string place_method_help()
 
 }  // namespace
 
-int run_diagnose(const std::vector<std::string> &argv)
+namespace {
+
+const char *const kSizeHelp =
+    "The size and place of a bearing's race defect: the record is diagnosed as by diagnose\n"
+    "(its options), then the defect found (or --assume-defect) is sized and placed by the\n"
+    "methods the record calls for (an electrical level record: its pulses' area or, with a\n"
+    "bank, their shape; a vibration record: its passes), or by --size-method and\n"
+    "--place-method. --model FILE gives the model data made of the record's scene (a bank of\n"
+    "pulse templates, or a curve), whatever its kind: the header says which. A size is\n"
+    "printed only inside the validity its method's report measured, its interval labelled\n"
+    "with the coverage measured; elsewhere 'not determined' with the reason.\n"
+    "For our runs, bearing, speed, load and the end of the sliding phase come from run.json.\n"
+    "Example: ohmdem-post size V.txt --metadata run.json --model bank_inner_fixed_r20000_low.txt";
+
+int run_located(const std::vector<std::string> &argv, bool size_only)
 {
   Args a(
-      "diagnose", "[options] FILE...",
+      size_only ? "size" : "diagnose", "[options] FILE...",
+      size_only ? kSizeHelp :
       "Detection, then identification. Detection tests whether the record is unlike a\n"
       "healthy one: kurtosis, crest factor and the spectral kurtosis of the envelope band\n"
       "against the Gaussian law (records with a noise floor), and with --baseline the RMS,\n"
@@ -142,7 +129,8 @@ int run_diagnose(const std::vector<std::string> &argv)
       "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
       "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
       "from the shaft angle column under a radial load.\n"
-      "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
+      "For our runs, bearing, speed and the end of the sliding phase come from run.json.\n"
+      "Size and place: the options below, or ohmdem-post size (the same, its answer alone).");
   add_input_options(a);
   add_bearing_options(a);
   add_shaft_angle_options(a);
@@ -171,6 +159,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--baseline-rate", "HZ",
            "sampling rate of a --baseline without time stamps when it is not the record's: "
            "refused if it differs (resample it first with acquire)");
+  a.section("Size and place");
+  a.option("--model", "FILE[,FILE]",
+           "the model data of the record's scene, of any kind (the file's header says which): a "
+           "bank of pulse templates (studies/template_bank.py), a curve of the pulse area, of the "
+           "pulses' entry-to-exit width or of the pass energy (studies/sizing.py), their "
+           "model errors read from their headers");
   a.flag("--no-size", "skip the defect size estimate");
   a.option("--load", "MODE",
            "how the bearing is loaded (force, fixed or radial; default: run.json's load): "
@@ -254,6 +248,33 @@ int run_diagnose(const std::vector<std::string> &argv)
   if (a.has("--size-method")) o.size_method = &size_method(a.get("--size-method"));
   if (a.has("--place-method")) o.place_method = &place_method(a.get("--place-method"));
   std::optional<BankFile> bank;
+  ModelFiles model;
+  if (a.has("--model")) {
+    for (const char *given : {"--template-bank", "--size-curve", "--width-curve",
+                              "--size-model-error", "--width-model-error"})
+      if (a.has(given))
+        throw Error(std::string("diagnose: --model and ") + given +
+                    " give the model data twice: give --model alone");
+    model = read_models(split_commas(a.get("--model")));
+  }
+  if (model.bank) bank = std::move(model.bank);
+  if (!model.curve_value.empty()) {
+    if ((model.curve_feature == "pass energy") != (record_kind(s.x) == RecordKind::vibration))
+      throw Error("diagnose: --model: a curve of the " + model.curve_feature + " is for " +
+                  (model.curve_feature == "pass energy" ? "a vibration" : "an electrical level") +
+                  " record; this record is a " + kind_name(record_kind(s.x)) + " record");
+    o.curve_size_deg = model.curve_size_deg;
+    o.curve_rel_area_s = model.curve_value;
+    o.curve_rel_error = model.curve_rel_error;
+  }
+  o.width_curve_size_deg = model.width_size_deg;
+  o.width_curve_s = model.width_s;
+  o.width_rel_error = model.width_rel_error;
+  if (bank) {
+    check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, "", o.load);
+    o.template_bank = &bank->bank;
+    o.fine_fold_period = bank->fine_fold_period;
+  }
   if (a.has("--template-bank")) {
     bank = read_template_bank(a.get("--template-bank"));
     check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, "", o.load);
@@ -464,11 +485,23 @@ int run_diagnose(const std::vector<std::string> &argv)
   Result r;
   r.meta = std::move(m);
   const DiagnosisContext ctx{o, in_orders, meta.defect, numerical_floor(s, meta)};
-  r.json = diagnosis_json(d, ctx, r.meta);
-  r.table = diagnosis_row(d);
-  r.text = diagnosis_text(d, ctx);
+  r.json = size_only ? location_json(d, ctx, r.meta) : diagnosis_json(d, ctx, r.meta);
+  r.table = size_only ? location_row(d) : diagnosis_row(d);
+  r.text = size_only ? location_text(d, ctx) : diagnosis_text(d, ctx);
   out.write(r);
   return 0;
+}
+
+}  // namespace
+
+int run_diagnose(const std::vector<std::string> &argv)
+{
+  return run_located(argv, false);
+}
+
+int run_size(const std::vector<std::string> &argv)
+{
+  return run_located(argv, true);
 }
 
 }  // namespace ohmdem::post::cli

@@ -53,7 +53,7 @@ const SettingFlags &setting_flags()
       {"diagnose.size_method", "--size-method"},
       {"diagnose.across", "--across-column"},
       {"diagnose.place_method", "--place-method"},
-      {"diagnose.model", "--template-bank"},
+      {"diagnose.model", "--model"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},
       {"geometry.dp", "--dp"},

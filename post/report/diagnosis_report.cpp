@@ -154,6 +154,36 @@ std::string interval_text(double v, double lo, double hi, const std::string &uni
          (std::isfinite(hi) ? format_number(hi, 4) : "no upper bound") + "]";
 }
 
+// The size, position and depth lines of the text (diagnose and size alike).
+template <class Line>
+void location_lines(const Diagnosis &d, bool chosen, Line &line)
+{
+  const DefectLocation &l = d.located;
+  if (l.valid)
+    line("size:          " +
+         (l.interval_coverage.empty()
+              ? format_number(l.size_deg, 4) + " deg (no interval)"
+              : interval_text(l.size_deg, l.size_lo_deg, l.size_hi_deg, "deg") + " (" +
+                    l.interval_coverage + ")") +
+         ", arc " + format_number(l.arc_m * 1e3, 4) + " mm, by " + l.size_method + " (" +
+         l.method + "; " +
+         (l.pulse_height > 0 ? "jump " + format_number(l.pulse_height, 4) + ", " : std::string()) +
+         l.height_source + ")");
+  else if (chosen && l.size_status != LocateStatus::not_applicable && !l.method.empty())
+    line("size:          " + std::string(l.method.rfind("not determined", 0) == 0 ? "" : "not determined: ") +
+         l.method + (l.size_method.empty() ? "" : " (" + l.size_method + ")"));
+  if (std::isfinite(d.located.position_deg))
+    line("position:      " +
+         interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
+                       "deg") +
+         " from the " + d.located.position_reference +
+         (d.located.position_note.empty() ? "" : ", " + d.located.position_note));
+  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
+    line("position:      " + d.located.position_note);
+  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
+    line("depth:         " + d.located.depth_note);
+}
+
 }  // namespace
 
 Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
@@ -270,30 +300,7 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
     line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
          " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
          percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
-  const DefectLocation &l = d.located;
-  if (l.valid)
-    line("size:          " +
-         (l.interval_coverage.empty()
-              ? format_number(l.size_deg, 4) + " deg (no interval)"
-              : interval_text(l.size_deg, l.size_lo_deg, l.size_hi_deg, "deg") + " (" +
-                    l.interval_coverage + ")") +
-         ", arc " + format_number(l.arc_m * 1e3, 4) + " mm, by " + l.size_method + " (" +
-         l.method + "; " +
-         (l.pulse_height > 0 ? "jump " + format_number(l.pulse_height, 4) + ", " : std::string()) +
-         l.height_source + ")");
-  else if (chosen && l.size_status != LocateStatus::not_applicable && !l.method.empty())
-    line("size:          " + std::string(l.method.rfind("not determined", 0) == 0 ? "" : "not determined: ") +
-         l.method + (l.size_method.empty() ? "" : " (" + l.size_method + ")"));
-  if (std::isfinite(d.located.position_deg))
-    line("position:      " +
-         interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
-                       "deg") +
-         " from the " + d.located.position_reference +
-         (d.located.position_note.empty() ? "" : ", " + d.located.position_note));
-  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
-    line("position:      " + d.located.position_note);
-  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
-    line("depth:         " + d.located.depth_note);
+  location_lines(d, chosen != nullptr, line);
   line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
        ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
        std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);
@@ -339,6 +346,55 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
           {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
     b.push_back({"", et});
   }
+  return b;
+}
+
+Json location_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Json j = Json::object();
+  j.set("defect", d.defect);
+  j.set("sized", c.options.assume_defect.empty() ? d.defect : c.options.assume_defect);
+  j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
+  j.set("fundamental", chosen ? Json(d.label) : Json());
+  located_json(j, d);
+  j.set("shaft_hz", c.options.fr);
+  j.set("domain", c.in_orders ? "orders" : "time");
+  j.set("bearing", c.options.geometry.name);
+  if (c.run_defect) j.set("run_defect", *c.run_defect);
+  j.set("meta", meta_json(meta));
+  return j;
+}
+
+Table location_row(const Diagnosis &d)
+{
+  const DefectLocation &l = d.located;
+  Table t;
+  t.columns = {"defect",       "size_status",      "size_deg",          "size_low_deg",
+               "size_high_deg", "size_method_name", "position_status",   "position_deg",
+               "position_low_deg", "position_high_deg", "position_reference"};
+  t.rows.push_back({d.defect, status_name(l.size_status), l.valid ? l.size_deg : NAN,
+                    l.size_lo_deg, l.size_hi_deg, l.size_method, status_name(l.position_status),
+                    l.position_deg, l.position_lo_deg, l.position_hi_deg, l.position_reference});
+  return t;
+}
+
+std::vector<Block> location_text(const Diagnosis &d, const DiagnosisContext &c)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  std::vector<Block> b;
+  auto line = [&b](const std::string &text) { b.push_back({text, std::nullopt}); };
+  line("defect:        " + d.defect +
+       (c.options.assume_defect.empty() || c.options.assume_defect == d.defect
+            ? std::string()
+            : " (sized as " + c.options.assume_defect + ", the assumed defect)"));
+  if (chosen)
+    line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
+         " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
+         percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
+  location_lines(d, chosen != nullptr || !c.options.assume_defect.empty(), line);
+  if (d.located.size_status == LocateStatus::not_applicable && !chosen)
+    line("size:          not applicable (no race defect identified)");
   return b;
 }
 

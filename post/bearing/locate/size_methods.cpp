@@ -107,9 +107,10 @@ class AreaMethod : public SizeMethod {
       l.valid = false;
       l.method =
           "not determined: the theory's flat jump holds under the fixed load only, and cannot be "
-          "checked on this record (the pulse lasts " +
-          format_number(samples, 3) +
-          " samples, 10 are needed to compare its width with its area; on the simulated pits "
+          "checked on this record (" +
+          (found.size.valid ? "the pulse lasts " + format_number(samples, 3) + " samples"
+                            : std::string("its pulse width is not measured")) +
+          ", 10 samples are needed to compare its width with its area; on the simulated pits "
           "under the force load the ring tightens: the demo's 1 deg pit reads 0.3 deg); give "
           "the model's data of the scene ({diagnose.model})";
       return l;

@@ -128,7 +128,7 @@ TEST(Cli, DiagnoseRefusesTheTheorysSizeWhenThePulseIsNotItsJump)
 // Issue 26 on held-out simulated records (tests/post/data/sizing: the sizing study's runs of the
 // 6208 at 500 rad/s, 50 um pits, acquired at 20 kHz, 16 bits, low noise, first 0.15 s; not used
 // to build the estimator). The reference is the size and place the deck was given; the bounds
-// are the errors doc/ohmdem-post.md reports, so a change that degrades them fails here.
+// are the errors doc/methods/size_pulse_area.md reports, so a change that degrades them fails here.
 TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
 {
   const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";
@@ -206,7 +206,7 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
 }
 
 // Issue 26, the pulses' edges: a held-out 3 deg inner pit under the radial load (same scene and
-// chain as above), whose area has stopped growing (the ring drops into the gap, doc/ohmdem-post.md
+// chain as above), whose area has stopped growing (the ring drops into the gap, doc/methods/size_pulse_area.md
 // "Size and position"): on the area's chain curve it reads far too small; on the width curve
 // (width_inner_radial_r20000_low.txt, the study's runs at sizes none of which is 3 deg) its
 // size is the deck's within 15 % (the issue's goal) and the interval holds it.
@@ -242,7 +242,7 @@ TEST(Cli, DiagnoseSizesFromTheEdgesWhereTheAreaStopsGrowing)
 // it -83 %, the width saturates), the sizing study's run acquired at 20 kHz, 16 bits, low noise,
 // first 0.15 s. The bank is studies/template_bank.py's for that scene and chain (runs at 0.2 ...
 // 4.27 deg, 12 % apart: no 2 deg run; its own error in its header); on the full 0.3 s record the
-// study reads 2 deg within 2 % (doc/ohmdem-post.md), here within the 15 % of the issue's goal.
+// study reads 2 deg within 2 % (doc/methods/size_pulse_template.md), here within the 15 % of the issue's goal.
 TEST(Cli, DiagnoseSizesByTemplateWhereTheAreaAndWidthFail)
 {
   const std::string data = std::string(OHMDEM_POST_TEST_DIR) + "/data/sizing/";

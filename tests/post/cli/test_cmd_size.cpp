@@ -95,5 +95,43 @@ TEST(Size, BankMatchedByTheGeometrysValuesNotItsName)
   EXPECT_NE(r.out.find("the record's is 13 balls of 12.6001 mm"), std::string::npos) << r.out;
 }
 
+// `size RECORD --model FILE`: the same answer as diagnose's, alone, whatever kind of model file;
+// a file of no known kind is refused naming the forms.
+TEST(Size, TheCommandWithOneModelOption)
+{
+  const std::string rec = kData + "inner_2_force_p90_20kHz.txt --column V --metadata " + kData +
+                          "inner_2_force_p90.json --assume-defect inner ";
+  const std::string bank = kData + "bank_inner_force_r20000_low.txt";
+  const Json d = json_of(run("diagnose " + rec + "--template-bank " + bank + " --format json"));
+  const Json s = json_of(run("size " + rec + "--model " + bank + " --format json"));
+  EXPECT_DOUBLE_EQ(s.find("size_deg")->number(), d.find("size_deg")->number());
+  EXPECT_EQ(s.find("size_status")->string(), "determined");
+  EXPECT_EQ(s.find("families"), nullptr);  // the answer alone
+  for (const char *key : {"size_interval_deg", "position_deg", "position_interval_deg",
+                          "position_reference", "size_method"})
+    EXPECT_NE(s.find(key), nullptr) << key;
+  // a curve by the same option: the area's on the 3 deg fixed-load pit (its header says so)
+  const Json c = json_of(run("size " + kData + "inner_3_fixed_p90_20kHz.txt --column V " +
+                             "--metadata " + kData + "inner_3_fixed_p90.json --model " + kData +
+                             "curve_inner_fixed.txt --format json"));
+  EXPECT_NEAR(c.find("size_deg")->number(), 3.0, 0.06);
+  // the model given twice, and a file of no known kind
+  CliRun r = run("size " + rec + "--model " + bank + " --template-bank " + bank + " 2>&1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("give the model data twice"), std::string::npos) << r.out;
+  r = run("size " + rec + "--model " + test::write_temp("not_a_model.txt", "1 2\n3 4\n") +
+          " 2>&1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("not a model file of a known kind; expected a bank of pulse templates"),
+            std::string::npos)
+      << r.out;
+  // the help's example names options that exist
+  const CliRun help = run("size --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("Example: ohmdem-post size V.txt --metadata run.json --model"),
+            std::string::npos);
+  EXPECT_NE(help.out.find("double-impulse"), std::string::npos);  // the table's names
+}
+
 }  // namespace
 }  // namespace ohmdem::post
