@@ -7,6 +7,7 @@
 
 #include "bearing/ball_evidence.h"
 #include "bearing/defect_size.h"
+#include "bearing/locate/locate.h"
 #include "bearing/family_combs.h"
 #include "bearing/other_channel.h"
 #include "bearing/pulse_train.h"
@@ -288,7 +289,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.detected = d.defect != "none";
   if (opt.estimate_size) {
     d.size = estimate_size(s, d, opt.geometry);
-    d.located = locate_defect(s, d, opt);
+    d.located = locate(s, d, opt);
   }
   return d;
 }

@@ -33,6 +33,12 @@ Table diagnosis_row(const Diagnosis &d);
 // For reading: the verdict, then the detection tests, the families and the evidence.
 std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c);
 
+// The size and place alone (ohmdem-post size): the defect sized, its frequency, then the same
+// keys and lines as the diagnosis gives them.
+Json location_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta);
+Table location_row(const Diagnosis &d);
+std::vector<Block> location_text(const Diagnosis &d, const DiagnosisContext &c);
+
 }  // namespace ohmdem::post
 
 #endif
