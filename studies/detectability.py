@@ -21,7 +21,8 @@ Writes into OUT:
   detectability.md   the instruments, the map, and the answer to the paper's two claims
   map_*.png          smallest detected / identified size against the sampling rate
   sizing_map.*       the size estimate's error against rate and noise per channel
-                     (studies/sizing_map.py; its last section of detectability.md)
+                     (studies/sizing_map.py; its last section of detectability.md; not
+                     with --quick, whose last section points to the committed map)
 """
 import argparse
 import concurrent.futures as cf
@@ -406,7 +407,7 @@ def main():
             example = write_example(out, sims)
         pngs = write_map(out, rows, g) + ([example] if os.path.exists(example) else [])
         write_report(out, rows, g, a.quick, pngs)
-        append_sizing_map(out)
+        append_sizing_map(out, a.quick)
         return
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)
     sims = simulate(out, g["sizes"])
@@ -425,12 +426,21 @@ def main():
                              r["bits"]))
     pngs = write_map(out, rows, g) + [write_example(out, sims)]
     write_report(out, rows, g, a.quick, pngs)
-    sizing_map.run(out, tiny=a.quick)  # issue 26: the size's error against rate and noise
-    append_sizing_map(out)
+    if not a.quick:  # the size's error against rate and noise
+        sizing_map.run(out)
+    append_sizing_map(out, a.quick)
 
 
-def append_sizing_map(out):
-    """The sizing map (studies/sizing_map.py, written into OUT) as the report's last section."""
+def append_sizing_map(out, quick):
+    """The sizing map (studies/sizing_map.py, written into OUT) as the report's last section;
+    with --quick a pointer to the committed one (its own command makes it: a tiny map's
+    figures beside the full map's would contradict them)."""
+    if quick:
+        with open(os.path.join(out, "detectability.md"), "a") as f:
+            f.write("\n## Sizing map\n\nNot made by `--quick`: the size's error against rate "
+                    "and noise per channel is [sizing_map.md](sizing_map.md), made by its own "
+                    "command (`studies/sizing_map.py OUT`).\n")
+        return
     path = os.path.join(out, "sizing_map.md")
     if not os.path.exists(path):
         return
