@@ -268,10 +268,10 @@ def source_commit():
 
 
 def made_at():
-    """Where a report comes from, for its first lines: "commit C, YYYY-MM-DD" (UTC)."""
+    """Where a report comes from, for its first lines: "commit C (YYYY-MM-DD)" (UTC)."""
     import datetime
-    return (f"commit {source_commit()}, "
-            f"{datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d}")
+    return (f"commit {source_commit()} "
+            f"({datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d})")
 
 
 def shell_settings():
