@@ -556,11 +556,16 @@ def main():
 
     with cf.ThreadPoolExecutor(a.jobs) as ex:
         list(ex.map(task, cases))
-    secs = SIMULATED
-    cost = (f"{sum(secs) / len(secs):.1f} s per simulation on average ({len(secs)} simulated "
-            f"here, {len(cases) - len(secs)} from the cache), {(time.time() - t0) / 60:.1f} min "
-            f"wall with --jobs {a.jobs} on a shared 2-core machine." if secs else
-            "every case from the cache.")
+    timed = []
+    for c in cases:
+        f = os.path.join(out, "cases", key(c), "sim_seconds.txt")
+        if os.path.exists(f):
+            with open(f) as g:
+                timed.append(float(g.read()))
+    cost = ((f"{sum(timed) / len(timed):.1f} s wall per simulation on average ({len(timed)} "
+             "timed when they ran, --jobs on a shared 2-core machine); " if timed else "")
+            + f"this invocation: {len(SIMULATED)} simulated, {len(cases) - len(SIMULATED)} from "
+            f"the cache, {(time.time() - t0) / 60:.1f} min wall with --jobs {a.jobs}.")
     if failures:
         sys.exit("protocol: failed cases:\n  " + "\n  ".join(failures))
     write_report(out, [r for r in rows if r], a, est, cost)

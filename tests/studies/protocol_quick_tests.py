@@ -81,7 +81,7 @@ def main():
           "chance (0.25)")
     first = open(os.path.join(a.out, "protocol.csv")).read()
     r = run(a.src, a.out)
-    check(r.returncode == 0 and "every case from the cache" in open(
+    check(r.returncode == 0 and "0 simulated, 30 from the cache" in open(
         os.path.join(a.out, "protocol.md")).read(), "a rerun takes every case from the cache")
     check(open(os.path.join(a.out, "protocol.csv")).read() == first,
           "the rerun writes the same rows")
