@@ -4,7 +4,7 @@
 pass, averaged over the passes (`ohmdem-post diagnose --size-method accel-curve`, JSON
 pass_energy_v2s), against the pit's size, from short runs of the sizing study's scene (the 6208
 at 500 rad/s, radial load, pits 50 um deep at the load zone's centre) passed through the record's
-own accelerometer chain (studies/sizing_map.py: 10 mV/g, +-5 V, 16 bits, the rate's anti-alias
+own accelerometer chain (studies/sizing.py, acquire_acc: 10 mV/g, +-5 V, 16 bits, the rate's anti-alias
 filter, the noise level). The curve is cut where the energy stops increasing; its own error is
 the RMS relative deviation of the energy of runs at sizes the curve does not use (diagnose
 --size-model-error).
@@ -20,7 +20,6 @@ import sys
 
 import common
 import sizing
-import sizing_map
 
 # the curve's sizes (0.15 s runs) and the error runs' are the sizing study's: no case uses them
 CURVE_SIZES = sizing.CURVE_SIZES
@@ -32,7 +31,7 @@ def energy(out, defect, size, rate, noise, tend=sizing.T_FROM + 0.15):
     sim = sizing.simulate(out, (defect, size, "radial", 90.0), tend)
     acq = os.path.join(out, "acq", f"acc_{defect}_{size:g}_r{rate:g}_{noise}.txt")
     if not os.path.exists(acq):
-        sizing_map.acquire_acc(sim, rate, noise, acq)
+        sizing.acquire_acc(sim, rate, noise, acq)
     r = common.post(["diagnose", "--format", "json", "--column", "V", "--metadata",
                      os.path.join(sim, "run.json"), "--from", repr(sizing.T_FROM),
                      "--assume-defect", defect, "--size-method", "accel-curve", acq],
@@ -78,7 +77,7 @@ def main(argv):
     except ValueError:
         sys.exit("accel_curve: --rates takes numbers (Hz) separated by commas, got " + a.rates)
     noises = a.noise.split(",")
-    if not set(noises) <= set(sizing_map.ACC_NOISE):
+    if not set(noises) <= set(sizing.ACC_NOISE):
         sys.exit("accel_curve: --noise takes low, mid and/or high, got " + a.noise)
     out = os.path.abspath(a.out)
     os.makedirs(os.path.join(out, "acq"), exist_ok=True)

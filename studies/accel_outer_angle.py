@@ -5,7 +5,7 @@
 the pit changes its push on the ring along the pit's radius, so the defect events' acceleration
 in the bearing's plane points along it. Outer pits of the sizing study's scene (the 6208 at 500
 rad/s, radial load, 50 um deep) at places from the load direction, both ring axes (the deck's
-acc_along and acc_across) through the accelerometer chain of studies/sizing_map.py (10 mV/g,
+acc_along and acc_across) through the accelerometer chain of studies/sizing.py (acquire_acc) (10 mV/g,
 +-5 V, 16 bits, anti-alias filter 0.4 x rate, the two noise levels; each axis its own noise
 seed) in one record (`acquire --across-column`), diagnosed with `--size-method accel-curve
 --across-column V2` on the committed outer curves (doc/report/detectability/accel_curves/).
@@ -28,7 +28,6 @@ import sys
 
 import common
 import sizing
-import sizing_map
 
 CURVES = os.path.join(common.DOC, "report", "detectability", "accel_curves")
 BEYOND_ZONE = 100.0  # deg from the load: outside the load zone
@@ -45,7 +44,7 @@ def grid(tiny):
 
 def acquire(sim, rate, noise, dest):
     """Both ring axes through the sizing map's chain into one record (time V V2)."""
-    return dest if os.path.exists(dest) else sizing_map.acquire_acc(sim, rate, noise, dest,
+    return dest if os.path.exists(dest) else sizing.acquire_acc(sim, rate, noise, dest,
                                                                    across=True)
 
 

@@ -7,7 +7,7 @@ energy, or their pulses' area, peaks when the pit meets the load direction, so t
 shaft angle at each pass gives the pit's angle from the shaft's zero. Inner pits of the sizing
 study's scene (the 6208 at 500 rad/s, radial load, 50 um deep) at ring places none of the
 methods' checks used, with the deck's shaft angle as a column (angle_inner):
-- acc: through the accelerometer chain of studies/sizing_map.py (10 mV/g, +-5 V, 16 bits,
+- acc: through the accelerometer chain of studies/sizing.py (acquire_acc) (10 mV/g, +-5 V, 16 bits,
   anti-alias filter 0.4 x rate, the two noise levels), sized on the committed model curves
   (doc/report/detectability/accel_curves/);
 - electrical: through the sizing study's R chain (studies/sizing.py), sized on its chain curves
@@ -26,7 +26,6 @@ import sys
 
 import common
 import sizing
-import sizing_map
 
 CURVES = os.path.join(common.DOC, "report", "detectability", "accel_curves")
 
@@ -55,7 +54,7 @@ def acquire(sim, rate, noise, dest):
     if os.path.exists(dest):
         return dest
     tmp = dest + ".acc"
-    sizing_map.acquire_acc(sim, rate, noise, tmp)
+    sizing.acquire_acc(sim, rate, noise, tmp)
     sizing.with_angle(tmp, dest)
     return dest
 

@@ -33,28 +33,12 @@ import subprocess
 
 import common
 import sizing_map
+from instruments import CHANNELS, CURRENT, SENSITIVITY  # noqa: F401 (the study's chains)
 
 BEARING = common.Bearing("machado2014")  # the deck's default bearing, from its catalog file
 SHAFT_HZ = 500 / (2 * math.pi)     # the study's inner ring speed, 500 rad/s
-CURRENT = common.deck_defaults()["I"]  # A, the deck's injected current: the instrument reads V = I R
-SENSITIVITY = 0.0102   # V per m/s^2: a 100 mV/g accelerometer
 T_FROM = 0.05          # s: after the sliding phase and the ring's settling under radial load
 WINDOW = 0.5           # s analysed (40 shaft revolutions at 500 rad/s); --full: 1 s
-
-# Per channel: the column, the scale to volts, the ADC range (V) and three noise densities
-# (V/sqrt(Hz)) named low/mid/high. Electrical: 10 nV/sqrt(Hz) is a low-noise preamplifier,
-# 1 uV/sqrt(Hz) a plain data-acquisition input. Vibration: 5e-5, 5e-4, 5e-3 (m/s^2)/sqrt(Hz)
-# (5 to 500 ug/sqrt(Hz): a good piezoelectric accelerometer to a MEMS one) times the
-# sensitivity. ADC ranges: 0-0.1 V for I R (R ~ 0.5 ohm here), +-0.5 V (+-5 g) for the
-# accelerometer.
-CHANNELS = {
-    "R": {"column": "R", "scale": CURRENT, "range": (0.0, 0.1),
-          "noise": {"low": 1e-8, "mid": 1e-7, "high": 1e-6}, "unit": "V"},
-    "acc": {"column": "acc_along", "scale": SENSITIVITY, "range": (-0.5, 0.5),
-            "noise": {"low": 5e-5 * SENSITIVITY, "mid": 5e-4 * SENSITIVITY,
-                      "high": 5e-3 * SENSITIVITY}, "unit": "V"},
-}
-
 
 def grid(quick):
     global WINDOW, DECK_VARS

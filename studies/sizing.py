@@ -29,7 +29,7 @@ import os
 import sys
 
 import common
-import detectability
+import instruments
 
 OMEGA = 500.0
 T_FROM, WINDOW = 0.05, 0.3
@@ -46,6 +46,12 @@ CURVE_SIZES = [0.2, 0.4, 0.7, 0.85, 1.1, 1.5, 1.8, 2.5, 3.2, 4.0]
 # --size-model-error), combined in the interval with the pass-to-pass scatter
 ERROR_SIZES = [0.25, 0.6, 1.2, 2.2, 3.5]
 T975 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571}  # Student's t, P(T > t) = 0.025
+
+# The accelerometer: 10 mV/g (1.02e-3 V per m/s^2) on a +-5 V input, so that the simulated
+# impacts (up to ~3000 m/s^2 at 1 MHz) are not clipped; the noise densities are the
+# detectability study's in m/s^2/sqrt(Hz) (5e-5 and 5e-3: a good piezoelectric sensor, a MEMS).
+ACC_SENSITIVITY = 1.02e-3
+ACC_NOISE = {"low": 5e-5, "mid": 5e-4, "high": 5e-3}
 
 
 def cases(quick):
@@ -242,11 +248,24 @@ def with_angle(record, dest):
     os.remove(record)
 
 
+def acquire_acc(sim, rate, noise, dest, across=False):
+    """The ring's acceleration along the load through the accelerometer's chain (column V);
+    across: the sensor's second axis too (acc_across as V2, its own noise: acquire's seed + 1)."""
+    second = ["--across-column", "acc_across", "--across-name", "V2"] if across else []
+    common.post(["acquire", "--column", "acc_along", *second, "--scale", repr(ACC_SENSITIVITY),
+                 "--from", repr(T_FROM), "--lowpass", repr(0.4 * rate), "--order", "4",
+                 "--rate", repr(rate), "--bits", "16", "--range", "-5", "5",
+                 "--noise-density", repr(ACC_NOISE[noise] * ACC_SENSITIVITY), "--seed", "1",
+                 "--name", "V", "--unit", "V", "--output", dest,
+                 os.path.join(sim, "signal.txt")], who="sizing")
+    return dest
+
+
 def acquire_with_angle(sim, load, rate, noise, dest, allow_fail=False, seed=1):
     """The electrical channel acquired, plus the shaft angle the deck's angle_inner holds. The
     fixed load's level (1.38 ohm x 0.1 A) needs a 0-0.2 V range. seed: the acquisition noise's
     (the study's and the banks' 1; studies/template_heldout.py another)."""
-    ch = detectability.CHANNELS["R"]
+    ch = instruments.CHANNELS["R"]
     lo, hi = ch["range"] if load == "radial" else (0.0, 0.2)
     tmp = dest + ".acq"
     r = common.post(["acquire", "--column", "R", "--scale", repr(ch["scale"]), "--from",

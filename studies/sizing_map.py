@@ -33,14 +33,10 @@ import os
 import subprocess
 import sys
 
+import accel_curve
 import common
 import sizing
 
-# The accelerometer: 10 mV/g (1.02e-3 V per m/s^2) on a +-5 V input, so that the simulated
-# impacts (up to ~3000 m/s^2 at 1 MHz) are not clipped; the noise densities are the
-# detectability study's in m/s^2/sqrt(Hz) (5e-5 and 5e-3: a good piezoelectric sensor, a MEMS).
-ACC_SENSITIVITY = 1.02e-3
-ACC_NOISE = {"low": 5e-5, "mid": 5e-4, "high": 5e-3}
 CHANNELS = ("electrical", "acc", "acc-curve", "template")
 BANKS = os.path.join(common.DOC, "report", "sizing", "template")
 
@@ -58,19 +54,6 @@ def bank_of(banks, defect, rate, noise):
     """The template bank for the chain in the folder banks, or None."""
     path = os.path.join(banks, f"bank_{defect}_radial_r{rate:g}_{noise}.txt")
     return path if os.path.exists(path) else None
-
-
-def acquire_acc(sim, rate, noise, dest, across=False):
-    """The ring's acceleration along the load through the accelerometer's chain (column V);
-    across: the sensor's second axis too (acc_across as V2, its own noise: acquire's seed + 1)."""
-    second = ["--across-column", "acc_across", "--across-name", "V2"] if across else []
-    common.post(["acquire", "--column", "acc_along", *second, "--scale", repr(ACC_SENSITIVITY),
-                 "--from", repr(sizing.T_FROM), "--lowpass", repr(0.4 * rate), "--order", "4",
-                 "--rate", repr(rate), "--bits", "16", "--range", "-5", "5",
-                 "--noise-density", repr(ACC_NOISE[noise] * ACC_SENSITIVITY), "--seed", "1",
-                 "--name", "V", "--unit", "V", "--output", dest,
-                 os.path.join(sim, "signal.txt")], who="sizing_map")
-    return dest
 
 
 def diagnose(sim, acq, defect, extra):
@@ -93,17 +76,16 @@ def one(out, case, channel, rate, noise, curves, bank=None):
     if channel == "template":
         d = diagnose(sim, acq, defect, ["--size-method", "template", "--template-bank", bank])
     elif channel == "acc":
-        d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect,
+        d = diagnose(sim, sizing.acquire_acc(sim, rate, noise, acq), defect,
                      ["--size-method", "double-impulse"])
     elif channel == "acc-curve":
-        import accel_curve  # it imports this module
         key = (channel, defect, rate, noise)
         if key not in curves:
             curves[key] = accel_curve.model_curve(out, defect, rate, noise)
         extra = ["--size-method", "accel-curve", "--size-curve", curves[key][0]]
         if curves[key][2]:
             extra += ["--size-model-error", repr(curves[key][2])]
-        d = diagnose(sim, acquire_acc(sim, rate, noise, acq), defect, extra)
+        d = diagnose(sim, sizing.acquire_acc(sim, rate, noise, acq), defect, extra)
     else:
         key = (defect, rate, noise)
         if key not in curves:
