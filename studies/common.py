@@ -252,6 +252,28 @@ def read_signal(path, t0=None):
     return {n: v[keep] for n, v in s.items()}
 
 
+def source_commit():
+    """The source tree's commit (12 hex digits), "with uncommitted changes" when the code the
+    studies run (post/, src_fix/, app/, inputs/, studies/) differs from it; "unknown" outside a
+    git checkout (an install)."""
+    try:
+        head = subprocess.run(["git", "-C", BASE, "rev-parse", "--short=12", "HEAD"],
+                              capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", BASE, "status", "--porcelain", "--", "post",
+                                "src_fix", "app", "inputs", "studies"], capture_output=True,
+                               text=True).stdout.strip()
+        return head + (" with uncommitted changes" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def made_at():
+    """Where a report comes from, for its first lines: "commit C (YYYY-MM-DD)" (UTC)."""
+    import datetime
+    return (f"commit {source_commit()} "
+            f"({datetime.datetime.now(datetime.timezone.utc):%Y-%m-%d})")
+
+
 def shell_settings():
     """The settings as POSIX shell assignments (exported)."""
     values = {"OHMDEM": OHMDEM, "POST": POST, "OHMDEM_CATALOG": CATALOG, "OHMDEM_BASE": BASE,

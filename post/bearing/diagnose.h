@@ -26,7 +26,12 @@ class PlaceMethod;   // bearing/locate/place_method.h
 
 struct DiagnoseOptions {
   BearingGeometry geometry;
-  double fr = 0;            // shaft frequency (Hz)
+  double fr = 0;            // shaft frequency (Hz), as stated (run.json, option, tachometer)
+  // The spectrum's shaft comb may move the stated speed by at most this fraction, and only
+  // where the comb is strong (shaft_lines.h): a stated speed is the truth, or close to it for
+  // a tachometer; a comb searched wider locks onto a defect's lines (the 6208's BPFI lies
+  // 1.9 % from 8 fr: an inner pit's comb taken for the shaft's 8th harmonic, then masked)
+  double speed_refine = 0.002;
   double tolerance = 0.02;  // fundamental searched within +-tolerance (relative) for slip
   int harmonics = 5;        // comb length
   double min_score = 0.3;   // below: defect "none"
@@ -163,6 +168,10 @@ struct Diagnosis {
   bool shaft_estimated = false;
   double shaft_hz_estimated = 0;
   std::string shaft_source;
+  // The shaft frequency the kinematics used (Hz): the stated one, moved by the shaft comb
+  // within DiagnoseOptions::speed_refine when its comb stands out (shaft_refined)
+  double shaft_hz_used = 0;
+  bool shaft_refined = false;
   std::size_t shaft_lines_masked = 0;
   std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
   // With DiagnoseOptions::other: that bearing's kinematics and families on the same spectra.

@@ -22,6 +22,7 @@
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/text_scan.h"
+#include "dsp/settle.h"
 #include "dsp/stats.h"
 #include "report/diagnosis_report.h"
 
@@ -94,6 +95,37 @@ std::string place_method_help()
   return h;
 }
 
+// Our run's record from the end of its sliding phase, and under a radial load past the
+// start-up transient that follows it while the free outer ring finds its place (dsp/settle.h:
+// the level's drift, in windows of one shaft revolution), unless --from or --keep-sliding say
+// where to start; meta's t_sliding_end moves with it (the companion channels and the baseline
+// start there too).
+Signal settled_input(const Args &a, RunMetadata &meta, const BearingChoice &bc)
+{
+  Signal s = load_input(a, meta, 256, !a.has("--keep-sliding"));
+  if (a.has("--from") || a.has("--keep-sliding") || !meta.t_sliding_end || !bc.fr ||
+      meta.load.value_or("") != "radial")
+    return s;
+  const auto window = static_cast<std::size_t>(std::lround(s.rate / *bc.fr));
+  if (window < 2) return s;
+  const Settling st = settled_start(s.x, window);
+  const double sliding_end = *meta.t_sliding_end;
+  if (st.start > 0) {
+    meta.t_sliding_end = s.time(st.start) - 0.5 / s.rate;
+    s = load_input(a, meta, 256, true);
+  }
+  for (auto &[key, value] : s.meta)
+    if (key == "sliding phase skipped")
+      value = "t < " + format_number(sliding_end) + " s" +
+              (st.start == 0
+                   ? ""
+                   : "; settling transient skipped: t < " + format_number(s.t0) +
+                         " s (the level drifts by " + format_number(st.first_drift, 3) +
+                         " against a per-revolution scatter of " + format_number(st.scatter, 3) +
+                         " afterwards)");
+  return s;
+}
+
 }  // namespace
 
 namespace {
@@ -140,6 +172,11 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   a.section("Diagnosis");
   a.option("--tolerance", "F", "relative search range of each fundamental (slip), in (0, 0.2)",
            "0.02");
+  a.option("--speed-refine", "F",
+           "the spectrum's shaft comb may move the stated speed (run.json, --rpm, --shaft-hz, "
+           "--omega, a tachometer) by at most this fraction, where the comb stands out, in "
+           "[0, --tolerance]; 0: the stated speed as it is",
+           "0.002");
   a.option("--harmonics", "N", "harmonics in each family's comb (1..50)", "5");
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
@@ -213,9 +250,9 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
          "of run.json)");
   add_output_options(a);
   if (!a.parse(argv, std::cout)) return 0;
-  const RunMetadata meta = run_metadata(a);
-  const Signal s = load_input(a, meta, 256, !a.has("--keep-sliding"));
+  RunMetadata meta = run_metadata(a);
   const BearingChoice bc = bearing_choice(a, meta);
+  const Signal s = settled_input(a, meta, bc);
   if (!bc.geometry)
     throw Error(
         "diagnose: give the bearing (--bearing NAME of the catalog, or --nb --db --dp) or a "
@@ -231,6 +268,8 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   o.geometry = *bc.geometry;
   o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * kPi);
   o.tolerance = tolerance_option(a);
+  o.speed_refine = a.number_in("--speed-refine", 0.002, Range::closed(0, o.tolerance),
+                               "a fraction of the stated speed (at most --tolerance)");
   o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
   o.kurtogram_levels = levels_option(a);
@@ -473,9 +512,16 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
   if (o.other)
     m.emplace_back("other bearing on the shaft", o.other->name + " (" + other_source + ")");
-  m.emplace_back(
-      "shaft frequency (Hz)",
-      format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  const std::string speed_source = in_orders || !bc.fr ? "mean of " + sa->source : bc.fr_source;
+  m.emplace_back("shaft frequency stated (Hz)", format_number(o.fr, 8) + " (" + speed_source + ")");
+  m.emplace_back("shaft frequency used (Hz)",
+                 format_number(d.shaft_hz_used, 8) +
+                     (d.shaft_refined
+                          ? " (the stated one refined by the shaft comb by " +
+                                format_number(100 * (d.shaft_hz_used / o.fr - 1), 3) +
+                                " %, within the +-" + format_number(100 * o.speed_refine, 3) +
+                                " % --speed-refine allows)"
+                          : " (the stated one)"));
   // issue 25: the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
   // a percent or two), and the shaft and mains lines no family could claim
   m.emplace_back("shaft frequency from the spectrum (Hz)",
@@ -511,7 +557,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
                        " at alpha 0.01 over the bands searched)");
   Result r;
   r.meta = std::move(m);
-  const DiagnosisContext ctx{o, in_orders, meta.defect, numerical_floor(s, meta)};
+  const DiagnosisContext ctx{o, in_orders, meta.defect, numerical_floor(s, meta), speed_source};
   r.json = size_only ? location_json(d, ctx, r.meta) : diagnosis_json(d, ctx, r.meta);
   r.table = size_only ? location_row(d) : diagnosis_row(d);
   r.text = size_only ? location_text(d, ctx) : diagnosis_text(d, ctx);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The dispatch table of ohmdem-post: one entry per command (issue 6 adds `collect` here).
+// The dispatch table of ohmdem-post: one entry per command.
 #ifndef OHMDEM_POST_CLI_COMMANDS_H
 #define OHMDEM_POST_CLI_COMMANDS_H
 

@@ -226,7 +226,11 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
   j.set("band_kurtosis_significant",
         std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
-  j.set("shaft_hz", c.options.fr);
+  // the speed the kinematics used, the stated one and where it comes from
+  j.set("shaft_hz", d.shaft_hz_used > 0 ? d.shaft_hz_used : c.options.fr);
+  j.set("shaft_hz_stated", c.options.fr);
+  j.set("shaft_hz_stated_source", c.speed_source);
+  j.set("shaft_hz_refined", d.shaft_refined);
   j.set("shaft_hz_from_spectrum", d.shaft_estimated ? Json(d.shaft_hz_estimated) : Json());
   j.set("shaft_hz_source", d.shaft_estimated ? Json(d.shaft_source) : Json());
   j.set("domain", c.in_orders ? "orders" : "time");

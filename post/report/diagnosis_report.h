@@ -23,6 +23,7 @@ struct DiagnosisContext {
   // A simulated signal whose spread is at the numerical floor (cmd_diagnose): said in the text,
   // since its statistics (kurtosis, p-values) then describe numerical blips, not a defect.
   std::string numerical_floor = "";
+  std::string speed_source = "";  // where the stated speed (options.fr) comes from
 };
 
 Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta);
