@@ -71,6 +71,8 @@ struct TemplateBank {
   // A bank with several angles: the fitted angle's error (deg) on simulated pits between its
   // angles; NaN where the bank does not state it (then the fit's angle picks no branch).
   double angle_error_deg = std::numeric_limits<double>::quiet_NaN();
+  // false: the bank's interval was never measured to cover (a bank made without held-out runs)
+  bool coverage_measured = true;
 };
 
 struct TemplateFit {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // ohmdem-post diagnose: detection (is something wrong), then the most likely bearing defect,
 // its score, evidence and size.
+#include <unistd.h>
+
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -14,6 +16,7 @@
 #include "cli/common.h"
 #include "cli/other_channel_input.h"
 #include "cli/shaft_angle.h"
+#include "cli/model_cache.h"
 #include "cli/model_input.h"
 #include "cli/template_bank_input.h"
 #include "core/constants.h"
@@ -437,7 +440,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   const std::optional<Signal> across = across_input(a, meta, s);
   if (across) o.across = &*across;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
-  std::string no_size;
+  std::string no_size, m_cached_bank;
   if (o.estimate_size) {
     // the method's own check of the settings, and what it needs of the record
     const SizeMethod &sm = o.size_method ? *o.size_method : default_size_method(s, o);
@@ -466,6 +469,28 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
     d.located.method = "not determined: " + no_size;
     d.located.position_note = "not determined: " + no_size;
   }
+  // no model data given: the bank ohmdem-post model made of this scene, when cached
+  const bool given = a.has("--model") || a.has("--template-bank") || a.has("--size-curve") ||
+                     a.has("--width-curve") || a.has("--pulse-height") || a.has("--size-method");
+  const std::string sized = o.assume_defect.empty() ? d.defect : o.assume_defect;
+  if (!given && o.estimate_size && !in_orders && meta.present() &&
+      (sized == "inner" || sized == "outer") && record_kind(s.x) == RecordKind::level) {
+    std::string cached;
+    try {
+      cached = cached_bank_path(record_scene(input_options(a).files.at(0), meta, sized,
+                                             default_bank_sizes(), kDefaultRunLength));
+    } catch (const Error &) {
+      cached.clear();  // a scene the model command cannot make: nothing cached for it
+    }
+    if (!cached.empty() && access(cached.c_str(), R_OK) == 0) {
+      bank = read_template_bank(cached);
+      check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, sized, o.load);
+      o.template_bank = &bank->bank;
+      o.fine_fold_period = bank->fine_fold_period;
+      d.located = locate(s, d, o);
+      m_cached_bank = cached;
+    }
+  }
   if (bank && o.assume_defect.empty() && (d.defect == "inner" || d.defect == "outer"))
     check_bank(*bank, s, "", nullptr, d.defect, "");
   if (a.has("--pulse-fold-out")) {
@@ -482,6 +507,8 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   Output out(a);
 
   MetaList m = s.meta;
+  if (!m_cached_bank.empty())
+    m.emplace_back("model", m_cached_bank + " (the cached bank of this scene, ohmdem-post model)");
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
   if (o.other)
     m.emplace_back("other bearing on the shaft", o.other->name + " (" + other_source + ")");

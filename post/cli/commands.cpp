@@ -33,6 +33,8 @@ const std::vector<Command> &commands()
        run_diagnose},
       {"size", "a race defect's size and place, each within its method's measured validity",
        run_size},
+      {"model", "the model data of a record's scene (a bank), made by the engine and cached",
+       run_model},
       {"plot", "PNG figures with gnuplot: signal, spectrum with defect frequencies, indicators",
        run_plot},
       {"collect", "the indicators (and parameters, diagnosis) of many run folders in one table",

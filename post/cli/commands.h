@@ -29,6 +29,7 @@ int run_collect(const std::vector<std::string> &args);
 int run_acquire(const std::vector<std::string> &args);
 int run_orders(const std::vector<std::string> &args);
 int run_size(const std::vector<std::string> &args);
+int run_model(const std::vector<std::string> &args);
 
 }  // namespace ohmdem::post::cli
 

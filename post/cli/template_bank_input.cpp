@@ -88,6 +88,17 @@ BankFile read_template_bank(const std::string &path)
       if (key == "bearing") b.bearing = v;
       if (key == "defect") b.defect = v;
       if (key == "load") b.load = v;
+      if (key == "geometry") {
+        std::istringstream gs(v);
+        BearingGeometry g;
+        double dext = 0, dinn = 0;
+        if (!(gs >> g.nb >> g.db >> dext >> dinn) || g.nb < 1 || !(g.db > 0) || !(dext > dinn))
+          bad(path, "the geometry must be 'NB DB DEXT DINN' (m)");
+        g.name = "custom";
+        g.dp = (dext + dinn) / 2;
+        b.geometry = g;
+      }
+      if (key == "coverage" && v.rfind("not measured", 0) == 0) b.bank.coverage_measured = false;
       if (key == "lowpass") b.lowpass = filter_part(v);
       if (key == "sampling rate (Hz)") b.rate = number(path, key, v);
       if (key == "fold period") {
@@ -189,7 +200,7 @@ void check_bank(const BankFile &b, const Signal &s, const std::string &record_pa
     // entry's is that bearing, and a catalog name with other values is not
     BearingGeometry of_bank;
     try {
-      of_bank = catalog_entry(default_catalog_dir(), b.bearing).geometry();
+      of_bank = b.geometry ? *b.geometry : catalog_entry(default_catalog_dir(), b.bearing).geometry();
     } catch (const Error &e) {
       throw Error(head + "for the bearing " + b.bearing + ", whose geometry the catalog does not "
                   "give (" + e.what() + ")");

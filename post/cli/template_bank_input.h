@@ -25,6 +25,9 @@ struct BankFile {
   double rate = 0;
   // '# fold period: grid|fine' (absent: grid, the banks made before it was stated)
   bool fine_fold_period = false;
+  // '# geometry: NB DB DEXT DINN' (the banks ohmdem-post model makes): the bearing by its values;
+  // absent: the catalog entry '# bearing:' names
+  std::optional<BearingGeometry> geometry;
 };
 
 // Throws Error naming --template-bank and the expected form on any malformed line.

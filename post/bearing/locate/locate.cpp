@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "bearing/pulse_template.h"
 #include "core/error.h"
 
 namespace ohmdem::post {
@@ -31,6 +32,20 @@ bool race(const std::string &defect)
   return defect == "inner" || defect == "outer";
 }
 
+// An outer pit under a radial load: the electrical methods' model data (the jump, the curves, a
+// bank of one angle) are the load line's; the phase places the pit only modulo the ball
+// spacing, so whether it lies there is not known, and pits 45-60 deg off it read 20-25 % small.
+// Only a bank with angles from the load (its fit gives the distance) sizes it.
+bool off_centre_unknown(const Signal &s, const std::string &sized, const DiagnoseOptions &o)
+{
+  if (sized != "outer" || o.load != "radial" || record_kind(s.x) != RecordKind::level)
+    return false;
+  if (!o.template_bank) return true;
+  std::vector<double> sizes, angles;
+  bank_grid(*o.template_bank, sizes, angles);
+  return angles.size() < 2;
+}
+
 }  // namespace
 
 DefectLocation locate(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
@@ -44,6 +59,15 @@ DefectLocation locate(const Signal &s, const Diagnosis &found, const DiagnoseOpt
     l.method = "not determined: " + why;
   } else {
     l = sm.size(s, found, o);
+    if (l.valid && off_centre_unknown(s, sized, o)) {
+      l.size_reading_deg = l.size_deg;
+      l.valid = false;
+      l.method = "not determined: an outer pit under a radial load is sized on the load line's "
+                 "model (its jump, curve or bank of one angle), and the phase places it only "
+                 "modulo the ball spacing, so its distance from the load line is not known (pits "
+                 "45-60 deg off it read 20-25 % small): give a bank with angles from the load "
+                 "({diagnose.model}, studies/template_bank.py); " + l.method;
+    }
     apply_validity(l, sm.validity());
   }
   l.size_method = sm.name();

@@ -11,6 +11,7 @@
 
 #include "cli_run.h"
 #include "io/json.h"
+#include "temp_dir.h"
 #include "test_util.h"
 
 namespace ohmdem::post {
@@ -131,6 +132,30 @@ TEST(Size, TheCommandWithOneModelOption)
   EXPECT_NE(help.out.find("Example: ohmdem-post size V.txt --metadata run.json --model"),
             std::string::npos);
   EXPECT_NE(help.out.find("double-impulse"), std::string::npos);  // the table's names
+}
+
+// The model command's cache key is the scene's values: the bearing's name does not enter it, a
+// load or a chain that differs does; without run.json there is no scene.
+TEST(Size, ModelCacheKeyedByTheScenesValues)
+{
+  const std::string env = "OHMDEM_CACHE=" + ohmdem::test::temp_dir().string() + "/model_cache " +
+                          std::string(OHMDEM_POST_EXE);
+  auto key = [&](const std::string &meta, const std::string &extra = "") {
+    const CliRun r = test::shell(env + " model " + kData +
+                         "inner_2_force_p90_20kHz.txt --column V --metadata " + meta +
+                         " --print-key " + extra);
+    EXPECT_EQ(r.status, 0) << r.out;
+    return r.out.substr(0, r.out.find(' '));
+  };
+  const std::string base = key(kData + "inner_2_force_p90.json");
+  EXPECT_EQ(base.size(), 16u) << base;
+  EXPECT_EQ(key(metadata_with("key_custom.json", "\"machado2014\"", "\"custom\"")), base);
+  EXPECT_NE(key(metadata_with("key_load.json", "\"F\": 320,", "\"F\": 640,")), base);
+  EXPECT_NE(key(kData + "inner_2_force_p90.json", "--defect outer"), base);
+  const CliRun none = test::shell(env + " model " + kData +
+                          "inner_2_force_p90_20kHz.txt --column V --no-metadata --print-key 2>&1");
+  EXPECT_NE(none.status, 0);
+  EXPECT_NE(none.out.find("needs its run.json"), std::string::npos) << none.out;
 }
 
 }  // namespace

@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// ohmdem-post model: the model data a size method needs (a bank of pulse templates), made of
+// the record's own scene (its run.json and the header acquire wrote) by running the engine
+// `ohmdem` at known sizes, each run passed through the record's chain and folded, cached under
+// the user's cache folder keyed by the scene's values (cli/model_cache.h).
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "cli/commands.h"
+#include "cli/common.h"
+#include "cli/model_cache.h"
+#include "core/error.h"
+#include "core/text_scan.h"
+
+namespace ohmdem::post::cli {
+
+namespace {
+
+std::string quoted(const std::string &w)
+{
+  std::string q = "'";
+  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The fold's lines 'Y SE' of diagnose --pulse-fold-out, and its empty bins.
+bool read_fold(const std::string &path, std::vector<std::string> &y, std::vector<std::string> &se,
+               std::string &lowpass, std::string &bin, int &empty)
+{
+  std::ifstream in(path);
+  std::string line;
+  empty = -1;
+  while (std::getline(in, line)) {
+    if (line.rfind("# lowpass: ", 0) == 0) lowpass = line.substr(11);
+    if (line.rfind("# bin (s): ", 0) == 0) bin = line.substr(11);
+    if (line.rfind("# bins no pass fell in: ", 0) == 0) empty = std::atoi(line.c_str() + 24);
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ls(line);
+    std::string a, b;
+    if (!(ls >> a >> b)) return false;
+    y.push_back(a);
+    se.push_back(b);
+  }
+  return y.size() >= 8 && empty >= 0;
+}
+
+}  // namespace
+
+int run_model(const std::vector<std::string> &argv)
+{
+  Args a("model", "[options] RECORD",
+         "The model data of the record's scene for the template size method: a bank of the\n"
+         "pulse folds of simulations of the same scene (run.json's bearing by its values, speed,\n"
+         "load, current, pit depth) at known sizes, each passed through the record's own chain\n"
+         "(the header acquire wrote: scale, offset, anti-alias filter, rate, noise, ADC) and\n"
+         "folded at the defect's period. It runs the engine ohmdem (beside ohmdem-post, else on\n"
+         "PATH), --jobs at a time, with a progress line, and caches the bank under\n"
+         "$OHMDEM_CACHE, else $XDG_CACHE_HOME/ohmdem, else ~/.cache/ohmdem, keyed by the scene's\n"
+         "values (never a name); diagnose and size reuse it with no option. Its own error is\n"
+         "not measured (no held-out runs): the size it gives has no interval.\n"
+         "Example: ohmdem-post model results/pit/V.txt --defect inner");
+  add_input_options(a);
+  a.section("Model");
+  a.option("--defect", "KIND", "the race defect the bank is of: inner or outer", "inner");
+  a.option("--sizes", "LIST", "the bank's sizes (deg, comma-separated, increasing; default: 14 "
+           "from 0.2 to 3.64 deg, 25 % apart)");
+  a.option("--jobs", "N", "engine runs at a time (1..64)", "2");
+  a.option("--length", "S", "simulated time after the sliding phase of each run (s)", "0.3");
+  a.option("--engine", "FILE", "the engine (default: ohmdem beside ohmdem-post, else on PATH)");
+  a.option("--deck", "FILE", "the bearing deck (default: the source tree's inputs/bearing_6208/in.bearing)");
+  a.flag("--print-key", "print the scene's key and the cache file, make nothing");
+  add_output_options(a);
+  if (!a.parse(argv, std::cout)) return 0;
+  const auto files = input_options(a).files;
+  if (files.size() != 1) throw Error("model: give one RECORD (an acquired record with its header)");
+  const RunMetadata meta = run_metadata(a);
+  const std::string defect = a.get("--defect");
+  if (defect != "inner" && defect != "outer")
+    throw Error("model: --defect must be inner or outer, got '" + defect + "'");
+  std::vector<double> sizes;
+  if (!a.has("--sizes")) sizes = default_bank_sizes();
+  for (const std::string &t : a.has("--sizes") ? split_commas(a.get("--sizes"))
+                                               : std::vector<std::string>{}) {
+    double v = 0;
+    if (!parse_double(t, v) || !(v > 0 && v < 90) || (!sizes.empty() && v <= sizes.back()))
+      throw Error("model: --sizes expects increasing sizes in (0, 90) deg, comma-separated, got '" +
+                  a.get("--sizes") + "'");
+    sizes.push_back(v);
+  }
+  if (sizes.size() < 3) throw Error("model: --sizes needs at least 3 sizes");
+  const int jobs = static_cast<int>(a.integer_in("--jobs", 2, 1, 64, "a number of runs"));
+  const double length =
+      a.number_in("--length", kDefaultRunLength, Range::open(0.01, 100), "a duration", "s");
+  const Scene scene = record_scene(files[0], meta, defect, sizes, length);
+  const std::string path = cached_bank_path(scene);
+  if (a.has("--print-key")) {
+    std::cout << scene.key << " " << path << "\n";
+    return 0;
+  }
+  if (access(path.c_str(), R_OK) == 0) {
+    std::cout << path << " (cached: the scene's bank exists)\n";
+    return 0;
+  }
+  const std::string engine = a.has("--engine") ? a.get("--engine") : find_engine();
+  if (engine.empty())
+    throw Error(
+        "model: no engine: ohmdem is neither beside ohmdem-post nor on PATH (a post-only "
+        "build). Build the engine (README, Install) and rerun, give it with --engine FILE, or "
+        "make the bank where an engine runs (studies/template_bank.py) and give it to size or "
+        "diagnose with --model FILE");
+  const std::string deck = a.has("--deck") ? a.get("--deck") : default_deck();
+  const std::string deck_dir = deck.substr(0, deck.find_last_of('/'));
+  const std::string work = path + ".work";
+  if (std::system(("mkdir -p " + quoted(work)).c_str()) != 0)
+    throw Error("model: cannot create the work folder " + work);
+  const std::string self = self_executable();
+  std::vector<int> ok(sizes.size(), 0);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::mutex print;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto worker = [&]() {
+    for (std::size_t k = next++; k < sizes.size(); k = next++) {
+      const std::string run = work + "/s" + std::to_string(k);
+      const std::string sim =
+          quoted(engine) + " -in " + quoted(deck) + " -var here " + quoted(deck_dir) +
+          " -var out " + quoted(run) + " -log " + quoted(run + ".log") + " -screen none" +
+          scene.deck_vars + " -var defect " + defect + " -var size " + format_number(sizes[k], 10) +
+          " > " + quoted(run + ".stdout") + " 2>&1";
+      const std::string acq = quoted(self) + " acquire " + quoted(run + "/signal.txt") +
+                              " --column R" + scene.acquire_args + " --name V --output " +
+                              quoted(run + ".V.txt") + " > /dev/null 2>&1";
+      const std::string fold = quoted(self) + " diagnose " + quoted(run + ".V.txt") +
+                               " --metadata " + quoted(run + "/run.json") +
+                               " --no-size --format json --assume-defect " + defect +
+                               " --pulse-fold-out " + quoted(run + ".fold") + " > /dev/null 2>&1";
+      ok[k] = std::system(sim.c_str()) == 0 && std::system(acq.c_str()) == 0 &&
+              std::system(fold.c_str()) == 0;
+      const std::size_t n = ++done;
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::lock_guard<std::mutex> lock(print);
+      std::cerr << "model: " << n << " of " << sizes.size() << " runs, " << format_number(s, 3)
+                << " s, about "
+                << format_number(s / static_cast<double>(n) * static_cast<double>(sizes.size() - n), 3)
+                << " s left\n";
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 0; j < jobs; ++j) pool.emplace_back(worker);
+  for (std::thread &t : pool) t.join();
+  std::ostringstream rows;
+  std::string lowpass, bin;
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < sizes.size(); ++k) {
+    std::vector<std::string> y, se;
+    int empty = 0;
+    const std::string run = work + "/s" + std::to_string(k);
+    if (!ok[k] || !read_fold(run + ".fold", y, se, lowpass, bin, empty) || empty > 0) {
+      std::cerr << "model: size " << sizes[k] << " deg left out (" << run
+                << ".stdout and .log say why when the run failed; a fold with bins no pass "
+                   "fell in needs a longer --length)\n";
+      continue;
+    }
+    rows << format_number(sizes[k], 10) << " 0 " << y.size();
+    for (const std::string &v : y) rows << ' ' << v;
+    for (const std::string &v : se) rows << ' ' << v;
+    rows << '\n';
+    ++kept;
+  }
+  if (kept < 3)
+    throw Error("model: fewer than 3 of the " + std::to_string(sizes.size()) +
+                " runs gave a fold (their logs: " + work + "): no bank");
+  write_bank_file(path, scene, lowpass, bin, rows.str());
+  std::cout << path << "\n";
+  return 0;
+}
+
+}  // namespace ohmdem::post::cli
