@@ -147,8 +147,10 @@ int run_diagnose(const std::vector<std::string> &argv)
       "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
       "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
       "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
-      "may be off by --tolerance (slip); shaft and mains lines are masked (the shaft frequency\n"
-      "is estimated from them). The defect is the family scoring >= --min-score (inner, outer,\n"
+      "may be off by --tolerance (slip); shaft and mains lines are masked. The stated speed\n"
+      "(run.json, --rpm, --shaft-hz, --omega, a tachometer) is used, refined by the shaft comb\n"
+      "within --speed-refine where it stands out. The defect is the family scoring >=\n"
+      "--min-score (inner, outer,\n"
       "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
       "harmonic, 'other-bearing' if --other-bearing's comb explains the record better than\n"
       "any of this bearing's, else 'unidentified' if detection fired (a fault of unknown\n"
@@ -156,7 +158,9 @@ int run_diagnose(const std::vector<std::string> &argv)
       "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
       "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
       "from the shaft angle column under a radial load.\n"
-      "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
+      "For our runs, bearing, speed and the end of the sliding phase come from run.json (under\n"
+      "a radial load the start-up transient after it is skipped too).\n"
+      "Reference: doc/post/diagnose.md.");
   add_input_options(a);
   add_bearing_options(a);
   add_shaft_angle_options(a);
