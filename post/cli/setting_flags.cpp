@@ -40,6 +40,7 @@ const SettingFlags &setting_flags()
       // DiagnoseOptions (bearing/diagnose.h), BearingGeometry and the catalog (bearing/bearing.h)
       {"diagnose.harmonics", "--harmonics"},
       {"diagnose.tolerance", "--tolerance"},
+      {"diagnose.speed_refine", "--speed-refine"},
       {"diagnose.baseline", "--baseline"},
       {"diagnose.other_channel", "--other-channel"},
       {"diagnose.load", "--load"},
