@@ -150,8 +150,20 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   const AnalysedSpectrum rs =
       analyse("spectrum", x, s.rate, k.fr, opt.speed_refine, opt.mains_hz);
   const ShaftLines &shaft = rs.shaft.comb_db >= es.shaft.comb_db ? rs.shaft : es.shaft;
-  d.shaft_estimated = shaft.estimated;
-  d.shaft_hz_estimated = shaft.fr;
+  // What the spectrum says of the speed, searched within the slip tolerance on the unmasked
+  // spectra: reported only (a stated speed off by a percent, the MFPT rig's; or a defect comb
+  // the search locked onto), never used beyond speed_refine
+  {
+    const ShaftLines we = shaft_lines(es.open_db, es.s.df, opt.fr, opt.tolerance);
+    const ShaftLines wr = shaft_lines(rs.open_db, rs.s.df, opt.fr, opt.tolerance);
+    const ShaftLines &wide = wr.comb_db >= we.comb_db ? wr : we;
+    d.shaft_estimated = wide.estimated;
+    d.shaft_hz_estimated = wide.fr;
+  }
+  if (!d.shaft_estimated && shaft.estimated) {
+    d.shaft_estimated = true;
+    d.shaft_hz_estimated = shaft.fr;
+  }
   d.shaft_lines_masked = es.shaft.lines + rs.shaft.lines;
   // the kinematics at the speed used: the stated one, refined by a strong shaft comb
   d.shaft_refined = shaft.estimated && shaft.fr != opt.fr;

@@ -476,7 +476,11 @@ int run_diagnose(const std::vector<std::string> &argv)
                  d.shaft_estimated
                      ? format_number(d.shaft_hz_estimated, 8) + " (" +
                            format_number(100 * (d.shaft_hz_estimated / o.fr - 1), 3) +
-                           " % from the given one, from the " + d.shaft_source + "; " +
+                           " % from the stated one, from the " + d.shaft_source +
+                           (std::fabs(d.shaft_hz_estimated / o.fr - 1) > o.speed_refine
+                                ? ", beyond --speed-refine: not used"
+                                : "") +
+                           "; " +
                            std::to_string(d.shaft_lines_masked) + " shaft and mains lines masked)"
                      : "no shaft comb stands out (" + std::to_string(d.shaft_lines_masked) +
                            " shaft and mains lines masked)");
