@@ -19,7 +19,7 @@ cage; cage?ball is a cage verdict with a possible ball defect). Healthy records 
 (unidentified: a detection test fired; ambiguous) are counted apart, and so are those whose
 impulses are the other bearing's (other-bearing). A ball record is hedged when the verdict is
 not ball but names a possible ball defect (cage?ball, or a ball candidate).
-Exit status 0; --require-no-false-alarm, --require-races-right, --min-races-right N,
+Exit status 0; --require-no-false-alarm, --max-false-alarms N, --require-races-right, --min-races-right N,
 --min-ball-right-or-hedged N and --max-healthy-flagged N turn the goals into an exit status
 (1 when missed).
 """
@@ -132,6 +132,8 @@ def main():
     ap.add_argument("--cwru-labels", metavar="LABELS.csv",
                     help="the labelled CWRU records' labels.csv (a folder under --root)")
     ap.add_argument("--require-no-false-alarm", action="store_true")
+    ap.add_argument("--max-false-alarms", type=int, default=None, metavar="N",
+                    help="fail when more than N healthy records are named after a family")
     ap.add_argument("--require-races-right", action="store_true")
     ap.add_argument("--min-races-right", type=int, default=None, metavar="N",
                     help="fail when fewer than N inner and outer records are right")
@@ -167,6 +169,7 @@ def main():
     if len(rigs) > 1:
         total.print("all rigs")
     failed = (a.require_no_false_alarm and total.alarms > 0) or \
+             (a.max_false_alarms is not None and total.alarms > a.max_false_alarms) or \
              (a.require_races_right and total.races_right < total.races) or \
              (a.min_races_right is not None and total.races_right < a.min_races_right) or \
              (a.min_ball_right_or_hedged is not None and

@@ -151,8 +151,20 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   const AnalysedSpectrum rs =
       analyse("spectrum", x, s.rate, k.fr, opt.speed_refine, opt.mains_hz);
   const ShaftLines &shaft = rs.shaft.comb_db >= es.shaft.comb_db ? rs.shaft : es.shaft;
-  d.shaft_estimated = shaft.estimated;
-  d.shaft_hz_estimated = shaft.fr;
+  // What the spectrum says of the speed, searched within the slip tolerance on the unmasked
+  // spectra: reported only (a stated speed off by a percent, the MFPT rig's; or a defect comb
+  // the search locked onto), never used beyond speed_refine
+  {
+    const ShaftLines we = shaft_lines(es.open_db, es.s.df, opt.fr, opt.tolerance);
+    const ShaftLines wr = shaft_lines(rs.open_db, rs.s.df, opt.fr, opt.tolerance);
+    const ShaftLines &wide = wr.comb_db >= we.comb_db ? wr : we;
+    d.shaft_estimated = wide.estimated;
+    d.shaft_hz_estimated = wide.fr;
+  }
+  if (!d.shaft_estimated && shaft.estimated) {
+    d.shaft_estimated = true;
+    d.shaft_hz_estimated = shaft.fr;
+  }
   d.shaft_lines_masked = es.shaft.lines + rs.shaft.lines;
   // the kinematics at the speed used: the stated one, refined by a strong shaft comb
   d.shaft_refined = shaft.estimated && shaft.fr != opt.fr;
@@ -226,8 +238,23 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   // A ball comb deeply modulated at FTF is the exception: shaft lines carry no cage modulation.
   const CageModulation cage_mod = cage_modulation(d.families);
   const bool ball_modulated = best->defect == "ball" && cage_mod.present();
+  // A race comb is the other exception when it sits at its kinematic value, nearer to it than
+  // halfway to the shaft harmonic: a race defect barely slips and the speed is the stated one
+  // (within speed_refine), where lines beside a shaft harmonic would have drawn the comb's
+  // search toward it
+  const bool race = best->defect == "inner" || best->defect == "outer";
+  const double off_kinematic = std::fabs(best->frequency_hz / best->nominal_hz - 1);
+  const double to_shaft = std::fabs(best->shaft_order * k.fr / best->nominal_hz - 1);
+  const bool race_at_kinematic = race && best->shaft_order > 0 && off_kinematic < 0.5 * to_shaft;
   if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect &&
-      ball_modulated)
+      race_at_kinematic)
+    d.warnings.push_back(best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
+                         " fr lies near " + std::to_string(best->shaft_order) +
+                         " fr, but the comb lies " + format_number(100 * off_kinematic, 3) +
+                         " % from its kinematic value, " + format_number(100 * to_shaft, 3) +
+                         " % from the shaft harmonic: reported as " + best->defect);
+  else if (best->score >= opt.min_score && best->shaft_order > 0 && d.defect == best->defect &&
+           ball_modulated)
     d.warnings.push_back(best->label + " = " + format_number(best->nominal_hz / k.fr, 4) +
                          " fr lies near " + std::to_string(best->shaft_order) +
                          " fr, but the comb is modulated at FTF (" + cage_mod.describe() +

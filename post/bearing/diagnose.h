@@ -161,7 +161,8 @@ struct Diagnosis {
   SizeEstimate size;  // the pulse width measured (the area method checks its jump with it)
   DefectLocation located;
   // The shaft frequency from the spectrum's shaft harmonics (shaft_lines.h; the spectrum whose
-  // shaft comb is stronger) when they stand out, else the given one; the lines masked (both
+  // shaft comb is stronger), searched within the tolerance, when they stand out: reported, used
+  // only through shaft_hz_used (within speed_refine); the lines of the speed used masked (both
   // spectra) so that no defect comb claims them.
   // Without a shaft comb, an identified race family gives it (matched / kinematic order: race
   // defects barely slip); shaft_source says which: "shaft comb" or "BPFI comb", "BPFO comb".

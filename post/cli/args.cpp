@@ -39,6 +39,11 @@ const Args::Spec *Args::spec(const std::string &name) const
   return nullptr;
 }
 
+void Args::retired(const std::string &name, const std::string &instead)
+{
+  retired_[name] = instead;
+}
+
 bool Args::parse(const std::vector<std::string> &argv, std::ostream &out)
 {
   for (std::size_t i = 0; i < argv.size(); ++i) {
@@ -55,6 +60,8 @@ bool Args::parse(const std::vector<std::string> &argv, std::ostream &out)
         name = a.substr(0, eq);
         inline_value = a.substr(eq + 1);
       }
+      if (const auto r = retired_.find(name); r != retired_.end())
+        throw Error(command_ + ": option " + name + " is not taken any more: " + r->second);
       const Spec *s = spec(name);
       if (!s)
         throw Error(command_ + ": unknown option '" + name + "' (see ohmdem-post " + command_ +

@@ -34,6 +34,8 @@ class Args {
               const std::string &def = "", int arity = 1);
   void flag(const std::string &name, const std::string &help);
   void section(const std::string &title);  // a heading in --help
+  // An option no longer taken: given, it is refused with `instead` (what to use), not as unknown
+  void retired(const std::string &name, const std::string &instead);
 
   // Returns false when --help was given (help already printed to `out`).
   bool parse(const std::vector<std::string> &argv, std::ostream &out);
@@ -68,6 +70,7 @@ class Args {
   std::string command_, synopsis_, description_;
   std::vector<Spec> specs_;  // in declaration order, sections as specs with empty name
   std::map<std::string, std::vector<std::string>> given_;
+  std::map<std::string, std::string> retired_;
   std::vector<std::string> positional_;
 };
 

@@ -155,17 +155,21 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
       "of the spectrum and of the envelope spectrum (band from the kurtogram unless --band),\n"
       "matches them to the defect families - inner race (BPFI, shaft sidebands), outer race\n"
       "(BPFO), ball (2xBSF, cage sidebands), cage (FTF) - with harmonic combs whose fundamental\n"
-      "may be off by --tolerance (slip); shaft and mains lines are masked (the shaft frequency\n"
-      "is estimated from them). The defect is the family scoring >= --min-score (inner, outer,\n"
-      "ball, cage), 'ambiguous' if its order lies within half the tolerance of a shaft\n"
+      "may be off by --tolerance (slip); shaft and mains lines are masked. The stated speed\n"
+      "(run.json, --rpm, --shaft-hz, --omega, a tachometer) is used, refined by the shaft comb\n"
+      "within --speed-refine where it stands out. The defect is the family scoring >=\n"
+      "--min-score (inner, outer, ball, cage), 'ambiguous' if its order lies within half the\n"
+      "tolerance of a shaft harmonic unless its comb sits at its kinematic value,\n"
       "harmonic, 'other-bearing' if --other-bearing's comb explains the record better than\n"
       "any of this bearing's, else 'unidentified' if detection fired (a fault of unknown\n"
-      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect size is\n"
-      "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
-      "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
-      "from the shaft angle column under a radial load.\n"
-      "For our runs, bearing, speed and the end of the sliding phase come from run.json.\n"
-      "Size and place: the options below, or ohmdem-post size (the same, its answer alone).");
+      "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect's size and\n"
+      "place follow from the methods the record calls for, a size only inside the validity its\n"
+      "method's report measured (else 'not determined' with the reason); an inner defect is\n"
+      "placed on the ring from the shaft angle under a radial load.\n"
+      "For our runs, bearing, speed and the end of the sliding phase come from run.json (under\n"
+      "a radial load the start-up transient after it is skipped too).\n"
+      "Size and place: the options below, or ohmdem-post size (the same, its answer alone).\n"
+      "Reference: doc/post/diagnose.md, doc/post/size.md.");
   add_input_options(a);
   add_bearing_options(a);
   add_shaft_angle_options(a);
@@ -528,7 +532,11 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
                  d.shaft_estimated
                      ? format_number(d.shaft_hz_estimated, 8) + " (" +
                            format_number(100 * (d.shaft_hz_estimated / o.fr - 1), 3) +
-                           " % from the given one, from the " + d.shaft_source + "; " +
+                           " % from the stated one, from the " + d.shaft_source +
+                           (std::fabs(d.shaft_hz_estimated / o.fr - 1) > o.speed_refine
+                                ? ", beyond --speed-refine: not used"
+                                : "") +
+                           "; " +
                            std::to_string(d.shaft_lines_masked) + " shaft and mains lines masked)"
                      : "no shaft comb stands out (" + std::to_string(d.shaft_lines_masked) +
                            " shaft and mains lines masked)");

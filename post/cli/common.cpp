@@ -215,10 +215,11 @@ void add_bearing_options(Args &a)
   a.option("--factors", "LIST",
            "BPFO,BPFI,BSF,FTF (or BPFO,BPFI): the maker's defect frequencies as multiples of "
            "the shaft frequency, for a bearing in no catalog (they win over the geometry)");
+  // one speed option per unit
   a.option("--rpm", "RPM", "shaft speed (rev/min)");
-  a.option("--shaft-hz", "HZ", "shaft frequency (Hz); --fr is the same");
-  a.option("--fr", "HZ", "shaft frequency (Hz), as in MATLAB's bearing tools");
+  a.option("--shaft-hz", "HZ", "shaft frequency (Hz)");
   a.option("--omega", "RAD/S", "shaft angular speed (rad/s), as omega_inner in our decks");
+  a.retired("--fr", "give the shaft frequency in Hz with --shaft-hz (or --rpm, --omega)");
   a.option("--rpm-variable", "NAME", "MAT files: the variable holding the shaft speed (rpm)");
 }
 
@@ -281,10 +282,9 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
     validate(g);
     c.geometry = g;
   }
-  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--fr") + a.has("--omega") +
-               a.has("--rpm-variable");
+  int speeds = a.has("--rpm") + a.has("--shaft-hz") + a.has("--omega") + a.has("--rpm-variable");
   if (speeds > 1)
-    throw Error("give the shaft speed once: --rpm, --shaft-hz, --fr, --omega or --rpm-variable");
+    throw Error("give the shaft speed once: --rpm, --shaft-hz, --omega or --rpm-variable");
   // the speed in the option's own unit, refused when not > 0 naming the option
   const auto speed = [&](const char *name, const char *unit) {
     return a.number_in(name, NAN, Range::above(0), "a shaft speed", unit);
@@ -292,7 +292,6 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
   double fr = NAN;
   if (a.has("--rpm")) fr = speed("--rpm", "rpm") / 60;
   if (a.has("--shaft-hz")) fr = speed("--shaft-hz", "Hz");
-  if (a.has("--fr")) fr = speed("--fr", "Hz");
   if (a.has("--omega")) fr = speed("--omega", "rad/s") / (2 * kPi);
   if (a.has("--rpm-variable")) {
     if (a.positional().empty()) throw Error("option --rpm-variable needs a MAT input file");
@@ -306,7 +305,9 @@ BearingChoice bearing_choice(const Args &a, const RunMetadata &meta)
   if (speeds) {
     c.fr = fr;
     c.fr_source = a.has("--rpm-variable") ? "MAT variable " + a.get("--rpm-variable") + " (rpm)"
-                                          : "command line";
+                  : a.has("--rpm")        ? "command line --rpm"
+                  : a.has("--shaft-hz")   ? "command line --shaft-hz"
+                                          : "command line --omega";
   } else if (meta.omega_inner) {
     if (!(*meta.omega_inner > 0)) throw Error(meta.path + ": \"omega_inner\" must be > 0");
     c.fr = *meta.omega_inner / (2 * kPi);

@@ -85,7 +85,7 @@ struct BearingChoice {
   std::string geometry_source, fr_source;
 };
 // Command line first (--bearing NAME from the catalog --catalog DIR, --nb/--db/--dp/--beta,
-// --rpm/--shaft-hz/--fr/--omega), then the run's metadata (its nb, db, dp: what ran).
+// --rpm/--shaft-hz/--omega), then the run's metadata (its nb, db, dp: what ran).
 BearingChoice bearing_choice(const Args &a, const RunMetadata &meta);
 
 // Options several commands share, one range each (doc/ohmdem-post.md, "Common ranges").

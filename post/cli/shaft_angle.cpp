@@ -45,6 +45,10 @@ void add_shaft_angle_options(Args &a)
   a.option("--tacho-column", "NAME|N",
            "column (or MAT variable) of a once-per-revolution pulse train (tachometer, "
            "keyphasor): the shaft angle is 0 at each pulse's rising edge, linear between them");
+  a.option("--tacho-ppr", "N",
+           "pulses per revolution of the --tacho-column (a toothed wheel, an encoder: 1..10000); "
+           "the angle turns 2 pi / N from one rising edge to the next",
+           "1");
 }
 
 std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata &meta,
@@ -54,7 +58,10 @@ std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata 
     throw Error("give the shaft angle once: --angle-column, --speed-column or --tacho-column");
   const SpeedUnit unit = parse_speed_unit(a.get("--speed-unit"));
   ShaftAngle sa;
+  if (a.has("--tacho-ppr") && !a.has("--tacho-column"))
+    throw Error("--tacho-ppr gives the pulses per revolution of a --tacho-column: give the column");
   if (a.has("--tacho-column")) {
+    const long long ppr = a.integer_in("--tacho-ppr", 1, 1, 10000, "a pulse count per revolution");
     const Signal c = companion_column(a, meta, s, a.get("--tacho-column"));
     TachoAngle t;
     try {
@@ -63,8 +70,11 @@ std::optional<ShaftAngle> measured_shaft_angle(const Args &a, const RunMetadata 
       throw Error("--tacho-column " + c.name + ": " + e.what());
     }
     sa.theta = std::move(t.theta);
+    for (double &th : sa.theta) th /= static_cast<double>(ppr);
     sa.source = "column " + c.name + ", " + std::to_string(t.pulses) +
-                " once-per-revolution pulses (0 at each rising edge)";
+                (ppr == 1 ? std::string(" once-per-revolution pulses (0 at each rising edge)")
+                          : " pulses at " + std::to_string(ppr) +
+                                " per revolution (--tacho-ppr; 0 at the first rising edge)");
   } else if (a.has("--speed-column")) {
     const Signal c = companion_column(a, meta, s, a.get("--speed-column"));
     std::vector<double> w = c.x;

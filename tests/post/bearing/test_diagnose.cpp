@@ -93,6 +93,28 @@ TEST(Diagnose, ToleratesSlip)
   }
 }
 
+// A bearing whose BPFI order, 4.955, lies 0.9 % from 5 (within half the 2 % tolerance): an
+// inner pit's train at BPFI is named inner (its comb sits at the kinematic value); a train at
+// 5 fr itself, where the BPFI comb slides to, stays ambiguous (the machine's lines).
+TEST(Diagnose, RaceOrderNearAShaftHarmonic)
+{
+  BearingGeometry g = bearing_preset("machado2014");
+  g.factors = DefectFactors{4.045, 4.955, 2.1, 4.045 / 9};
+  DiagnoseOptions o = options_6208();
+  o.geometry = g;
+  test::DefectSpec spec;
+  spec.kind = "inner";
+  const auto at_bpfi = test::defect_signal(g, spec);
+  const Diagnosis d = diagnose(at_bpfi.signal, o);
+  EXPECT_EQ(d.defect, "inner") << d.reason;
+  EXPECT_NEAR(d.frequency_hz, at_bpfi.frequency, 0.002 * at_bpfi.frequency);
+  spec.slip = 1 - 5 / 4.955;  // the train at 5 fr exactly
+  const auto at_shaft = test::defect_signal(g, spec);
+  const Diagnosis s = diagnose(at_shaft.signal, o);
+  EXPECT_EQ(s.defect, "ambiguous");
+  EXPECT_EQ(s.candidate, "inner");
+}
+
 TEST(Diagnose, HealthySignalsAreNone)
 {
   for (std::uint64_t seed : {1, 2, 3, 4}) {

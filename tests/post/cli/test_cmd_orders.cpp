@@ -144,6 +144,53 @@ TEST(OrdersCli, TachoColumnGivesTheSameOrder)
       << flat.out;
 }
 
+// A toothed wheel of 4 teeth: 4 pulses per revolution (5 V for the first 5 deg of each quarter
+// turn); with --tacho-ppr 4 the angle, hence the BPFI order, is the run-up's own.
+TEST(OrdersCli, TachoPulsesPerRevolution)
+{
+  std::ifstream in(run_up_file());
+  std::string line, text = "# time tacho x\n";
+  std::getline(in, line);
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string t, rpm, x;
+    double th = 0;
+    ls >> t >> th >> rpm >> x;
+    text += t + (std::fmod(th, kPi / 2) < 5 * kPi / 180 ? " 5 " : " 0 ") + x + "\n";
+  }
+  const std::string file = test::write_temp("run_up_tacho4.txt", text);
+  const CliRun a = run("orders " + file +
+                       " --column x --bearing 6205 --envelope --band 700 1300 --format json "
+                       "--tacho-column tacho --tacho-ppr 4");
+  ASSERT_EQ(a.status, 0) << a.out;
+  EXPECT_NE(a.out.find("pulses at 4 per revolution (--tacho-ppr"), std::string::npos) << a.out;
+  const Json p = first_peak(a.out);
+  EXPECT_EQ(get(p, "label").string(), "1xBPFI");
+  EXPECT_NEAR(get(p, "order").number(), bpfi_order(), 1e-3 * bpfi_order());
+  const CliRun alone = run("orders " + file + " --column x --bearing 6205 --tacho-ppr 4");
+  EXPECT_NE(alone.status, 0);
+  EXPECT_NE(alone.out.find("--tacho-ppr gives the pulses per revolution of a --tacho-column"),
+            std::string::npos)
+      << alone.out;
+  const CliRun zero = run("orders " + file + " --column x --bearing 6205 --tacho-column tacho "
+                          "--tacho-ppr 0");
+  EXPECT_NE(zero.status, 0);
+  EXPECT_NE(zero.out.find("option --tacho-ppr expects a pulse count per revolution in 1..10000"),
+            std::string::npos)
+      << zero.out;
+}
+
+// One speed option per unit: --fr is refused, naming --shaft-hz
+TEST(OrdersCli, FrRefusedNamingShaftHz)
+{
+  const CliRun r = run("frequencies --bearing 6205 --fr 29.95");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.out.find("frequencies: option --fr is not taken any more: give the shaft frequency "
+                       "in Hz with --shaft-hz"),
+            std::string::npos)
+      << r.out;
+}
+
 TEST(OrdersCli, DiagnoseSwitchesToOrdersWhenTheSpeedVaries)
 {
   const CliRun r = run("diagnose " + run_up_file() + " --column x --bearing 6205 --format json");
