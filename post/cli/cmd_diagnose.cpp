@@ -160,7 +160,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
       "within --speed-refine where it stands out. The defect is the family scoring >=\n"
       "--min-score (inner, outer, ball, cage), 'ambiguous' if its order lies within half the\n"
       "tolerance of a shaft harmonic unless its comb sits at its kinematic value,\n"
-      "harmonic, 'other-bearing' if --other-bearing's comb explains the record better than\n"
+      "'other-bearing' if --other-bearing's comb explains the record better than\n"
       "any of this bearing's, else 'unidentified' if detection fired (a fault of unknown\n"
       "type), else 'none'; with a score in [0, 1] and the matched peaks. The defect's size and\n"
       "place follow from the methods the record calls for, a size only inside the validity its\n"
