@@ -81,12 +81,12 @@ def report(out, sizes, t0, nb):
     for d in KINDS:
         j = json.load(open(os.path.join(out, f"fig13_{d}", "diagnosis.json")))
         s = signal(f"fig13_{d}")
-        size = j.get("size") or {}
+        size = j.get("size_deg")
         f = j.get("frequency_hz")
         k = j.get("kinematic_hz")
         lines.append(f"| {d} | {j['defect']} | {j['score']:.2f} | {f if f is None else round(f, 2)} | "
                      f"{k if k is None else round(k, 2)} | "
-                     f"{round(size['size_deg'], 2) if size.get('valid') else '-'} | "
+                     f"{round(size, 2) if size is not None else '-'} | "
                      f"{s['R'].min() / r0:.4f} | {s['R'].max() / r0:.4f} |")
     lines += ["", "Figures: " + ", ".join(f"[{d}](fig13_{d}.png) ([spectrum](fig13_{d}_spectrum.png))"
                                           for d in KINDS), ""]

@@ -137,12 +137,12 @@ def case(out, sims, key, channel, rate, noise, bits, baselines):
         d = json.loads(r.stdout)
     detected = bool(d.get("detected", d["defect"] != "none"))
     identified = detected and d["defect"] == defect
-    size_est = d.get("size", {})
+    size_est = d.get("size_deg")
     return {"size_deg": size, "defect": defect, "channel": channel, "rate_hz": rate, "bits": bits,
             "noise": noise, "noise_density": CHANNELS[channel]["noise"][noise],
             "diagnosis": d["defect"], "score": d.get("score", 0.0), "detected": detected,
             "identified": identified,
-            "size_est_deg": size_est["size_deg"] if identified and size_est.get("valid") else "",
+            "size_est_deg": size_est if identified and size_est is not None else "",
             "note": d.get("error", "")}
 
 

@@ -44,7 +44,7 @@ unless --keep-runs); OUT/locate.json holds the answer, also printed.
 About 30-40 runs of the scene a branch (4-5 branches within 63 deg on a 13-ball bearing; 120-240
 a record, the second look adding about a fifth): 5-7 minutes on one core for the 6208's 0.3 s
 records, 25-30 for 1.2 s ones.
-doc/ohmdem-post.md, "The outer pit's branch".
+doc/methods/place_outer_branch.md.
 """
 import argparse
 import json
@@ -556,7 +556,7 @@ def main(argv):
     placed, note = decide(found, a.margin, bins, spacing, p_values=calibrated)
     if placed and rate < CHECKED_RATE:
         note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the margin does not hold (at 10 kHz "
-                 "one of 12 held-out pits was placed a ball spacing off: doc/ohmdem-post.md)")
+                 "one of 12 held-out pits was placed a ball spacing off: doc/methods/place_outer_branch.md)")
     if placed and rate >= CHECKED_RATE and not (margin_given or margin_at(a.fold_period, rate)[1]):
         note += (f"; caution: the margin ({a.margin:g}) was not calibrated for {a.fold_period} "
                  f"folds at {rate / 1e3:g} kHz: the larger of the calibrations on either side of "
@@ -564,7 +564,7 @@ def main(argv):
     if placed and a.fold_period == "grid" and end - a.t_from > GRID_LENGTH_S:
         note += (f"; caution: folds at the grid's period on a record longer than "
                  f"{GRID_LENGTH_S:g} s differ by their smear beyond the margin "
-                 "(doc/ohmdem-post.md)")
+                 "(doc/methods/place_outer_branch.md)")
     ordered = sorted(found)
     result = {"position_reference": "load direction", "fold_period": a.fold_period,
               "record_length_s": round(end - a.t_from, 6), "phase_deg": phase,
@@ -596,7 +596,7 @@ def main(argv):
             if rate < CHECKED_RATE:
                 note += (f"; caution: below {CHECKED_RATE / 1e3:g} kHz the best run may lie on "
                          "another branch (the held-out 10 kHz -21.25/2.6 before the size "
-                         "sweep: a ball spacing off, in the interval: doc/ohmdem-post.md)")
+                         "sweep: a ball spacing off, in the interval: doc/methods/place_outer_branch.md)")
         elif calibrated and min(found)[0] / bins <= MAX_CHI2_PER_BIN:
             note += (f"; no distance from the load line either: every branch fits worse than "
                      f"the pit's own does in all but {REJECT_P:.0%} of records")

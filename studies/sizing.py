@@ -6,7 +6,7 @@ from what an instrument records of the electrical channel.
 The SKF 6208 of the detectability study (500 rad/s) is simulated with inner and outer defects of
 0.3 to 3 deg under the radial load (pit at the load zone's centre; inner pits at several places
 on the ring) and under the fixed (balanced) load. The pits are 50 um deep: the ball reaches the
-floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/ohmdem-post.md,
+floor only in the 3 deg outer pit (1.92 mm > 2 sqrt(Db depth) = 1.59 mm); see doc/methods/size_pulse_area.md,
 "Size and position". Each run is acquired at 10, 20 and 50 kHz, 16 bits,
 with the detectability study's low and high electrical noise, given a shaft-angle column (the
 deck's angle_inner, 500 rad/s x t) and diagnosed four ways: 'jump' (area / (jump x level); the

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Benchmark of issue 5: spectrum and envelope of a 1e7-sample signal, samples per second,
+"""The post-processing benchmark: spectrum and envelope of a 1e7-sample signal, samples per second,
 ohmdem-post's library (FFTW) against numpy/scipy (numpy.fft, scipy.signal.hilbert) on the same
 machine in the same run, on the same signal.
 

@@ -76,22 +76,22 @@ double race_radius(const std::string &defect, const BearingGeometry &g)
   return defect == "inner" ? (g.dp - c) / 2 : (g.dp + c) / 2;
 }
 
-void size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+void size_from_area(DefectLocation &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
                     const Diagnosis &found, const DiagnoseOptions &o, bool curve);
-void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
+void place(DefectLocation &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
            const DiagnoseOptions &o);
-void place_outer(LocatedDefect &l, const Signal &s, const Diagnosis &d, int nb);
+void place_outer(DefectLocation &l, const Signal &s, const Diagnosis &d, int nb);
 
 }  // namespace
 
-LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
+DefectLocation locate_defect(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
 {
   Diagnosis d = found;
   if (!o.assume_defect.empty() && o.assume_defect != found.defect) {
     d.defect = o.assume_defect;
     d.frequency_hz = o.assume_defect == "inner" ? found.kinematics.bpfi : found.kinematics.bpfo;
   }
-  LocatedDefect l;
+  DefectLocation l;
   const BearingGeometry &g = o.geometry;
   l.depth_note =
       "not determined: the pulses give the defect's width and the jump of the level; the depth "
@@ -123,8 +123,10 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
     l.height_source = "theory: Nb equal parallel paths, one lost: 1/(Nb-1)";
   } else {
     l.method =
-        radial ? "needs {diagnose.pulse_height} (the jump at the load zone's centre, from a "
-                 "simulation of the scene) under a radial load"
+        radial ? "not determined: under a radial load the jump depends on the ball's place in the "
+                 "load zone: give the model's data of the scene ({diagnose.model}: a bank or the "
+                 "area's curve) or {diagnose.pulse_height} (the jump at the zone's centre, from a "
+                 "simulation of the scene)"
                : "needs the load mode ({diagnose.load}, or run.json) or {diagnose.pulse_height}";
     return l;
   }
@@ -145,7 +147,7 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
   l.window_rel_area_s = a.window_rel_area_s;
   // Where the record's entry-to-exit width lies on the model's width curve (which starts where
   // the chain resolves the pulse), the size comes from the width: the area stops growing past
-  // ~1 deg when the ring is free to move (doc/ohmdem-post.md, "Size and position").
+  // ~1 deg when the ring is free to move (doc/methods/size_pulse_area.md).
   CurveReading w;
   if (a.passes > 0) {
     const PulseEdges pe = pulse_edge_width(s.x, s.rate, d.frequency_hz);
@@ -187,7 +189,7 @@ LocatedDefect locate_defect(const Signal &s, const Diagnosis &found, const Diagn
 
 namespace {
 
-void size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
+void size_from_area(DefectLocation &l, const PulseAreaSize &a, const Signal &s, const Diagnosis &d,
                     const Diagnosis &found, const DiagnoseOptions &o, bool curve)
 {
   const BearingGeometry &g = o.geometry;
@@ -225,7 +227,7 @@ void size_from_area(LocatedDefect &l, const PulseAreaSize &a, const Signal &s, c
 }
 
 // An outer pit's angle from the load direction, modulo the ball spacing (outer_position.h).
-void place_outer(LocatedDefect &l, const Signal &s, const Diagnosis &d, int nb)
+void place_outer(DefectLocation &l, const Signal &s, const Diagnosis &d, int nb)
 {
   const double f = refine_repetition(s.x, s.rate, d.frequency_hz);
   // the crossing bounds the pulse's centroid: the entry-to-exit width, else the pulse width
@@ -250,7 +252,7 @@ void place_outer(LocatedDefect &l, const Signal &s, const Diagnosis &d, int nb)
 }
 
 // The position where the record determines it; else why not.
-void place(LocatedDefect &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
+void place(DefectLocation &l, const PulseAreaSize &a, const Diagnosis &d, bool radial,
            const DiagnoseOptions &o)
 {
   if (d.defect == "inner") {

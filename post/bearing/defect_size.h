@@ -14,7 +14,7 @@ SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeo
 
 // Issue 26: the size with an interval from the pulses' area (bearing/pulse_area.h) and the
 // position where the record determines it; the rest reported as not determined.
-LocatedDefect locate_defect(const Signal &s, const Diagnosis &d, const DiagnoseOptions &o);
+DefectLocation locate_defect(const Signal &s, const Diagnosis &d, const DiagnoseOptions &o);
 
 }  // namespace ohmdem::post
 

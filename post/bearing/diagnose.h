@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bearing/bearing.h"
+#include "bearing/locate/defect_location.h"
 #include "core/sampled_signal.h"
 #include "dsp/butterworth.h"
 #include "dsp/detect.h"
@@ -20,16 +21,26 @@
 namespace ohmdem::post {
 
 struct TemplateBank;  // bearing/pulse_template.h
+class SizeMethod;    // bearing/locate/size_method.h
+class PlaceMethod;   // bearing/locate/place_method.h
 
 struct DiagnoseOptions {
   BearingGeometry geometry;
-  double fr = 0;            // shaft frequency (Hz)
+  double fr = 0;            // shaft frequency (Hz), as stated (run.json, option, tachometer)
+  // The spectrum's shaft comb may move the stated speed by at most this fraction, and only
+  // where the comb is strong (shaft_lines.h): a stated speed is the truth, or close to it for
+  // a tachometer; a comb searched wider locks onto a defect's lines (the 6208's BPFI lies
+  // 1.9 % from 8 fr: an inner pit's comb taken for the shaft's 8th harmonic, then masked)
+  double speed_refine = 0.002;
   double tolerance = 0.02;  // fundamental searched within +-tolerance (relative) for slip
   int harmonics = 5;        // comb length
   double min_score = 0.3;   // below: defect "none"
   Band band;                // envelope band; lo = hi = 0: chosen by the kurtogram
   int kurtogram_levels = 7;
   bool estimate_size = true;
+  // the size and place methods (locate/size_method.h); null: chosen by the record
+  const SizeMethod *size_method = nullptr;
+  const PlaceMethod *place_method = nullptr;
   // issue 26, the size from the pulses' area: the load mode ("force", "fixed", "radial"; empty:
   // unknown), the relative level jump of one lost ball path (0: the theory of a balanced load,
   // 1 / (Nb - 1), none under a radial load), the shaft angle per sample (rad) or null
@@ -121,35 +132,6 @@ struct SizeEstimate {
   std::size_t pulses = 0;
 };
 
-// Issue 26: the size with its interval and the position, and what the record leaves open.
-struct LocatedDefect {
-  bool valid = false;
-  std::string method;  // how the size was found, or why not
-  double size_deg = std::numeric_limits<double>::quiet_NaN();
-  double size_lo_deg = std::numeric_limits<double>::quiet_NaN();  // NaN: no bound
-  double size_hi_deg = std::numeric_limits<double>::quiet_NaN();
-  double arc_m = std::numeric_limits<double>::quiet_NaN();
-  double pulse_height = 0;    // the relative jump used
-  std::string height_source;  // "theory: ..." or "{diagnose.pulse_height}"
-  std::size_t passes = 0;
-  double window_rel_area_s = std::numeric_limits<double>::quiet_NaN();  // for the model's curve
-  double pass_energy = std::numeric_limits<double>::quiet_NaN();        // accel-curve (V^2 s)
-  double edge_width_s = std::numeric_limits<double>::quiet_NaN();       // for the width curve
-  double position_deg = std::numeric_limits<double>::quiet_NaN();
-  double position_lo_deg = std::numeric_limits<double>::quiet_NaN();
-  double position_hi_deg = std::numeric_limits<double>::quiet_NaN();
-  std::string position_reference;  // "shaft zero", "load direction", or empty
-  // an outer pit under a radial load: the position is known modulo this (360/Nb), else NaN
-  double position_modulo_deg = std::numeric_limits<double>::quiet_NaN();
-  std::string position_note;  // why not determined
-  std::string depth_note;     // what the record says of the depth
-  // the template fit's distance of an outer pit from the load direction (deg, even in the
-  // angle), and its interval; NaN without a bank of several angles
-  double fit_angle_deg = std::numeric_limits<double>::quiet_NaN();
-  double fit_angle_lo_deg = std::numeric_limits<double>::quiet_NaN();
-  double fit_angle_hi_deg = std::numeric_limits<double>::quiet_NaN();
-};
-
 struct Diagnosis {
   // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
   // detection stage fired (a fault of unknown type); else "none"
@@ -176,8 +158,8 @@ struct Diagnosis {
   // (Kurtogram::threshold), NaN if the band was given
   double band_kurtosis_threshold = std::numeric_limits<double>::quiet_NaN();
   bool band_kurtosis_significant() const { return band_kurtosis > band_kurtosis_threshold; }
-  SizeEstimate size;
-  LocatedDefect located;
+  SizeEstimate size;  // the pulse width measured (the area method checks its jump with it)
+  DefectLocation located;
   // The shaft frequency from the spectrum's shaft harmonics (shaft_lines.h; the spectrum whose
   // shaft comb is stronger) when they stand out, else the given one; the lines masked (both
   // spectra) so that no defect comb claims them.
@@ -186,6 +168,10 @@ struct Diagnosis {
   bool shaft_estimated = false;
   double shaft_hz_estimated = 0;
   std::string shaft_source;
+  // The shaft frequency the kinematics used (Hz): the stated one, moved by the shaft comb
+  // within DiagnoseOptions::speed_refine when its comb stands out (shaft_refined)
+  double shaft_hz_used = 0;
+  bool shaft_refined = false;
   std::size_t shaft_lines_masked = 0;
   std::vector<std::string> warnings;  // e.g. families the sampling rate cuts short
   // With DiagnoseOptions::other: that bearing's kinematics and families on the same spectra.

@@ -266,10 +266,10 @@ DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double 
   return r;
 }
 
-LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
+DefectLocation locate_by_double_impulse(const Signal &s, const Diagnosis &found,
                                        const DiagnoseOptions &o)
 {
-  LocatedDefect l;
+  DefectLocation l;
   l.height_source = "no pulse height: the interval from the pass groups' delays";
   l.depth_note =
       "not determined: the entry and exit events give the pit's length along the raceway only";

@@ -62,10 +62,10 @@ DoubleImpulseSize size_from_double_impulse(const std::vector<double> &x, double 
 struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
-struct LocatedDefect;
+struct DefectLocation;
 // diagnose's size, interval and what stays open, by this method (diagnose's double-impulse
 // size method): the race defect found (or o.assume_defect at its kinematic frequency).
-LocatedDefect locate_by_double_impulse(const Signal &s, const Diagnosis &found,
+DefectLocation locate_by_double_impulse(const Signal &s, const Diagnosis &found,
                                        const DiagnoseOptions &o);
 
 // Residual of the order-p autoregressive model of x (Levinson-Durbin on its autocorrelation).

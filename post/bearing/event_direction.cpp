@@ -142,7 +142,7 @@ EventDirection event_direction(const std::vector<double> &first, const std::vect
 }
 
 void place_outer_by_event_direction(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
-                                    LocatedDefect &l)
+                                    DefectLocation &l)
 {
   if (r.defect != "outer" || !o.across) return;
   if (o.load != "radial") {

@@ -10,7 +10,7 @@
 // (-90, 90] deg from the first axis, on the load zone's side when that axis is along the load
 // direction (the pit's signed angle from it, the second axis turned +90 deg); a pit beyond 90
 // deg from the load, whose events the balls' centrifugal force still gives, reads 180 deg off.
-// Plain C++, doc/ohmdem-post.md "An outer pit's angle from a two-axis accelerometer".
+// Plain C++, doc/methods/place_outer_two_axes.md.
 #ifndef OHMDEM_POST_BEARING_EVENT_DIRECTION_H
 #define OHMDEM_POST_BEARING_EVENT_DIRECTION_H
 
@@ -26,7 +26,7 @@ struct EventDirectionSettings {
   double confidence = 0.95;  // two-sided level of the interval
   // Added to the interval's half width: how far the ring's response turns the events' direction
   // from the pit's (the simulated 6208 under a radial load: at most 2.5 deg over pits of
-  // 0.3-3 deg, 0-45 deg from the load, 10-50 kHz; doc/ohmdem-post.md).
+  // 0.3-3 deg, 0-45 deg from the load, 10-50 kHz; doc/methods/place_outer_two_axes.md).
   double model_deg = 3.0;
 };
 
@@ -48,11 +48,11 @@ EventDirection event_direction(const std::vector<double> &first, const std::vect
 struct Signal;
 struct DiagnoseOptions;
 struct RaceToSize;
-struct LocatedDefect;
+struct DefectLocation;
 // An outer defect's place from the load direction (position_reference "load direction") when
 // the record's second axis is given (o.across) under a radial load; else l is left as it is.
 void place_outer_by_event_direction(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
-                                    LocatedDefect &l);
+                                    DefectLocation &l);
 
 }  // namespace ohmdem::post
 

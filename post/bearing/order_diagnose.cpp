@@ -47,6 +47,7 @@ Diagnosis diagnose_in_orders(const Signal &s, const std::vector<double> &theta, 
   // back to Hz at the mean speed
   d.frequency_hz *= fr;
   d.shaft_hz_estimated *= fr;  // in orders: 1 is the mean shaft speed
+  d.shaft_hz_used *= fr;
   d.kinematics = defect_frequencies(opt.geometry, fr);
   d.band.lo *= fr;
   d.band.hi *= fr;

@@ -5,7 +5,7 @@
 // line, and R is largest when one ball sits on the line); a pulse occurs when a ball is at the
 // pit. Both repeat at BPFO, so the pulse's phase after the modulation's maximum is Nb times the
 // pit's angle from the load line, in the balls' direction of travel: the angle is known modulo
-// the ball spacing 360/Nb (doc/ohmdem-post.md, "Size and position").
+// the ball spacing 360/Nb (doc/methods/size_pulse_area.md).
 #ifndef OHMDEM_POST_BEARING_OUTER_POSITION_H
 #define OHMDEM_POST_BEARING_OUTER_POSITION_H
 

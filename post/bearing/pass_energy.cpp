@@ -181,10 +181,10 @@ PassEnergySize size_from_pass_energy(const std::vector<double> &x, double rate, 
   return r;
 }
 
-LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
+DefectLocation locate_by_pass_energy(const Signal &s, const Diagnosis &found,
                                     const DiagnoseOptions &o)
 {
-  LocatedDefect l;
+  DefectLocation l;
   l.height_source = "no pulse height: the model's curve of the pass energy";
   l.depth_note = "not determined: the pass energy is read as the pit's length along the raceway";
   const RaceToSize r = race_to_size(found, o, "the pass energy", l);
@@ -226,7 +226,7 @@ double event_delay_s(const Signal &s, const DiagnoseOptions &o)
 }  // namespace
 
 void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
-                                LocatedDefect &l)
+                                DefectLocation &l)
 {
   if (r.defect != "inner") return;
   if (o.load != "radial") {

@@ -7,7 +7,7 @@
 // smear the passes); the same window half a period later (between the passes) is the
 // background, whose energy is subtracted. On the simulator's vibration this energy grows
 // monotonically with the pit's size, where the entry and exit events of the double impulse
-// merge behind the anti-alias filter (doc/ohmdem-post.md).
+// merge behind the anti-alias filter (doc/methods/size_pass_energy.md).
 #ifndef OHMDEM_POST_BEARING_PASS_ENERGY_H
 #define OHMDEM_POST_BEARING_PASS_ENERGY_H
 
@@ -85,7 +85,7 @@ PassEnergySize size_from_pass_energy(const std::vector<double> &x, double rate, 
 struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
-struct LocatedDefect;
+struct DefectLocation;
 struct RaceToSize;
 // An inner defect's place on the ring from an acceleration record: under a radial load the
 // passes' energy peaks when the defect meets the load direction, so the energy against the
@@ -93,11 +93,11 @@ struct RaceToSize;
 // jackknife over the passes. Needs the radial load and the record's shaft angle (o.shaft_angle);
 // else l.position_note says why not. An outer defect's note is left as it is.
 void place_inner_by_pass_energy(const Signal &s, const RaceToSize &r, const DiagnoseOptions &o,
-                                LocatedDefect &l);
+                                DefectLocation &l);
 // diagnose's size by this method (its accel-curve size method; the curve in o.curve_size_deg and
 // o.curve_rel_area_s, its error in o.curve_rel_error): the race defect found, or
 // o.assume_defect at its kinematic frequency.
-LocatedDefect locate_by_pass_energy(const Signal &s, const Diagnosis &found,
+DefectLocation locate_by_pass_energy(const Signal &s, const Diagnosis &found,
                                     const DiagnoseOptions &o);
 
 }  // namespace ohmdem::post

@@ -62,7 +62,7 @@ bool pulse_window(const std::vector<double> &x, double period, double &lo, doubl
   // the pulse's centroid (its time plus the filter's delay at 0 Hz): the pass's time. Over the
   // pulse's own sign only: the dip that follows a pit's pulse (the ring settling after the exit,
   // deeper for larger pits) would pull a signed centroid early, by up to 10 deg of shaft for a
-  // 3 deg inner pit (doc/ohmdem-post.md, "The inner pit's place and its interval")
+  // 3 deg inner pit (doc/methods/size_pulse_area.md, "The inner pit's place and its interval")
   const double sign = peak > 0 ? 1 : -1;
   double m0 = 0, m1 = 0;
   for (long b = l - 2; b <= r + 2; ++b) {

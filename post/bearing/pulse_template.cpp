@@ -355,7 +355,7 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank, doub
 
 FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
 {
-  LocatedDefect l;
+  DefectLocation l;
   const RaceToSize r = race_to_size(found, o, "the pulse template", l);
   if (!r.race) {
     FoldedPulse p;
@@ -366,19 +366,19 @@ FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseO
                     o.fine_fold_period ? FoldPeriod::fine : FoldPeriod::grid);
 }
 
-LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
+DefectLocation locate_by_template(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o)
 {
   // the place (and the area's quantities) as the area method gives them: the inner pit's angle
   // from its passes through the load zone, the outer pit's from the pulses' phase; they do not
   // use the jump, so a unit one stands in where none is given
   DiagnoseOptions po = o;
   if (!(po.pulse_height > 0) && po.curve_size_deg.empty()) po.pulse_height = 1;
-  LocatedDefect l = locate_defect(s, found, po);
+  DefectLocation l = locate_defect(s, found, po);
   l.valid = false;
   l.size_deg = l.size_lo_deg = l.size_hi_deg = l.arc_m = std::nan("");
   l.pulse_height = 0;
-  l.height_source = "no pulse height: the model's pulse templates ({diagnose.template_bank})";
-  LocatedDefect why;
+  l.height_source = "no pulse height: the model's pulse templates ({diagnose.model})";
+  DefectLocation why;
   const RaceToSize r = race_to_size(found, o, "the pulse template", why);
   if (!r.race) {
     why.depth_note = l.depth_note;
@@ -386,7 +386,7 @@ LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found, const 
   }
   if (!o.template_bank) {
     set_method(l, r, "not determined: the template fit needs the model's bank "
-                     "({diagnose.template_bank})");
+                     "({diagnose.model})");
     return l;
   }
   const FoldedPulse p = fold_pulse(s.x, s.rate, r.f, kTemplateOversample,

@@ -101,12 +101,12 @@ TemplateFit fit_templates(const FoldedPulse &rec, const TemplateBank &bank,
 struct Diagnosis;
 struct DiagnoseOptions;
 struct Signal;
-struct LocatedDefect;
+struct DefectLocation;
 // The record's fold at the race defect's frequency (found, or o.assume_defect's), for a bank.
 FoldedPulse record_fold(const Signal &s, const Diagnosis &found, const DiagnoseOptions &o);
 // diagnose's size by the template fit (o.template_bank); the position as the area method gives
 // it (the inner pit's angle from the load zone's passes, the outer pit's from the phase).
-LocatedDefect locate_by_template(const Signal &s, const Diagnosis &found,
+DefectLocation locate_by_template(const Signal &s, const Diagnosis &found,
                                  const DiagnoseOptions &o);
 
 }  // namespace ohmdem::post

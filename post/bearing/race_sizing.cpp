@@ -9,7 +9,7 @@
 namespace ohmdem::post {
 
 RaceToSize race_to_size(const Diagnosis &found, const DiagnoseOptions &o, const std::string &by,
-                        LocatedDefect &l)
+                        DefectLocation &l)
 {
   RaceToSize r;
   r.defect = found.defect;
@@ -33,7 +33,7 @@ RaceToSize race_to_size(const Diagnosis &found, const DiagnoseOptions &o, const 
   return r;
 }
 
-void set_method(LocatedDefect &l, const RaceToSize &r, const std::string &note)
+void set_method(DefectLocation &l, const RaceToSize &r, const std::string &note)
 {
   l.method =
       r.assumed ? "assumed " + r.defect + " defect ({diagnose.assume_defect}); " + note : note;

@@ -22,17 +22,17 @@ struct RaceToSize {
 };
 // `by` names the method in the notes ("the double impulse").
 RaceToSize race_to_size(const Diagnosis &found, const DiagnoseOptions &o, const std::string &by,
-                        LocatedDefect &l);
+                        DefectLocation &l);
 
 // l.method from the method's note, marked when the defect was assumed.
-void set_method(LocatedDefect &l, const RaceToSize &r, const std::string &note);
+void set_method(DefectLocation &l, const RaceToSize &r, const std::string &note);
 
 // The arc (m) along the defect's race of an angular size (deg), at the ball's contact.
 double race_arc_m(const BearingGeometry &g, const std::string &defect, double size_deg);
 
 // l from a method's estimate (note, passes, valid, size_deg, size_lo_deg, size_hi_deg).
 template <class Estimate>
-LocatedDefect take_size(LocatedDefect l, const RaceToSize &r, const BearingGeometry &g,
+DefectLocation take_size(DefectLocation l, const RaceToSize &r, const BearingGeometry &g,
                         const Estimate &e)
 {
   set_method(l, r, e.note);

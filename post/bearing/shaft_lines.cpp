@@ -98,6 +98,16 @@ ShaftLines shaft_lines(const std::vector<double> &p, double df, double fr, doubl
       best_f = f;
     }
   }
+  // A best comb at the edge of the search lies beyond it: no refinement, the stated speed's
+  // own comb or none (a defect's lines pulling the search, not the shaft's)
+  if (nsteps > 0 && std::abs(best_f - fr) >= (nsteps - 0.5) * step) {
+    best_f = fr;
+    best_total = 0;
+    for (int m = 1; m <= sl.harmonics; ++m) {
+      const std::size_t k = best_near(p, df, m * fr, 1.5);
+      if (k != static_cast<std::size_t>(-1)) best_total += credit(p[k]);
+    }
+  }
   sl.comb_db = best_total / sl.harmonics;
   // A shaft comb has its low harmonics (unbalance, misalignment); a defect's train whose
   // harmonics fall near some m fr (an outer-race train at 5.15 fr on a short record) has not.

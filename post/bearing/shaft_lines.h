@@ -28,7 +28,8 @@ constexpr double kShaftCombMin = 6;
 // shaft frequency is searched within +-tolerance of fr (quarter-bin steps) as the comb of its
 // first 10 harmonics (fewer below Nyquist) with the most prominence above 6 dB; it is estimated
 // when that comb's mean credit reaches kShaftCombMin, at least half of its harmonics, the 1x or
-// the 2x among them, stand 6 dB above the floor, and the estimate stays within the tolerance. Every
+// the 2x among them, stand 6 dB above the floor, and the estimate stays within the tolerance (a
+// best comb at the search's edge is not taken: the stated fr's own comb is judged). Every
 // harmonic m fr_est (m >= 1) found as a local maximum more than 6 dB above the floor within +-(2
 // bins + 5e-5 m fr_est) is masked over its lobe (the bins around it still above 6 dB and falling).
 // Masks (mask[k] = 1) the lobes of the lines at m f0, m >= 1, as above; returns how many.

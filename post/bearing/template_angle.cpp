@@ -59,7 +59,7 @@ std::vector<PulseTemplate> between_angles(const std::vector<PulseTemplate> &t,
   return out;
 }
 
-void pick_branch(LocatedDefect &l, const TemplateFit &f)
+void pick_branch(DefectLocation &l, const TemplateFit &f)
 {
   const std::string fit = "the template fit's angle from the load " +
                           format_number(f.angle_deg, 3) + " deg [" +

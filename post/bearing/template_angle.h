@@ -29,13 +29,13 @@ std::vector<PulseTemplate> between_angles(const std::vector<PulseTemplate> &t,
                                           const std::vector<double> &angles, int steps,
                                           std::vector<double> &dense);
 
-struct LocatedDefect;
+struct DefectLocation;
 // An outer pit's place: the phase gives it modulo the ball spacing (outer_position.h), the
 // template fit its distance from the load direction (the pulse's shape along the load zone, even
 // in the angle). Where the fit's angle interval, widened by the bank's angle error, overlaps one
 // branch's phase interval alone (both are estimates), that branch is the place; otherwise, or
 // when the bank states no angle error, it stays modulo the spacing and the note says why.
-void pick_branch(LocatedDefect &l, const TemplateFit &f);
+void pick_branch(DefectLocation &l, const TemplateFit &f);
 
 }  // namespace ohmdem::post
 

@@ -7,18 +7,19 @@
 #include <sstream>
 
 #include "bearing/diagnose.h"
-#include "bearing/double_impulse.h"
+#include "bearing/locate/locate.h"
 #include "bearing/order_diagnose.h"
-#include "bearing/pass_energy.h"
 #include "bearing/pulse_template.h"
 #include "cli/commands.h"
 #include "cli/common.h"
 #include "cli/other_channel_input.h"
 #include "cli/shaft_angle.h"
+#include "cli/model_input.h"
 #include "cli/template_bank_input.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/text_scan.h"
+#include "dsp/settle.h"
 #include "dsp/stats.h"
 #include "report/diagnosis_report.h"
 
@@ -72,41 +73,77 @@ std::string numerical_floor(const Signal &s, const RunMetadata &meta)
          "1-degree pit); the statistics below describe numerical blips, not a defect";
 }
 
-// Lines "SIZE_DEG VALUE" ('#' comments), at least two, both columns increasing; `flag` and
-// `value` name the option and the second column in the errors.
-void read_curve(const std::string &path, const std::string &flag, const std::string &value,
-                std::vector<double> &sizes, std::vector<double> &values)
+std::string size_method_help()
 {
-  std::ifstream in(path);
-  if (!in) throw Error("diagnose: " + flag + " " + path + ": cannot open the file");
-  const std::string form = "'SIZE_DEG " + value + "'";
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ls(line);
-    double sz = 0, ar = 0;
-    if (!(ls >> sz >> ar) || !std::isfinite(sz) || !std::isfinite(ar))
-      throw Error("diagnose: " + flag + " " + path + ": expected lines " + form + ", got '" + line +
-                  "'");
-    if (!sizes.empty() && (sz <= sizes.back() || ar <= values.back()))
-      throw Error("diagnose: " + flag + " " + path + ": sizes and " +
-                  (value == "AREA_S"    ? "areas"
-                   : value == "WIDTH_S" ? "widths"
-                                        : "energies") +
-                  " must both increase from line to line");
-    sizes.push_back(sz);
-    values.push_back(ar);
+  std::string h = "how the size is read (default: chosen by the record: template with a "
+                  "--template-bank, else area on an electrical level record; accel-curve with a "
+                  "--size-curve, else double-impulse on a vibration record):";
+  for (const SizeMethod *m : size_methods()) h += std::string(" ") + m->name() + " (" + flag_named(m->summary()) + ");";
+  h.back() = '.';
+  return h;
+}
+
+std::string place_method_help()
+{
+  std::string h = "how the place is read (default: pulses on an electrical level record, passes "
+                  "on a vibration record):";
+  for (const PlaceMethod *m : place_methods()) h += std::string(" ") + m->name() + " (" + flag_named(m->summary()) + ");";
+  h.back() = '.';
+  return h;
+}
+
+// Our run's record from the end of its sliding phase, and under a radial load past the
+// start-up transient that follows it while the free outer ring finds its place (dsp/settle.h:
+// the level's drift, in windows of one shaft revolution), unless --from or --keep-sliding say
+// where to start; meta's t_sliding_end moves with it (the companion channels and the baseline
+// start there too).
+Signal settled_input(const Args &a, RunMetadata &meta, const BearingChoice &bc)
+{
+  Signal s = load_input(a, meta, 256, !a.has("--keep-sliding"));
+  if (a.has("--from") || a.has("--keep-sliding") || !meta.t_sliding_end || !bc.fr ||
+      meta.load.value_or("") != "radial")
+    return s;
+  const auto window = static_cast<std::size_t>(std::lround(s.rate / *bc.fr));
+  if (window < 2) return s;
+  const Settling st = settled_start(s.x, window);
+  const double sliding_end = *meta.t_sliding_end;
+  if (st.start > 0) {
+    meta.t_sliding_end = s.time(st.start) - 0.5 / s.rate;
+    s = load_input(a, meta, 256, true);
   }
-  if (sizes.size() < 2)
-    throw Error("diagnose: " + flag + " " + path + ": needs at least two lines " + form);
+  for (auto &[key, value] : s.meta)
+    if (key == "sliding phase skipped")
+      value = "t < " + format_number(sliding_end) + " s" +
+              (st.start == 0
+                   ? ""
+                   : "; settling transient skipped: t < " + format_number(s.t0) +
+                         " s (the level drifts by " + format_number(st.first_drift, 3) +
+                         " against a per-revolution scatter of " + format_number(st.scatter, 3) +
+                         " afterwards)");
+  return s;
 }
 
 }  // namespace
 
-int run_diagnose(const std::vector<std::string> &argv)
+namespace {
+
+const char *const kSizeHelp =
+    "The size and place of a bearing's race defect: the record is diagnosed as by diagnose\n"
+    "(its options), then the defect found (or --assume-defect) is sized and placed by the\n"
+    "methods the record calls for (an electrical level record: its pulses' area or, with a\n"
+    "bank, their shape; a vibration record: its passes), or by --size-method and\n"
+    "--place-method. --model FILE gives the model data made of the record's scene (a bank of\n"
+    "pulse templates, or a curve), whatever its kind: the header says which. A size is\n"
+    "printed only inside the validity its method's report measured, its interval labelled\n"
+    "with the coverage measured; elsewhere 'not determined' with the reason.\n"
+    "For our runs, bearing, speed, load and the end of the sliding phase come from run.json.\n"
+    "Example: ohmdem-post size V.txt --metadata run.json --model bank_inner_fixed_r20000_low.txt";
+
+int run_located(const std::vector<std::string> &argv, bool size_only)
 {
   Args a(
-      "diagnose", "[options] FILE...",
+      size_only ? "size" : "diagnose", "[options] FILE...",
+      size_only ? kSizeHelp :
       "Detection, then identification. Detection tests whether the record is unlike a\n"
       "healthy one: kurtosis, crest factor and the spectral kurtosis of the envelope band\n"
       "against the Gaussian law (records with a noise floor), and with --baseline the RMS,\n"
@@ -124,13 +161,19 @@ int run_diagnose(const std::vector<std::string> &argv)
       "estimated from the pulse widths of a level signal such as R(t), and from their area\n"
       "with a 95 % interval (--load, --pulse-height); an inner defect is placed on the ring\n"
       "from the shaft angle column under a radial load.\n"
-      "For our runs, bearing, speed and the end of the sliding phase come from run.json.");
+      "For our runs, bearing, speed and the end of the sliding phase come from run.json.\n"
+      "Size and place: the options below, or ohmdem-post size (the same, its answer alone).");
   add_input_options(a);
   add_bearing_options(a);
   add_shaft_angle_options(a);
   a.section("Diagnosis");
   a.option("--tolerance", "F", "relative search range of each fundamental (slip), in (0, 0.2)",
            "0.02");
+  a.option("--speed-refine", "F",
+           "the spectrum's shaft comb may move the stated speed (run.json, --rpm, --shaft-hz, "
+           "--omega, a tachometer) by at most this fraction, where the comb stands out, in "
+           "[0, --tolerance]; 0: the stated speed as it is",
+           "0.002");
   a.option("--harmonics", "N", "harmonics in each family's comb (1..50)", "5");
   a.option("--min-score", "S", "below this score the defect is 'none'", "0.3");
   a.option("--band", "F1 F2", "envelope band (Hz) instead of the kurtogram's", "", 2);
@@ -153,6 +196,12 @@ int run_diagnose(const std::vector<std::string> &argv)
   a.option("--baseline-rate", "HZ",
            "sampling rate of a --baseline without time stamps when it is not the record's: "
            "refused if it differs (resample it first with acquire)");
+  a.section("Size and place");
+  a.option("--model", "FILE[,FILE]",
+           "the model data of the record's scene, of any kind (the file's header says which): a "
+           "bank of pulse templates (studies/template_bank.py), a curve of the pulse area, of the "
+           "pulses' entry-to-exit width or of the pass energy (studies/sizing.py), their "
+           "model errors read from their headers");
   a.flag("--no-size", "skip the defect size estimate");
   a.option("--load", "MODE",
            "how the bearing is loaded (force, fixed or radial; default: run.json's load): "
@@ -168,12 +217,8 @@ int run_diagnose(const std::vector<std::string> &argv)
            "the --size-curve's own error, the relative standard deviation of its area (from "
            "simulations the curve does not use; sizing.py writes it in the curve's header): "
            "the size's interval includes it (default 0: the pass-to-pass scatter only)");
-  a.option("--size-method", "METHOD",
-           "area (default: the electrical pulses' area), double-impulse (an accelerometer "
-           "record: the delay between the ball's entry and exit events in the pit) or "
-           "accel-curve (an accelerometer record: the passes' energy on the model's "
-           "--size-curve, lines 'SIZE_DEG ENERGY_V2S', JSON pass_energy_v2s) or template (an "
-           "electrical record: its folded pulse's shape fitted with the --template-bank)");
+  a.option("--size-method", "METHOD", size_method_help());
+  a.option("--place-method", "METHOD", place_method_help());
   a.option("--template-bank", "FILE",
            "the model's pulse templates for --size-method template: folds of simulations of the "
            "same scene at known sizes (and angles from the load) through the record's chain "
@@ -202,9 +247,9 @@ int run_diagnose(const std::vector<std::string> &argv)
          "of run.json)");
   add_output_options(a);
   if (!a.parse(argv, std::cout)) return 0;
-  const RunMetadata meta = run_metadata(a);
-  const Signal s = load_input(a, meta, 256, !a.has("--keep-sliding"));
+  RunMetadata meta = run_metadata(a);
   const BearingChoice bc = bearing_choice(a, meta);
+  const Signal s = settled_input(a, meta, bc);
   if (!bc.geometry)
     throw Error(
         "diagnose: give the bearing (--bearing NAME of the catalog, or --nb --db --dp) or a "
@@ -220,6 +265,8 @@ int run_diagnose(const std::vector<std::string> &argv)
   o.geometry = *bc.geometry;
   o.fr = bc.fr ? *bc.fr : sa->speed.mean / (2 * kPi);
   o.tolerance = tolerance_option(a);
+  o.speed_refine = a.number_in("--speed-refine", 0.002, Range::closed(0, o.tolerance),
+                               "a fraction of the stated speed (at most --tolerance)");
   o.harmonics = harmonics_option(a, 5);
   o.min_score = a.number("--min-score", 0.3);
   o.kurtogram_levels = levels_option(a);
@@ -236,22 +283,40 @@ int run_diagnose(const std::vector<std::string> &argv)
     if (o.record_filter)
       o.record_delay_s = sos_dc_delay_s(o.record_filter->sos, o.record_filter->fs);
   }
-  // issue 26: the accelerometer's size (bearing/double_impulse.h), in place of the area's
-  const std::string size_method = a.has("--size-method") ? a.get("--size-method") : "area";
-  const bool double_impulse = size_method == "double-impulse";
-  const bool accel_curve = size_method == "accel-curve";
-  const bool by_template = size_method == "template";
-  if (!double_impulse && !accel_curve && !by_template && size_method != "area")
-    throw Error(
-        "diagnose: --size-method must be area, double-impulse, accel-curve or template, got '" +
-        size_method + "'");
-  if (by_template != a.has("--template-bank"))
-    throw Error(by_template ? "diagnose: --size-method template needs --template-bank FILE"
-                            : "diagnose: --template-bank needs --size-method template");
+  // the size and place methods, by name from their tables (bearing/locate/size_method.h)
+  if (a.has("--size-method")) o.size_method = &size_method(a.get("--size-method"));
+  if (a.has("--place-method")) o.place_method = &place_method(a.get("--place-method"));
   std::optional<BankFile> bank;
-  if (by_template) {
+  ModelFiles model;
+  if (a.has("--model")) {
+    for (const char *given : {"--template-bank", "--size-curve", "--width-curve",
+                              "--size-model-error", "--width-model-error"})
+      if (a.has(given))
+        throw Error(std::string("diagnose: --model and ") + given +
+                    " give the model data twice: give --model alone");
+    model = read_models(split_commas(a.get("--model")));
+  }
+  if (model.bank) bank = std::move(model.bank);
+  if (!model.curve_value.empty()) {
+    if ((model.curve_feature == "pass energy") != (record_kind(s.x) == RecordKind::vibration))
+      throw Error("diagnose: --model: a curve of the " + model.curve_feature + " is for " +
+                  (model.curve_feature == "pass energy" ? "a vibration" : "an electrical level") +
+                  " record; this record is a " + kind_name(record_kind(s.x)) + " record");
+    o.curve_size_deg = model.curve_size_deg;
+    o.curve_rel_area_s = model.curve_value;
+    o.curve_rel_error = model.curve_rel_error;
+  }
+  o.width_curve_size_deg = model.width_size_deg;
+  o.width_curve_s = model.width_s;
+  o.width_rel_error = model.width_rel_error;
+  if (bank) {
+    check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, "", o.load);
+    o.template_bank = &bank->bank;
+    o.fine_fold_period = bank->fine_fold_period;
+  }
+  if (a.has("--template-bank")) {
     bank = read_template_bank(a.get("--template-bank"));
-    check_bank(*bank, s, input_options(a).files.at(0), o.geometry.name, "", o.load);
+    check_bank(*bank, s, input_options(a).files.at(0), &*bc.geometry, "", o.load);
     o.template_bank = &bank->bank;
     o.fine_fold_period = bank->fine_fold_period;
   }
@@ -268,7 +333,8 @@ int run_diagnose(const std::vector<std::string> &argv)
     o.fine_fold_period = how == "fine";
   }
   if (a.has("--size-curve"))  // accel-curve: the passes' energy against size, else the area
-    read_curve(a.get("--size-curve"), "--size-curve", accel_curve ? "ENERGY_V2S" : "AREA_S",
+    read_curve(a.get("--size-curve"), "--size-curve",
+               record_kind(s.x) == RecordKind::vibration ? "ENERGY_V2S" : "AREA_S",
                o.curve_size_deg, o.curve_rel_area_s);
   if (a.has("--width-curve"))
     read_curve(a.get("--width-curve"), "--width-curve", "WIDTH_S", o.width_curve_size_deg,
@@ -369,37 +435,39 @@ int run_diagnose(const std::vector<std::string> &argv)
   const std::optional<Signal> other_channel = other_channel_input(a, meta, s);
   if (other_channel) o.other_channel = &*other_channel;
   const std::optional<Signal> across = across_input(a, meta, s);
-  if (across && !double_impulse && !accel_curve)
-    throw Error(
-        "diagnose: --across-column is read by the accelerometer size methods (--size-method "
-        "double-impulse or accel-curve)");
   if (across) o.across = &*across;
   const bool in_orders = sa && sa->speed.variation > o.tolerance;
-  if (accel_curve && (in_orders || a.has("--pulse-height") || a.has("--width-curve")))
-    throw Error(
-        "diagnose: --size-method accel-curve needs a record at constant speed and takes no "
-        "--pulse-height or --width-curve (they belong to the area method)");
-  if (double_impulse &&
-      (in_orders || a.has("--size-curve") || a.has("--pulse-height") || a.has("--width-curve")))
-    throw Error(
-        "diagnose: --size-method double-impulse needs a record at constant speed and "
-        "takes no --size-curve, --width-curve or --pulse-height (they belong to the area method)");
-  if (by_template && in_orders)
-    throw Error(
-        "diagnose: --size-method template needs a record at constant speed (the bank's folds "
-        "are at the scene's speed)");
+  std::string no_size;
+  if (o.estimate_size) {
+    // the method's own check of the settings, and what it needs of the record
+    const SizeMethod &sm = o.size_method ? *o.size_method : default_size_method(s, o);
+    sm.check(o);
+    if (in_orders && sm.needs().constant_speed) {
+      const std::string why = "the " + std::string(sm.name()) +
+                              " size method needs a record at constant speed (the speed varies "
+                              "by " +
+                              format_number(100 * sa->speed.variation, 3) + " % > --tolerance)";
+      if (o.size_method) throw Error("diagnose: " + why);
+      no_size = why;  // the method the record chose: said in the output, not refused
+      o.estimate_size = false;
+    }
+    if (bank) {
+      const std::string sized = o.assume_defect;
+      if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", nullptr, sized, "");
+    }
+  }
   if (in_orders && o.baseline)
     throw Error(
         "diagnose: --baseline is not supported when the speed varies (the record is "
         "diagnosed in the angle domain); give a record at constant speed");
   Diagnosis d = in_orders ? diagnose_in_orders(s, sa->theta, o) : diagnose(s, o);
-  if (double_impulse && o.estimate_size) d.located = locate_by_double_impulse(s, d, o);
-  if (accel_curve && o.estimate_size) d.located = locate_by_pass_energy(s, d, o);
-  if (by_template && o.estimate_size) {
-    const std::string sized = o.assume_defect.empty() ? d.defect : o.assume_defect;
-    if (sized == "inner" || sized == "outer") check_bank(*bank, s, "", "", sized, "");
-    d.located = locate_by_template(s, d, o);
+  if (!no_size.empty() && (d.defect == "inner" || d.defect == "outer")) {
+    d.located.size_status = d.located.position_status = LocateStatus::not_determined;
+    d.located.method = "not determined: " + no_size;
+    d.located.position_note = "not determined: " + no_size;
   }
+  if (bank && o.assume_defect.empty() && (d.defect == "inner" || d.defect == "outer"))
+    check_bank(*bank, s, "", nullptr, d.defect, "");
   if (a.has("--pulse-fold-out")) {
     refuse_input_as_output("--pulse-fold-out", a.get("--pulse-fold-out"),
                            input_files(a, "--pulse-fold-out"));
@@ -417,9 +485,16 @@ int run_diagnose(const std::vector<std::string> &argv)
   m.emplace_back("bearing", o.geometry.name + " (" + bc.geometry_source + ")");
   if (o.other)
     m.emplace_back("other bearing on the shaft", o.other->name + " (" + other_source + ")");
-  m.emplace_back(
-      "shaft frequency (Hz)",
-      format_number(o.fr, 8) + " (" + (in_orders ? "mean of " + sa->source : bc.fr_source) + ")");
+  const std::string speed_source = in_orders || !bc.fr ? "mean of " + sa->source : bc.fr_source;
+  m.emplace_back("shaft frequency stated (Hz)", format_number(o.fr, 8) + " (" + speed_source + ")");
+  m.emplace_back("shaft frequency used (Hz)",
+                 format_number(d.shaft_hz_used, 8) +
+                     (d.shaft_refined
+                          ? " (the stated one refined by the shaft comb by " +
+                                format_number(100 * (d.shaft_hz_used / o.fr - 1), 3) +
+                                " %, within the +-" + format_number(100 * o.speed_refine, 3) +
+                                " % --speed-refine allows)"
+                          : " (the stated one)"));
   // issue 25: the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
   // a percent or two), and the shaft and mains lines no family could claim
   m.emplace_back("shaft frequency from the spectrum (Hz)",
@@ -455,12 +530,24 @@ int run_diagnose(const std::vector<std::string> &argv)
                        " at alpha 0.01 over the bands searched)");
   Result r;
   r.meta = std::move(m);
-  const DiagnosisContext ctx{o, in_orders, meta.defect, numerical_floor(s, meta)};
-  r.json = diagnosis_json(d, ctx, r.meta);
-  r.table = diagnosis_row(d);
-  r.text = diagnosis_text(d, ctx);
+  const DiagnosisContext ctx{o, in_orders, meta.defect, numerical_floor(s, meta), speed_source};
+  r.json = size_only ? location_json(d, ctx, r.meta) : diagnosis_json(d, ctx, r.meta);
+  r.table = size_only ? location_row(d) : diagnosis_row(d);
+  r.text = size_only ? location_text(d, ctx) : diagnosis_text(d, ctx);
   out.write(r);
   return 0;
+}
+
+}  // namespace
+
+int run_diagnose(const std::vector<std::string> &argv)
+{
+  return run_located(argv, false);
+}
+
+int run_size(const std::vector<std::string> &argv)
+{
+  return run_located(argv, true);
 }
 
 }  // namespace ohmdem::post::cli

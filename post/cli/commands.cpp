@@ -31,6 +31,8 @@ const std::vector<Command> &commands()
        run_frequencies},
       {"diagnose", "most likely defect (inner/outer/ball/cage/none), score, evidence, size",
        run_diagnose},
+      {"size", "a race defect's size and place, each within its method's measured validity",
+       run_size},
       {"plot", "PNG figures with gnuplot: signal, spectrum with defect frequencies, indicators",
        run_plot},
       {"collect", "the indicators (and parameters, diagnosis) of many run folders in one table",

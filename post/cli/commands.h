@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The dispatch table of ohmdem-post: one entry per command (issue 6 adds `collect` here).
+// The dispatch table of ohmdem-post: one entry per command.
 #ifndef OHMDEM_POST_CLI_COMMANDS_H
 #define OHMDEM_POST_CLI_COMMANDS_H
 
@@ -28,6 +28,7 @@ int run_plot(const std::vector<std::string> &args);
 int run_collect(const std::vector<std::string> &args);
 int run_acquire(const std::vector<std::string> &args);
 int run_orders(const std::vector<std::string> &args);
+int run_size(const std::vector<std::string> &args);
 
 }  // namespace ohmdem::post::cli
 

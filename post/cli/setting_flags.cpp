@@ -40,6 +40,7 @@ const SettingFlags &setting_flags()
       // DiagnoseOptions (bearing/diagnose.h), BearingGeometry and the catalog (bearing/bearing.h)
       {"diagnose.harmonics", "--harmonics"},
       {"diagnose.tolerance", "--tolerance"},
+      {"diagnose.speed_refine", "--speed-refine"},
       {"diagnose.baseline", "--baseline"},
       {"diagnose.other_channel", "--other-channel"},
       {"diagnose.load", "--load"},
@@ -50,6 +51,10 @@ const SettingFlags &setting_flags()
       {"diagnose.width_rel_error", "--width-model-error"},
       {"diagnose.pulse_height", "--pulse-height"},
       {"diagnose.template_bank", "--template-bank"},
+      {"diagnose.size_method", "--size-method"},
+      {"diagnose.across", "--across-column"},
+      {"diagnose.place_method", "--place-method"},
+      {"diagnose.model", "--model"},
       {"geometry.nb", "--nb"},
       {"geometry.db", "--db"},
       {"geometry.dp", "--dp"},

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "cli/template_bank_input.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "bearing/bearing.h"
 #include "core/error.h"
 #include "core/pending_file.h"
 #include "dsp/butterworth.h"
@@ -51,6 +53,24 @@ double number(const std::string &path, const std::string &key, const std::string
 }
 
 }  // namespace
+
+bool same_geometry(const BearingGeometry &a, const BearingGeometry &b)
+{
+  // equal to the last digit a run.json or a catalog file prints (17 significant digits round
+  // trip a double; 1e-12 leaves the last bits of a sum such as (Dext + Dinn)/2)
+  const auto same = [](double x, double y) {
+    return std::fabs(x - y) <= 1e-12 * std::max(std::fabs(x), std::fabs(y));
+  };
+  return a.nb == b.nb && same(a.db, b.db) && same(a.dp, b.dp) &&
+         same(a.contact_angle_deg, b.contact_angle_deg);
+}
+
+std::string geometry_text(const BearingGeometry &g)
+{
+  return std::to_string(g.nb) + " balls of " + format_number(g.db * 1e3, 10) + " mm on " +
+         format_number(g.dp * 1e3, 10) + " mm, contact angle " +
+         format_number(g.contact_angle_deg, 10) + " deg";
+}
 
 BankFile read_template_bank(const std::string &path)
 {
@@ -148,7 +168,8 @@ std::optional<RecordFilter> record_filter(const std::string &record_path)
 }
 
 void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,
-                const std::string &bearing, const std::string &defect, const std::string &load)
+                const BearingGeometry *bearing, const std::string &defect,
+                const std::string &load)
 {
   const std::string head = "diagnose: --template-bank: the bank was made ";
   if (std::fabs(b.rate / s.rate - 1) > 1e-6)
@@ -163,8 +184,20 @@ void check_bank(const BankFile &b, const Signal &s, const std::string &record_pa
   if (!lp.empty() && !b.lowpass.empty() && lp != b.lowpass)
     throw Error(head + "through the anti-alias filter '" + b.lowpass + "', the record through '" +
                 lp + "': give a bank made through the record's own chain");
-  if (!bearing.empty() && b.bearing != bearing)
-    throw Error(head + "for the bearing " + b.bearing + ", the record is of " + bearing);
+  if (bearing) {
+    // by value, never by name: a run.json saying "custom" whose geometry is the catalog
+    // entry's is that bearing, and a catalog name with other values is not
+    BearingGeometry of_bank;
+    try {
+      of_bank = catalog_entry(default_catalog_dir(), b.bearing).geometry();
+    } catch (const Error &e) {
+      throw Error(head + "for the bearing " + b.bearing + ", whose geometry the catalog does not "
+                  "give (" + e.what() + ")");
+    }
+    if (!same_geometry(of_bank, *bearing))
+      throw Error(head + "for the bearing " + b.bearing + " (" + geometry_text(of_bank) +
+                  "), the record's is " + geometry_text(*bearing) + " (" + bearing->name + ")");
+  }
   if (!defect.empty() && b.defect != defect)
     throw Error(head + "for an " + b.defect + " defect, the one sized is " + defect +
                 " (identified, or --assume-defect)");

@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 
+#include "bearing/bearing.h"
 #include "bearing/pulse_template.h"
 #include "core/sampled_signal.h"
 #include "dsp/butterworth.h"
@@ -30,9 +31,16 @@ struct BankFile {
 BankFile read_template_bank(const std::string &path);
 
 // Refuses a bank of another rate, anti-alias filter (when `record_path`'s header states one),
-// bearing, defect or load; `defect` and `load` empty: not checked.
+// bearing, defect or load; `bearing` null, `defect` and `load` empty: not checked. The bearing
+// is matched by its geometry's values (the catalog entry the bank names against the record's),
+// never by its name.
 void check_bank(const BankFile &b, const Signal &s, const std::string &record_path,
-                const std::string &bearing, const std::string &defect, const std::string &load);
+                const BearingGeometry *bearing, const std::string &defect,
+                const std::string &load);
+
+// The same ball set: ball count, diameters and contact angle equal to the last digit printed.
+bool same_geometry(const BearingGeometry &a, const BearingGeometry &b);
+std::string geometry_text(const BearingGeometry &g);
 
 // The lowpass line of an acquired record's header ("Butterworth order 4, cut-off 8000 Hz
 // (-3 dB)"), without the input rate's sections; empty when the header has none.

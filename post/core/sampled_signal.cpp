@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "core/index_line_fit.h"
 
 namespace ohmdem::post {
 
@@ -42,22 +43,13 @@ Signal make_uniform(const std::vector<double> &t, std::vector<double> x, double 
   // the least-squares line through all stamps, both plus the printing resolution (a
   // difference of two rounded stamps is off by up to one rounding step). The step comes from
   // the least-squares slope, which averages the rounding out.
-  const double nd = static_cast<double>(n), ic = (nd - 1) / 2;
-  double tmean = 0;
-  for (double v : t) tmean += v;
-  tmean /= nd;
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = static_cast<double>(i) - ic;
-    sxy += u * (t[i] - tmean);
-    sxx += u * u;
-  }
-  const double dt_fit = sxy / sxx;
+  const IndexLineFit line = fit_line_to_index(t.data(), n);
+  const double dt_fit = line.slope;
   const double tol = 0.01 * dt_fit + t_resolution;
   std::size_t worst_step = 0, worst_line = 0;
   double step_dev = 0, line_dev = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double dl = std::fabs(t[i] - (tmean + (static_cast<double>(i) - ic) * dt_fit));
+    const double dl = std::fabs(t[i] - line.at(i));
     if (dl > line_dev) {
       line_dev = dl;
       worst_line = i;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/index_line_fit.h"
 #include "dsp/fft.h"
 
 namespace ohmdem::post {
@@ -42,24 +43,9 @@ const char *scaling_unit(Scaling s)
 void detrend(double *x, std::size_t n, Detrend d)
 {
   if (d == Detrend::None || n == 0) return;
-  const double dn = static_cast<double>(n);
-  double mean = 0;
-  for (std::size_t i = 0; i < n; ++i) mean += x[i];
-  mean /= dn;
-  if (d == Detrend::Mean || n < 2) {
-    for (std::size_t i = 0; i < n; ++i) x[i] -= mean;
-    return;
-  }
-  // least squares on centred abscissa j - (n-1)/2
-  const double c = (dn - 1) / 2;
-  double sxy = 0, sxx = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = static_cast<double>(i) - c;
-    sxy += u * (x[i] - mean);
-    sxx += u * u;
-  }
-  const double slope = sxy / sxx;
-  for (std::size_t i = 0; i < n; ++i) x[i] -= mean + slope * (static_cast<double>(i) - c);
+  IndexLineFit line = fit_line_to_index(x, n);
+  if (d == Detrend::Mean) line.slope = 0;
+  for (std::size_t i = 0; i < n; ++i) x[i] -= line.at(i);
 }
 
 Spectrum spectrum(const std::vector<double> &x, double rate, const SpectrumOptions &opt)

@@ -53,7 +53,7 @@ Table collected_table(const std::vector<CollectedRun> &results,
       row.emplace_back(d.score);
       row.emplace_back(d.defect == "none" ? std::numeric_limits<double>::quiet_NaN()
                                           : d.frequency_hz);
-      row.emplace_back(d.size.valid ? d.size.size_deg : std::numeric_limits<double>::quiet_NaN());
+      row.emplace_back(d.located.valid ? d.located.size_deg : std::numeric_limits<double>::quiet_NaN());
     }
     t.rows.push_back(std::move(row));
   }

@@ -112,25 +112,29 @@ Json pair_or_null(double lo, double hi)
   return a;
 }
 
-// Issue 26: the size with its interval (the pulse area's when it has one, else the width's
-// without an interval) and the position; what the record leaves open, said so.
+// The size with its interval and the position (bearing/locate/defect_location.h): one answer,
+// each part with its status and, when not determined, the reason.
 void located_json(Json &j, const Diagnosis &d)
 {
-  const LocatedDefect &l = d.located;
+  const DefectLocation &l = d.located;
   const bool area = l.valid;
-  j.set("size_deg", area ? Json(l.size_deg) : d.size.valid ? Json(d.size.size_deg) : Json());
+  j.set("size_deg", area ? Json(l.size_deg) : Json());
   j.set("size_interval_deg", area ? pair_or_null(l.size_lo_deg, l.size_hi_deg) : Json());
-  j.set("size_method", area ? l.method
-                       : d.size.valid
-                           ? "pulse width (" + d.size.method + "), no interval: " + l.method
-                           : l.method);
-  j.set("size_arc_m", area ? Json(l.arc_m) : d.size.valid ? Json(d.size.arc_m) : Json());
+  j.set("size_status", status_name(l.size_status));
+  j.set("size_method", l.method);
+  j.set("size_method_name", l.size_method.empty() ? Json() : Json(l.size_method));
+  j.set("size_interval_coverage",
+        l.interval_coverage.empty() ? Json() : Json(l.interval_coverage));
+  if (std::isfinite(l.size_reading_deg)) j.set("size_reading_deg", l.size_reading_deg);
+  j.set("size_arc_m", area ? Json(l.arc_m) : Json());
   j.set("pulse_height_rel", area && l.pulse_height > 0 ? Json(l.pulse_height) : Json());
   j.set("pulse_height_source", area ? Json(l.height_source) : Json());
   j.set("pulse_window_rel_area_s", number_or_null(l.window_rel_area_s));
   // the accel-curve size method: the feature its model curve is made of (absent otherwise)
   if (std::isfinite(l.pass_energy)) j.set("pass_energy_v2s", l.pass_energy);
   j.set("pulse_edge_width_s", number_or_null(l.edge_width_s));
+  j.set("position_status", status_name(l.position_status));
+  j.set("place_method_name", l.place_method.empty() ? Json() : Json(l.place_method));
   j.set("position_deg", number_or_null(l.position_deg));
   j.set("position_interval_deg", pair_or_null(l.position_lo_deg, l.position_hi_deg));
   j.set("position_reference", l.position_reference.empty() ? Json() : Json(l.position_reference));
@@ -148,6 +152,36 @@ std::string interval_text(double v, double lo, double hi, const std::string &uni
   return format_number(v, 4) + " " + unit + " [" +
          (std::isfinite(lo) ? format_number(lo, 4) : "-") + ", " +
          (std::isfinite(hi) ? format_number(hi, 4) : "no upper bound") + "]";
+}
+
+// The size, position and depth lines of the text (diagnose and size alike).
+template <class Line>
+void location_lines(const Diagnosis &d, bool chosen, Line &line)
+{
+  const DefectLocation &l = d.located;
+  if (l.valid)
+    line("size:          " +
+         (l.interval_coverage.empty()
+              ? format_number(l.size_deg, 4) + " deg (no interval)"
+              : interval_text(l.size_deg, l.size_lo_deg, l.size_hi_deg, "deg") + " (" +
+                    l.interval_coverage + ")") +
+         ", arc " + format_number(l.arc_m * 1e3, 4) + " mm, by " + l.size_method + " (" +
+         l.method + "; " +
+         (l.pulse_height > 0 ? "jump " + format_number(l.pulse_height, 4) + ", " : std::string()) +
+         l.height_source + ")");
+  else if (chosen && l.size_status != LocateStatus::not_applicable && !l.method.empty())
+    line("size:          " + std::string(l.method.rfind("not determined", 0) == 0 ? "" : "not determined: ") +
+         l.method + (l.size_method.empty() ? "" : " (" + l.size_method + ")"));
+  if (std::isfinite(d.located.position_deg))
+    line("position:      " +
+         interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
+                       "deg") +
+         " from the " + d.located.position_reference +
+         (d.located.position_note.empty() ? "" : ", " + d.located.position_note));
+  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
+    line("position:      " + d.located.position_note);
+  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
+    line("depth:         " + d.located.depth_note);
 }
 
 }  // namespace
@@ -175,14 +209,14 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
     o.set("families", families_json(d.other_families));
     j.set("other_bearing", o);
   }
-  Json sz = Json::object();
-  sz.set("valid", d.size.valid);
-  sz.set("method", d.size.method);
-  sz.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
-  sz.set("size_deg", d.size.valid ? Json(d.size.size_deg) : Json());
-  sz.set("arc_m", d.size.valid ? Json(d.size.arc_m) : Json());
-  sz.set("pulses", d.size.pulses);
-  j.set("size", sz);
+  // the pulse width measured (the area method checks its jump with it): a measurement, not a
+  // size (the size is size_deg, above)
+  Json pw = Json::object();
+  pw.set("valid", d.size.valid);
+  pw.set("method", d.size.method);
+  pw.set("pulse_width_s", d.size.valid ? Json(d.size.pulse_width_s) : Json());
+  pw.set("pulses", d.size.pulses);
+  j.set("pulse_width", pw);
   located_json(j, d);
   Json band = Json::array();
   band.push_back(d.band.lo);
@@ -192,7 +226,11 @@ Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaLis
   j.set("band_kurtosis_threshold", d.band_kurtosis_threshold);
   j.set("band_kurtosis_significant",
         std::isfinite(d.band_kurtosis) ? Json(d.band_kurtosis_significant()) : Json());
-  j.set("shaft_hz", c.options.fr);
+  // the speed the kinematics used, the stated one and where it comes from
+  j.set("shaft_hz", d.shaft_hz_used > 0 ? d.shaft_hz_used : c.options.fr);
+  j.set("shaft_hz_stated", c.options.fr);
+  j.set("shaft_hz_stated_source", c.speed_source);
+  j.set("shaft_hz_refined", d.shaft_refined);
   j.set("shaft_hz_from_spectrum", d.shaft_estimated ? Json(d.shaft_hz_estimated) : Json());
   j.set("shaft_hz_source", d.shaft_estimated ? Json(d.shaft_source) : Json());
   j.set("domain", c.in_orders ? "orders" : "time");
@@ -216,7 +254,7 @@ Table diagnosis_row(const Diagnosis &d)
                         d.score,
                         chosen ? d.frequency_hz : NAN,
                         chosen ? chosen->nominal_hz : NAN,
-                        d.size.valid ? d.size.size_deg : NAN,
+                        d.located.valid ? d.located.size_deg : NAN,
                         d.size.valid ? d.size.pulse_width_s : NAN};
   for (const auto &f : d.families) row.emplace_back(f.score);
   row.emplace_back(d.band_kurtosis);
@@ -235,7 +273,7 @@ Table diagnosis_row(const Diagnosis &d)
     row.emplace_back(test.applicable ? test.threshold : NAN);
   }
   // issue 26: the size's interval and the position, appended
-  const LocatedDefect &l = d.located;
+  const DefectLocation &l = d.located;
   t.columns.insert(t.columns.end(),
                    {"size_area_deg", "size_low_deg", "size_high_deg", "position_deg",
                     "position_low_deg", "position_high_deg", "position_reference"});
@@ -266,34 +304,7 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
     line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
          " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
          percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
-  if (d.size.valid)
-    line("size:          " + format_number(d.size.size_deg, 4) + " deg, arc " +
-         format_number(d.size.arc_m * 1e3, 4) + " mm (pulse width " +
-         format_number(d.size.pulse_width_s * 1e6, 4) + " us, " + d.size.method + ", " +
-         std::to_string(d.size.pulses) + (d.size.method == "pulses" ? " pulses" : " periods") +
-         ")");
-  else if (chosen)
-    line("size:          n/a (" + d.size.method + ")");
-  if (d.located.valid)
-    line("size (area):   " +
-         interval_text(d.located.size_deg, d.located.size_lo_deg, d.located.size_hi_deg, "deg") +
-         " at 95 %, arc " + format_number(d.located.arc_m * 1e3, 4) + " mm (" + d.located.method +
-         "; " +
-         (d.located.pulse_height > 0 ? "jump " + format_number(d.located.pulse_height, 4) + ", "
-                                     : std::string()) +
-         d.located.height_source + ")");
-  else if (chosen && !d.located.method.empty() && d.located.method != "not applicable")
-    line("size (area):   n/a (" + d.located.method + ")");
-  if (std::isfinite(d.located.position_deg))
-    line("position:      " +
-         interval_text(d.located.position_deg, d.located.position_lo_deg, d.located.position_hi_deg,
-                       "deg") +
-         " from the " + d.located.position_reference +
-         (d.located.position_note.empty() ? "" : ", " + d.located.position_note));
-  else if ((chosen || d.located.valid) && !d.located.position_note.empty())
-    line("position:      " + d.located.position_note);
-  if ((chosen || d.located.valid) && !d.located.depth_note.empty())
-    line("depth:         " + d.located.depth_note);
+  location_lines(d, chosen != nullptr, line);
   line("# detection: each test at false-alarm probability " + format_number(c.options.false_alarm) +
        ", at most " + format_number(d.detection.false_alarm_bound) + " for the " +
        std::to_string(d.detection.tests_applied) + " applied; " + d.detection.gaussian_note);
@@ -339,6 +350,55 @@ std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c)
           {e.label, e.spectrum, e.expected_hz, e.frequency_hz, e.amplitude, e.prominence_db});
     b.push_back({"", et});
   }
+  return b;
+}
+
+Json location_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  Json j = Json::object();
+  j.set("defect", d.defect);
+  j.set("sized", c.options.assume_defect.empty() ? d.defect : c.options.assume_defect);
+  j.set("frequency_hz", chosen ? Json(d.frequency_hz) : Json());
+  j.set("fundamental", chosen ? Json(d.label) : Json());
+  located_json(j, d);
+  j.set("shaft_hz", c.options.fr);
+  j.set("domain", c.in_orders ? "orders" : "time");
+  j.set("bearing", c.options.geometry.name);
+  if (c.run_defect) j.set("run_defect", *c.run_defect);
+  j.set("meta", meta_json(meta));
+  return j;
+}
+
+Table location_row(const Diagnosis &d)
+{
+  const DefectLocation &l = d.located;
+  Table t;
+  t.columns = {"defect",       "size_status",      "size_deg",          "size_low_deg",
+               "size_high_deg", "size_method_name", "position_status",   "position_deg",
+               "position_low_deg", "position_high_deg", "position_reference"};
+  t.rows.push_back({d.defect, status_name(l.size_status), l.valid ? l.size_deg : NAN,
+                    l.size_lo_deg, l.size_hi_deg, l.size_method, status_name(l.position_status),
+                    l.position_deg, l.position_lo_deg, l.position_hi_deg, l.position_reference});
+  return t;
+}
+
+std::vector<Block> location_text(const Diagnosis &d, const DiagnosisContext &c)
+{
+  const FamilyScore *chosen = chosen_family(d);
+  std::vector<Block> b;
+  auto line = [&b](const std::string &text) { b.push_back({text, std::nullopt}); };
+  line("defect:        " + d.defect +
+       (c.options.assume_defect.empty() || c.options.assume_defect == d.defect
+            ? std::string()
+            : " (sized as " + c.options.assume_defect + ", the assumed defect)"));
+  if (chosen)
+    line("frequency:     " + format_number(d.frequency_hz, 7) + " Hz = " + d.label +
+         " (kinematic " + format_number(chosen->nominal_hz, 7) + " Hz, " +
+         percent_off(d.frequency_hz, chosen->nominal_hz) + ")");
+  location_lines(d, chosen != nullptr || !c.options.assume_defect.empty(), line);
+  if (d.located.size_status == LocateStatus::not_applicable && !chosen)
+    line("size:          not applicable (no race defect identified)");
   return b;
 }
 

@@ -23,6 +23,7 @@ struct DiagnosisContext {
   // A simulated signal whose spread is at the numerical floor (cmd_diagnose): said in the text,
   // since its statistics (kurtosis, p-values) then describe numerical blips, not a defect.
   std::string numerical_floor = "";
+  std::string speed_source = "";  // where the stated speed (options.fr) comes from
 };
 
 Json diagnosis_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta);
@@ -32,6 +33,12 @@ Table diagnosis_row(const Diagnosis &d);
 
 // For reading: the verdict, then the detection tests, the families and the evidence.
 std::vector<Block> diagnosis_text(const Diagnosis &d, const DiagnosisContext &c);
+
+// The size and place alone (ohmdem-post size): the defect sized, its frequency, then the same
+// keys and lines as the diagnosis gives them.
+Json location_json(const Diagnosis &d, const DiagnosisContext &c, const MetaList &meta);
+Table location_row(const Diagnosis &d);
+std::vector<Block> location_text(const Diagnosis &d, const DiagnosisContext &c);
 
 }  // namespace ohmdem::post
 

@@ -13,7 +13,7 @@
 
 namespace ohmdem::post {
 
-// Whether the best band's spectral kurtosis is more than a Gaussian record reaches (issue 17),
+// Whether the best band's spectral kurtosis is more than a Gaussian record reaches,
 // with the threshold and what it rests on.
 std::string kurtogram_significance(const Kurtogram &kg);
 

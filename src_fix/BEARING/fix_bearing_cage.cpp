@@ -38,7 +38,6 @@ constexpr int kVectorSize = 8;
 // are this fix's per-atom output.
 enum Col { POCKET, FORCE, FX, FY, NCOL };
 constexpr int kPeratomCols = 2;  // pocket index, pocket force on the ball (signed, N)
-constexpr int kRestartSize = 8;
 }  // namespace
 
 FixBearingCage::FixBearingCage(LAMMPS *lmp, int narg, char **arg)
@@ -345,31 +344,27 @@ double FixBearingCage::compute_vector(int n)
   }
 }
 
+template <class Visit> void FixBearingCage::restart_fields(Visit &record)
+{
+  record(angle_, omega_, npockets_, torque_, sum_fn_, max_fn_, ncontacts_, ball_orbit_);
+  double marker = 3.0;
+  if (three_d_) record(cz_, vz_, axial_, marker);
+}
+
 void FixBearingCage::write_restart(FILE *fp)
 {
-  if (three_d_) {
-    write_restart_3d(fp);
-    return;
-  }
-  const double list[kRestartSize] = {
-      angle_,  omega_,  static_cast<double>(npockets_),  torque_,
-      sum_fn_, max_fn_, static_cast<double>(ncontacts_), ball_orbit_};
-  ohmdem::write_global_restart(comm->me, fp, list);
+  ohmdem::RestartWriter record;
+  restart_fields(record);
+  record.write(comm->me, fp);
 }
 
 void FixBearingCage::restart(char *buf)
 {
-  const double *list = reinterpret_cast<const double *>(buf);
-  if (static_cast<int>(list[2]) != npockets_)
+  ohmdem::RestartReader record(buf);
+  constexpr int kPocketsSlot = 2;  // restart_fields' third value, checked before any is read
+  if (static_cast<int>(record.at(kPocketsSlot)) != npockets_)
     error->fix_error(FLERR, this, "restart data has a different number of pockets");
-  if (three_d_) restart_3d(list);
-  angle_ = list[0];
-  omega_ = list[1];
-  torque_ = list[3];
-  sum_fn_ = list[4];
-  max_fn_ = list[5];
-  ncontacts_ = static_cast<int>(list[6]);
-  ball_orbit_ = list[7];
+  restart_fields(record);
   restored_ = true;
 }
 

@@ -96,8 +96,9 @@ class FixBearingCage : public FixBearingBody {
   void post_force_3d();
   void axial_half_kick_3d(double dt);
   void reapply_axial_forces_3d();
-  void write_restart_3d(FILE *fp);
-  void restart_3d(const double *list);
+  // The members a restart record holds, in file order, for a RestartWriter or RestartReader
+  // (support/global_restart.h); model 3d adds its axial state and the marker 3.
+  template <class Visit> void restart_fields(Visit &record);
   bool three_d_ = false;
   double cz_ = 0, vz_ = 0;  // the cage's axial position and velocity (m, m/s)
   double axial_ = 0;        // the balls' axial force on it (N)

@@ -16,7 +16,6 @@
 #include "comm.h"
 #include "contact/cage_contact_3d.h"
 #include "fix_property_atom.h"
-#include "support/global_restart.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -24,7 +23,6 @@ using namespace LAMMPS_NS;
 namespace {
 // The planar cage's per-ball state (pocket, pocket force, its x and y), then its z.
 enum Col3 { POCKET, FORCE, FX, FY, FZ };
-constexpr int kRestartSize3d = 12;
 }  // namespace
 
 void FixBearingCage::post_force_3d()
@@ -104,28 +102,4 @@ void FixBearingCage::reapply_axial_forces_3d()
   double **f = atom->f, **state = state_->array_atom;
   for (int i = 0; i < atom->nlocal; ++i)
     if (atom->mask[i] & groupbit) f[i][2] += state[i][FZ];
-}
-
-void FixBearingCage::write_restart_3d(FILE *fp)
-{
-  const double list[kRestartSize3d] = {angle_,
-                                       omega_,
-                                       static_cast<double>(npockets_),
-                                       torque_,
-                                       sum_fn_,
-                                       max_fn_,
-                                       static_cast<double>(ncontacts_),
-                                       ball_orbit_,
-                                       cz_,
-                                       vz_,
-                                       axial_,
-                                       3.0};
-  ohmdem::write_global_restart(comm->me, fp, list);
-}
-
-void FixBearingCage::restart_3d(const double *list)
-{
-  cz_ = list[8];
-  vz_ = list[9];
-  axial_ = list[10];
 }

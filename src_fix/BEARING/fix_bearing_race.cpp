@@ -38,7 +38,28 @@ using namespace FixConst;
 using ohmdem::RaceContactModel;
 
 namespace {
-constexpr int kVectorSize = 15;
+// The global vector (doc/fix_bearing_race.md, "Output info"): compute_vector(n) is f_ID[n+1].
+namespace out {
+enum Vector {
+  SUM_FN,        // total normal force of the balls on the ring
+  TORQUE,        // their torque about z
+  INTERFERENCE,  // u
+  CENTRE_X,
+  CENTRE_Y,
+  LOADED,        // contacts carrying a load
+  MEAN_FN,
+  MAX_FN,
+  ANGLE,
+  OMEGA,
+  MASKED,  // contacts in a defect zone
+  VEL_ALONG,
+  VEL_ACROSS,
+  ACC_ALONG,
+  ACC_ACROSS,
+  PLANAR_VECTOR,               // the values of model 2d; model 3d adds compute_vector_3d's
+  VECTOR_3D = PLANAR_VECTOR + 8
+};
+}  // namespace out
 // Per-atom state, kept in a fix property/atom so that it migrates with the atom and goes to
 // restart files. The first kPeratomCols columns are this fix's per-atom output, the contact
 // that the electrical computes read through RaceContactView; the rest is private state.
@@ -57,11 +78,10 @@ enum Col {
   NCOL
 };
 constexpr int kPeratomCols = View::kColumns;  // fn, delta, ft, contact point x, y, masked
-constexpr int kRestartSize = 17;
 }  // namespace
 
 FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
-    : FixBearingBody(lmp, narg, arg, kVectorSize, kPeratomCols, "bearingRace_"),
+    : FixBearingBody(lmp, narg, arg, out::PLANAR_VECTOR, kPeratomCols, "bearingRace_"),
       settings_(ohmdem::parse_race_settings(error, narg, arg, atom->ntypes)),
       variables_(lmp, this, settings_.omega_var, settings_.force_var),
       load_force_(settings_.load_force),
@@ -72,12 +92,16 @@ FixBearingRace::FixBearingRace(LAMMPS *lmp, int narg, char **arg)
   cy_ = axis_y_ = settings_.centre_y;
   if (settings_.load == Load::Fixed) u_ = settings_.interference;
   // sums over the balls: total normal force, torque, contacts, masked contacts
-  set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0});
+  std::vector<int> extensive(out::PLANAR_VECTOR, 0);
+  for (int n : {out::SUM_FN, out::TORQUE, out::LOADED, out::MASKED}) extensive[n] = 1;
+  set_extensive(extensive);
   if (three_d()) {
     // model 3d: 8 more values (the balls' axial force and moment are sums), 2 more columns.
-    size_vector = kVectorSize + 8;
+    size_vector = out::VECTOR_3D;
     size_peratom_cols = View::kColumns3d;
-    set_extensive({1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1});
+    extensive.resize(out::VECTOR_3D, 0);
+    extensive[out::PLANAR_VECTOR + 6] = extensive[out::PLANAR_VECTOR + 7] = 1;
+    set_extensive(extensive);
     if (settings_.model3d.preload_set) cz_ = settings_.model3d.preload;
   }
 }
@@ -405,103 +429,80 @@ bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, doubl
 
 double FixBearingRace::compute_vector(int n)
 {
-  if (n >= kVectorSize) return compute_vector_3d(n);
-  switch (n) {
-    case 0:
-      return sum_fn_;
-    case 1:
-      return torque_;
-    case 2:
-      return u_;
-    case 3:
-      return cx_;
-    case 4:
-      return cy_;
-    case 5:
-      return loaded_;
-    case 6:
-      return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
-    case 7:
-      return max_fn_;
-    case 8:
-      return angle_;
-    case 9:
-      return target_omega(time_);
-    case 10:
-      return nmasked_;
-    default:
-      break;
-  }
+  if (n >= out::PLANAR_VECTOR) return compute_vector_3d(n - out::PLANAR_VECTOR);
   // The vibration channel: centre velocity and acceleration along the load direction and
   // across it (the direction turned +90 degrees about z).
-  double ax, ay;
-  ring_acceleration(ax, ay);
   const double ux = settings_.dir_ux, uy = settings_.dir_uy;
-  switch (n) {
-    case 11:
+  double ax = 0.0, ay = 0.0;
+  if (n == out::ACC_ALONG || n == out::ACC_ACROSS) ring_acceleration(ax, ay);
+  switch (static_cast<out::Vector>(n)) {
+    case out::SUM_FN:
+      return sum_fn_;
+    case out::TORQUE:
+      return torque_;
+    case out::INTERFERENCE:
+      return u_;
+    case out::CENTRE_X:
+      return cx_;
+    case out::CENTRE_Y:
+      return cy_;
+    case out::LOADED:
+      return loaded_;
+    case out::MEAN_FN:
+      return ncontacts_ ? sum_fn_ / ncontacts_ : 0.0;
+    case out::MAX_FN:
+      return max_fn_;
+    case out::ANGLE:
+      return angle_;
+    case out::OMEGA:
+      return target_omega(time_);
+    case out::MASKED:
+      return nmasked_;
+    case out::VEL_ALONG:
       return vcx_ * ux + vcy_ * uy;
-    case 12:
+    case out::VEL_ACROSS:
       return -vcx_ * uy + vcy_ * ux;
-    case 13:
+    case out::ACC_ALONG:
       return ax * ux + ay * uy;
-    case 14:
+    case out::ACC_ACROSS:
       return -ax * uy + ay * ux;
     default:
       return 0.0;
   }
 }
 
+template <class Visit> void FixBearingRace::restart_fields(Visit &record, double &side)
+{
+  record(time_, angle_, u_, u_dot_, cx_, cy_, vcx_, vcy_, frozen_, side, sum_fn_, torque_, fx_,
+         fy_, max_fn_, ncontacts_, nmasked_);
+  if (three_d())
+    record(cz_, vcz_, tilt_[0], tilt_[1], tilt_rate_[0], tilt_rate_[1], fz_, moment_[0],
+           moment_[1], radial_sum_, alpha_mean_, alpha_max_);
+}
+
 void FixBearingRace::write_restart(FILE *fp)
 {
-  if (three_d()) {
-    write_restart_3d(fp);
-    return;
-  }
-  const double list[kRestartSize] = {time_,
-                                     angle_,
-                                     u_,
-                                     u_dot_,
-                                     cx_,
-                                     cy_,
-                                     vcx_,
-                                     vcy_,
-                                     frozen_ ? 1.0 : 0.0,
-                                     static_cast<double>(settings_.inner),
-                                     sum_fn_,
-                                     torque_,
-                                     fx_,
-                                     fy_,
-                                     max_fn_,
-                                     static_cast<double>(ncontacts_),
-                                     static_cast<double>(nmasked_)};
-  ohmdem::write_global_restart(comm->me, fp, list);
+  ohmdem::RestartWriter record;
+  double side = side_code();
+  restart_fields(record, side);
+  record.write(comm->me, fp);
 }
 
 void FixBearingRace::restart(char *buf)
 {
-  const double *list = reinterpret_cast<const double *>(buf);
-  if (three_d()) {
-    restart_3d(list);
-    return;
-  }
-  if (static_cast<bool>(list[9]) != settings_.inner)
+  ohmdem::RestartReader record(buf);
+  constexpr int kSideSlot = 9;  // restart_fields' tenth value, read before any other
+  const double side = record.at(kSideSlot);
+  if ((side > 1.5) != three_d())
+    error->fix_error(FLERR, this,
+                     three_d() ? "restart data is of model 2d: a run continues with the model "
+                                 "it was written with"
+                               : "restart data is of model 3d: a run continues with the model "
+                                 "it was written with");
+  if ((side == 1.0 || side == 3.0) != settings_.inner)
     error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
-  time_ = list[0];
-  angle_ = list[1];
-  u_ = list[2];
-  u_dot_ = list[3];
-  cx_ = list[4];
-  cy_ = list[5];
-  vcx_ = list[6];
-  vcy_ = list[7];
-  frozen_ = list[8] != 0.0;
-  sum_fn_ = list[10];
-  torque_ = list[11];
-  fx_ = list[12];
-  fy_ = list[13];
-  max_fn_ = list[14];
-  ncontacts_ = static_cast<int>(list[15]);
-  nmasked_ = static_cast<int>(list[16]);
+  double read_side = 0.0;
+  restart_fields(record, read_side);
   restored_ = true;
 }
 

@@ -176,8 +176,10 @@ class FixBearingRace : public FixBearingBody {
   void initial_integrate_3d();
   void ring_half_kick_3d(double dt);
   double compute_vector_3d(int n);
-  void write_restart_3d(FILE *fp);
-  void restart_3d(const double *list);
+  // The members a restart record holds, in file order, for a RestartWriter or RestartReader
+  // (support/global_restart.h); `side` is the record's race side and model (side_code()).
+  template <class Visit> void restart_fields(Visit &record, double &side);
+  double side_code() const { return (three_d() ? 2.0 : 0.0) + (settings_.inner ? 1.0 : 0.0); }
   bool reapply_restored_forces_3d();
   // The defects' recess under ball i's contact at contact angle alpha (rad), as defect_recess.
   double defect_recess_3d(int i, double alpha, bool &in_zone) const;

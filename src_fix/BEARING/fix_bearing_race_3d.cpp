@@ -5,8 +5,8 @@
    space, the ring a rigid body whose centre moves in space and whose axis
    tilts under load radial (force along direction, axial, moment, or an axial
    position held by preload). The contact physics is contact/race_contact_3d.h;
-   this file integrates the ring, reduces the reactions in tag order and
-   handles restart, as fix_bearing_race.cpp does for the planar model.
+   this file integrates the ring and reduces the reactions in tag order;
+   restart_fields (fix_bearing_race.cpp) holds both models' restart record.
    doc/fix_bearing_race.md ("Model 3d"), doc/methods/bearing_3d.md.
 ------------------------------------------------------------------------- */
 
@@ -29,7 +29,6 @@
 #include "error.h"
 #include "fix_property_atom.h"
 #include "modify.h"
-#include "support/global_restart.h"
 #include "support/material_table.h"
 #include "update.h"
 
@@ -69,8 +68,6 @@ enum Col3 {
 // (3), |alpha| (deg), Q cos(alpha), |alpha| plus the ellipse's half-width across the groove
 // (deg), and 1 if it touches past the groove's circle.
 enum Rec { RFX, RFY, RFZ, RFN, RTX, RTY, RTZ, RALPHA, RRADIAL, REDGE, ROFF, NREC };
-constexpr int kRestartSize3d = 29;
-constexpr int kPlanarVector = 15;  // compute_vector's values of model 2d
 }  // namespace
 
 int FixBearingRace::state_columns_3d()
@@ -332,7 +329,7 @@ void FixBearingRace::ring_half_kick_3d(double dt)
 double FixBearingRace::compute_vector_3d(int n)
 {
   const double ux = settings_.dir_ux, uy = settings_.dir_uy;
-  switch (n - kPlanarVector) {
+  switch (n) {  // after the planar values (doc/fix_bearing_race.md: 16 to 23)
     case 0:
       return alpha_mean_;
     case 1:
@@ -413,76 +410,3 @@ bool FixBearingRace::reapply_restored_forces_3d()
   return true;
 }
 
-// The planar record (its inner flag written as 2 + inner: model 3d), then the 3D state.
-void FixBearingRace::write_restart_3d(FILE *fp)
-{
-  const double list[kRestartSize3d] = {time_,
-                                       angle_,
-                                       u_,
-                                       u_dot_,
-                                       cx_,
-                                       cy_,
-                                       vcx_,
-                                       vcy_,
-                                       frozen_ ? 1.0 : 0.0,
-                                       2.0 + static_cast<double>(settings_.inner),
-                                       sum_fn_,
-                                       torque_,
-                                       fx_,
-                                       fy_,
-                                       max_fn_,
-                                       static_cast<double>(ncontacts_),
-                                       static_cast<double>(nmasked_),
-                                       cz_,
-                                       vcz_,
-                                       tilt_[0],
-                                       tilt_[1],
-                                       tilt_rate_[0],
-                                       tilt_rate_[1],
-                                       fz_,
-                                       moment_[0],
-                                       moment_[1],
-                                       radial_sum_,
-                                       alpha_mean_,
-                                       alpha_max_};
-  ohmdem::write_global_restart(comm->me, fp, list);
-}
-
-void FixBearingRace::restart_3d(const double *list)
-{
-  if (list[9] < 1.5)
-    error->fix_error(FLERR, this,
-                     "restart data is of model 2d: a run continues with the model it was written "
-                     "with");
-  if ((list[9] > 2.5) != settings_.inner)
-    error->fix_error(FLERR, this, "restart data is for the other race side (inner/outer)");
-  time_ = list[0];
-  angle_ = list[1];
-  u_ = list[2];
-  u_dot_ = list[3];
-  cx_ = list[4];
-  cy_ = list[5];
-  vcx_ = list[6];
-  vcy_ = list[7];
-  frozen_ = list[8] != 0.0;
-  sum_fn_ = list[10];
-  torque_ = list[11];
-  fx_ = list[12];
-  fy_ = list[13];
-  max_fn_ = list[14];
-  ncontacts_ = static_cast<int>(list[15]);
-  nmasked_ = static_cast<int>(list[16]);
-  cz_ = list[17];
-  vcz_ = list[18];
-  tilt_[0] = list[19];
-  tilt_[1] = list[20];
-  tilt_rate_[0] = list[21];
-  tilt_rate_[1] = list[22];
-  fz_ = list[23];
-  moment_[0] = list[24];
-  moment_[1] = list[25];
-  radial_sum_ = list[26];
-  alpha_mean_ = list[27];
-  alpha_max_ = list[28];
-  restored_ = true;
-}

@@ -30,7 +30,6 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 namespace {
-constexpr int kRestartSize = 4;  // time reference, its step, its dt; the time written
 
 // "c_ID[3]" -> {"ID", 3}; "c_ID" -> {"ID", 0}; index < 0 when the brackets are malformed.
 std::pair<std::string, int> split_reference(const std::string &s)
@@ -358,19 +357,16 @@ void FixSignalTable::write_restart(FILE *fp)
       error->one(FLERR, ("fix signal/table: " + std::string(e.what())).c_str());
     }
   }
-  const double list[kRestartSize] = {time_, static_cast<double>(time_step_), dt_ref_,
-                                     simulated_time()};
-  ohmdem::write_global_restart(comm->me, fp, list);
+  ohmdem::RestartWriter record;
+  record(time_, time_step_, dt_ref_, simulated_time());
+  record.write(comm->me, fp);
 }
 
 void FixSignalTable::restart(char *buf)
 {
-  const double *list = reinterpret_cast<const double *>(buf);
   // The time reference and its dt: the steps after the restart point may run with another.
-  time_ = list[0];
-  time_step_ = static_cast<bigint>(list[1]);
-  dt_ref_ = list[2];
-  restored_time_ = list[3];
+  ohmdem::RestartReader record(buf);
+  record(time_, time_step_, dt_ref_, restored_time_);
   restored_ = true;
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Argument parsing for the ohmdem styles: every error names the style, the keyword and the
 // expected form (LIGGGHTS' force->numeric() only says "Expected floating point parameter").
-#ifndef OHMDEM_STYLE_ARGS_H
-#define OHMDEM_STYLE_ARGS_H
+#ifndef OHMDEM_SUPPORT_ARGS_H
+#define OHMDEM_SUPPORT_ARGS_H
 
 #include <cerrno>
 #include <cmath>

@@ -430,6 +430,11 @@ def test_mpi_restart(r):
     check(len(rows_b) > 1 and tail == rows_b[1:],
           f"model 3d restart: the second half ({len(rows_b) - 1} rows) is identical to the single "
           f"run")
+    # A model's restart record is its own: the planar deck resumed from it stops by name
+    # (even with the run check told that the change is meant).
+    expect_error(r, "restart_other_model", r"restart data is of model 3d", model="2d",
+                 start="restart", restart_file=os.path.join(first, "half.restart"),
+                 restart_changes="yes", tend=0.003)
 
 
 if __name__ == "__main__":

@@ -177,8 +177,8 @@ def test_diagnose(exe, src, wd, post):
         if res.returncode != 0:
             sys.exit(f"FAIL: ohmdem-post diagnose {path}: {res.stderr}")
         j = json.loads(res.stdout)
-        size = j.get("size") or {}
-        what = f", size estimate {size['size_deg']:.2f} deg" if size.get("valid") else ""
+        size = j.get("size_deg")
+        what = f", size estimate {size:.2f} deg" if size is not None else ""
         check(j["defect"] == expected,
               f"{defect} run: diagnosed '{j['defect']}' (score {j['score']:.2f}, "
               f"{j['frequency_hz']} Hz{what}); expected '{expected}'")

@@ -37,7 +37,7 @@ LIGGGHTS_PREFIXES = ("fix_", "compute_", "pair_", "style_", "contact_models", "g
 KERNEL_ARROWS = {
     "common": {"common"},
     "contact": {"contact", "common"},
-    "network": {"network"},
+    "network": {"network", "common"},
     "conduction": {"conduction", "network", "contact", "common"},
     "writers": {"writers", "common"},
     "catalog": {"catalog"},

@@ -10,8 +10,8 @@
 // cannot be closer than touching, so their centres are at least c_i + c_j apart along the
 // surface: theta >= theta_min = (c_i + c_j) / r (capped at pi). This bound is applied, which
 // keeps C_ij finite. Derivation, limits and tests: doc/methods/conduction_network.md.
-#ifndef OHMDEM_CONDUCTANCE_MODELS_H
-#define OHMDEM_CONDUCTANCE_MODELS_H
+#ifndef OHMDEM_CONDUCTANCE_LAWS_H
+#define OHMDEM_CONDUCTANCE_LAWS_H
 
 #include <cstddef>
 #include <functional>

@@ -2,6 +2,8 @@
 // SPICE and legacy-VTK writers; see network_export.h for the conventions.
 #include "network/network_export.h"
 
+#include "common/constants.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -157,7 +159,7 @@ void write_spice_ac_netlist(std::ostream &os, std::vector<ComplexEdge> edges, No
   auto node = [&](NodeKey k) {
     return k == low ? std::string("0") : k == high ? "ehigh" : name(k);
   };
-  const double f = omega / (2.0 * 3.14159265358979323846);
+  const double f = omega / (2.0 * kPi);
   os << one_line(options.title) << '\n';
   os << "* " << edges.size() << " admittances G + j omega C at f = " << num(f)
      << " Hz; high electrode = ehigh, low electrode = 0\n";

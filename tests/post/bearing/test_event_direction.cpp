@@ -134,7 +134,7 @@ TEST(EventDirection, PlacesAnOuterDefectUnderARadialLoadOnly)
   outer.race = true;
   DiagnoseOptions o;
   o.load = "radial";
-  LocatedDefect l;
+  DefectLocation l;
   place_outer_by_event_direction(s, outer, o, l);  // no second axis: left as it is
   EXPECT_TRUE(std::isnan(l.position_deg));
   EXPECT_TRUE(l.position_reference.empty());
@@ -150,14 +150,14 @@ TEST(EventDirection, PlacesAnOuterDefectUnderARadialLoadOnly)
             std::string::npos)
       << l.position_note;
   // an inner defect is the shaft angle's (pass_energy.h): left as it is
-  LocatedDefect inner_l;
+  DefectLocation inner_l;
   RaceToSize inner = outer;
   inner.defect = "inner";
   place_outer_by_event_direction(s, inner, o, inner_l);
   EXPECT_TRUE(std::isnan(inner_l.position_deg));
   // no load direction under a balanced load
   o.load = "fixed";
-  LocatedDefect fixed_l;
+  DefectLocation fixed_l;
   place_outer_by_event_direction(s, outer, o, fixed_l);
   EXPECT_TRUE(std::isnan(fixed_l.position_deg));
   EXPECT_NE(fixed_l.position_note.find("only a radial load has"), std::string::npos);

@@ -186,7 +186,7 @@ TEST(PassEnergy, InnerDefectPlacedFromTheLoadZoneWithTheShaftAngle)
       std::vector<double> theta;
       const DiagnoseOptions o = inner_options(s, rate, theta);
       const RaceToSize r = inner_race();
-      LocatedDefect l;
+      DefectLocation l;
       place_inner_by_pass_energy(s, r, o, l);
       ASSERT_TRUE(std::isfinite(l.position_deg)) << l.position_note;
       EXPECT_EQ(l.position_reference, "shaft zero");
@@ -215,7 +215,7 @@ TEST(PassEnergy, InnerEventsDelayedByTheFiltersGroupDelayWhereTheirEnergyLies)
   std::vector<double> theta;
   DiagnoseOptions o = inner_options(s, rate, theta);
   const RaceToSize r = inner_race();
-  LocatedDefect at_dc, at_events;
+  DefectLocation at_dc, at_events;
   place_inner_by_pass_energy(s, r, o, at_dc);
   o.record_filter = RecordFilter{butterworth_lowpass(4, 0.4 * rate, 1e6), 1e6};
   place_inner_by_pass_energy(s, r, o, at_events);
@@ -238,7 +238,7 @@ TEST(PassEnergy, InnerDefectNotPlacedSaysWhy)
   r.f = kF;
   r.race = true;
   auto note = [&]() {
-    LocatedDefect l;
+    DefectLocation l;
     place_inner_by_pass_energy(s, r, o, l);
     EXPECT_TRUE(std::isnan(l.position_deg));
     return l.position_note;
@@ -252,13 +252,13 @@ TEST(PassEnergy, InnerDefectNotPlacedSaysWhy)
   Signal shorter = s;
   shorter.x.resize(600);  // 6 passes
   {
-    LocatedDefect l;
+    DefectLocation l;
     place_inner_by_pass_energy(shorter, r, o, l);
     EXPECT_NE(l.position_note.find("fewer than 8"), std::string::npos) << l.position_note;
   }
   // an outer defect's note is the size method's own
   r.defect = "outer";
-  LocatedDefect l;
+  DefectLocation l;
   l.position_note = "as it was";
   place_inner_by_pass_energy(s, r, o, l);
   EXPECT_EQ(l.position_note, "as it was");

@@ -197,7 +197,7 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
 {
   // the phase reads 2.3 deg [1.3, 3.3] modulo 27.69 (a pit 30 deg off the load); the fit's angle
   // 31.5 [30.6, 32.8]: the branch k = 1 (30 [29, 31]) meets it, though its point lies outside
-  LocatedDefect l;
+  DefectLocation l;
   l.position_deg = 2.3;
   l.position_lo_deg = 1.3;
   l.position_hi_deg = 3.3;
@@ -207,7 +207,7 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
   f.angle_lo_deg = 30.6;
   f.angle_hi_deg = 32.8;
   f.angle_error_deg = 0.5;  // the bank's, included in the interval above
-  LocatedDefect one = l;
+  DefectLocation one = l;
   pick_branch(one, f);
   EXPECT_NEAR(one.position_deg, 2.3 + 360.0 / 13, 1e-9) << one.position_note;
   EXPECT_TRUE(std::isnan(one.position_modulo_deg));
@@ -215,7 +215,7 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
   // a fit's interval that meets the branch at -25.4 as well: not determined
   f.angle_lo_deg = 20;
   f.angle_hi_deg = 40;
-  LocatedDefect two = l;
+  DefectLocation two = l;
   pick_branch(two, f);
   EXPECT_NEAR(two.position_deg, 2.3, 1e-9);
   EXPECT_NEAR(two.position_modulo_deg, 360.0 / 13, 1e-9);
@@ -224,7 +224,7 @@ TEST(PulseTemplate, PicksTheBranchWhoseIntervalMeetsTheFits)
   f.angle_lo_deg = 30.6;
   f.angle_hi_deg = 32.8;
   f.angle_error_deg = std::nan("");
-  LocatedDefect none = l;
+  DefectLocation none = l;
   pick_branch(none, f);
   EXPECT_NEAR(none.position_deg, 2.3, 1e-9);
   EXPECT_NEAR(none.position_modulo_deg, 360.0 / 13, 1e-9);

@@ -95,7 +95,7 @@ TEST(DiagnoseAccelCurve, BadInput)
   const std::string rec = record(1.0);
   CliRun r = run("diagnose " + rec + kArgs + " --pulse-height 0.1");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("--size-method accel-curve needs a record at constant speed and takes no "
+  EXPECT_NE(r.out.find("the accel-curve size method takes no --template-bank, --width-curve or "
                        "--pulse-height"),
             std::string::npos)
       << r.out;
@@ -103,7 +103,9 @@ TEST(DiagnoseAccelCurve, BadInput)
   const std::string widths = test::write_temp("accel_curve_widths.txt", "0.5 1e-4\n1 2e-4\n");
   r = run("diagnose " + rec + kArgs + " --width-curve " + widths);
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("takes no --pulse-height or --width-curve"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("takes no --template-bank, --width-curve or --pulse-height"),
+            std::string::npos)
+      << r.out;
   const std::string bad = test::write_temp("accel_curve_bad.txt", "1 2e-5\n0.5 3e-5\n");
   r = run("diagnose " + rec + kArgs + " --size-curve " + bad);
   EXPECT_NE(r.status, 0);

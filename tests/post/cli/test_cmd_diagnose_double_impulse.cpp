@@ -55,14 +55,18 @@ TEST(DiagnoseDoubleImpulse, SyntheticOuterPitThroughTheCommand)
                              "--assume-defect outer --size-method double-impulse"),
                          "synthetic");
   const double want = 360 * bpfo * tau / 9;  // 2.15 deg
-  const Json *size = j.find("size_deg");
+  // an experimental method: no case outside the synthetic ones was measured where its size
+  // holds (on CWRU it reads more than every pit of the data set), so its reading is reported as
+  // such and the size as not determined, with the reason
+  EXPECT_TRUE(j.find("size_deg")->is_null());
+  EXPECT_TRUE(j.find("size_interval_deg")->is_null());
+  EXPECT_EQ(j.find("size_status")->string(), "not determined");
+  const Json *size = j.find("size_reading_deg");
   ASSERT_TRUE(size && size->is_number()) << j.find("size_method")->string();
-  // within a sample and 5 % (the estimator's unit tests), and the interval holds it
+  // within a sample and 5 % (the estimator's unit tests)
   EXPECT_NEAR(size->number(), want, 360 * bpfo / 9 / fs + 0.05 * want);
-  const Json *iv = j.find("size_interval_deg");
-  ASSERT_TRUE(iv && iv->size() == 2);
-  EXPECT_LE((*iv)[0].number(), size->number());
-  EXPECT_GE((*iv)[1].number(), size->number());
+  EXPECT_NE(j.find("size_method")->string().find("outside every case its report measured"),
+            std::string::npos);
   EXPECT_NE(j.find("size_method")->string().find("double impulse"), std::string::npos);
 }
 
@@ -73,7 +77,7 @@ TEST(DiagnoseDoubleImpulse, BadInput)
   const std::string rec = test::write_temp("double_impulse_bad.txt", text);
   CliRun r = run("diagnose " + rec + " --rate 50000 --rpm 1797 --bearing 6205 --size-method pulse");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("--size-method must be area, double-impulse, accel-curve or template, "
+  EXPECT_NE(r.out.find("--size-method must be area, template, accel-curve or double-impulse, "
                        "got 'pulse'"),
             std::string::npos)
       << r.out;
@@ -81,7 +85,8 @@ TEST(DiagnoseDoubleImpulse, BadInput)
       "diagnose " + rec +
       " --rate 50000 --rpm 1797 --bearing 6205 --size-method double-impulse --pulse-height 0.1");
   EXPECT_NE(r.status, 0);
-  EXPECT_NE(r.out.find("takes no --size-curve, --width-curve or --pulse-height"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the double-impulse size method takes no model data"), std::string::npos)
+      << r.out;
 }
 
 }  // namespace
