@@ -16,7 +16,7 @@ same instrument (--baseline).
   studies/detectability.py [--quick] [--jobs N] [--report-only] OUT
 Writes into OUT:
   detectability.csv  one row per case: size_deg, defect, channel, rate_hz, bits, noise, diagnosis,
-                     score, detected, identified, size_est_deg (the pulse-width size estimate of
+                     score, detected, identified, size_est_deg (the size diagnose states of
                      an identified race defect), note (why a case could not be analysed)
   detectability.md   the instruments, the map, and the answer to the paper's two claims
   map_*.png          smallest detected / identified size against the sampling rate
@@ -281,8 +281,9 @@ def answer(rows, g):
                     hz(lowest_rate(rows, g, channel, defect, s, noise, bits,
                                    lambda r: r["identified"])) for s in g["sizes"]) + " |")
     out += ["", "## Size estimate against the sampling rate", "",
-            "Relative error of the pulse-width size estimate of `diagnose` (lowest noise, "
-            f"{bits} bits; '-': not identified or no pulse found).", "",
+            "Relative error of the size `diagnose` states (lowest noise, "
+            f"{bits} bits; '-': not identified, or the size not determined: under this radial "
+            "load plain `diagnose` sizes only with the scene's model data).", "",
             "| channel | defect | size | " + " | ".join(f"{r:g} Hz" for r in g["rates"]) + " |",
             "|---|---|---|" + "---|" * len(g["rates"])]
     noise0 = g["noise"][0]
@@ -326,7 +327,7 @@ def answer(rows, g):
                f"the smallest identified inner defect is {acc_best:g} deg" if acc_best else
                "no inner defect is identified")
             + " (inner race, lowest noise). What the sampling rate does limit is the *size*: the "
-            "pulse-width estimate of an inner defect is within 25 % "
+            "size estimate of an inner defect is within 25 % "
             + ", ".join(f"{at(sized[sz])} for {sz:g} deg" for sz in g["sizes"])
             + " (electrical channel). The claim holds for sizing, not for detection or "
             "identification. The simulation itself samples at 1 MHz (dt = 1e-6 s): a "
