@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The accelerometer's model curve (issue 26): the energy of the ring's response to one defect
+"""The accelerometer's model curve: the energy of the ring's response to one defect
 pass, averaged over the passes (`ohmdem-post diagnose --size-method accel-curve`, JSON
 pass_energy_v2s), against the pit's size, from short runs of the sizing study's scene (the 6208
 at 500 rad/s, radial load, pits 50 um deep at the load zone's centre) passed through the record's

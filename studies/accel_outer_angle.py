@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""An outer-race pit's angle from the load direction from a two-axis accelerometer (issue 26;
-`ohmdem-post diagnose --across-column`, bearing/event_direction.h): a ball entering or leaving
+"""An outer-race pit's angle from the load direction from a two-axis accelerometer
+(`ohmdem-post diagnose --across-column`, bearing/event_direction.h): a ball entering or leaving
 the pit changes its push on the ring along the pit's radius, so the defect events' acceleration
 in the bearing's plane points along it. Outer pits of the sizing study's scene (the 6208 at 500
 rad/s, radial load, 50 um deep) at places from the load direction, both ring axes (the deck's

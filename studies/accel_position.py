@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""An inner-race pit's place on the ring from a record with a shaft angle (issue 26), from an
+"""An inner-race pit's place on the ring from a record with a shaft angle, from an
 accelerometer (`ohmdem-post diagnose --size-method accel-curve`, bearing/pass_energy.h) or from
 the electrical channel (the pulse area, bearing/pulse_area.h): under the radial load the passes'
 energy, or their pulses' area, peaks when the pit meets the load direction, so that against the

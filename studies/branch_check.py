@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Is the branch of an outer pit's angle identifiable (issue 26)? Under the radial load the
+"""Is the branch of an outer pit's angle identifiable? Under the radial load the
 template fit (`diagnose --size-method template`) knows an outer pit's angle from the load
 direction only modulo the ball spacing (360/Nb = 27.7 deg on the 6208): a pit at theta and one at
 theta - 27.7 deg (nearer the load line, of another size) see the other balls in the same places

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Folded pulses compared as the template fit compares them (issue 26): a record's fold
+"""Folded pulses compared as the template fit compares them: a record's fold
 (`diagnose --pulse-fold-out`: 'Y SE' per quarter sample, the entry at a quarter of the period)
 against a run's, the load zone's first two harmonics removed (pulse_template.cpp's
 without_cycle), aligned within two samples (sub-bin) and a constant fitted; chi2 in units of both

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""studies/locate_outer.py on held-out places (issue 26): outer pits under the radial load at
+"""studies/locate_outer.py on held-out places: outer pits under the radial load at
 angles and sizes that no bank, study case or margin choice used, on both sides of the load line,
 each simulated (0.35 s, as the sizing study's scene), acquired through the study's chain (20 kHz,
 16 bits, low noise, acquisition seed 7) and located by locate_outer.py with its defaults (its

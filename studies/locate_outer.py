@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""Where an outer-race pit is, from the load direction (issue 26): the second stage after
+"""Where an outer-race pit is, from the load direction: the second stage after
 `ohmdem-post diagnose --size-method template`. EXPERIMENTAL: not part of `ohmdem-post size` or
 `diagnose`, which place an outer pit modulo the ball spacing (and pick the branch only by the
 template fit's angle, doc/post/size.md); its margins and p-value law below were calibrated on 16
@@ -85,7 +85,7 @@ WINDOW_DEG = 2.0
 REFINE_SPAN = 600.0
 # the most a branch's least lay under what scan() and refine() found for it, over all the runs
 # made on the six 1.2 s records of doc/report/sizing/template/locate_check_len1.2_window.md
-# (sessions 23-24; one run per 1/16 deg is its own realization): the branches within the margin
+# (one run per 1/16 deg is its own realization): the branches within the margin
 # and twice this of the best are looked at again (fold_compare.rescan() and dense())
 SEARCH_MISS = 63.0
 # the best run's chi2 per bin beyond which no run of the scene is like the record (the records
@@ -100,7 +100,7 @@ MAX_CHI2_PER_BIN = 20.0
 # chance that the pit's own branch fits as badly or worse: Student's t with 15 degrees of freedom
 # on the logs, the predictive distribution of one more record from 16. In units of the chi2 over
 # the calibration's 68 bins of the pulse's window: a record folded into other bins is scaled to
-# them (session 27: 12 held-out 50 kHz records, 170 bins, their ln chi2 so scaled agree with the
+# them (12 held-out 50 kHz records, 170 bins, their ln chi2 so scaled agree with the
 # 16 (Welch's t p 0.86, Levene's p 0.095; unscaled Welch's p 0.019):
 # doc/report/sizing/template/locate_check_r50000_s27{a,b}.csv)
 OWN_BRANCH = {"mean": 1.607, "sd": 0.664, "records": 16, "bins": 68}
@@ -337,7 +337,7 @@ def margin_at(fold_period, rate):
 
 def fold_and_margin(length_s, fold_period, margin, rate=2e4):
     """The folds' period for a record of length_s (auto: grid up to GRID_LENGTH_S, as checked
-    on held-out records in sessions 16-18; fine beyond, where the grid's smear outgrows the
+    on held-out records; fine beyond, where the grid's smear outgrows the
     margin) and the margin (margin_at() that period and rate unless given)."""
     if fold_period == "auto":
         fold_period = "grid" if length_s <= GRID_LENGTH_S else "fine"
@@ -430,7 +430,7 @@ def main(argv):
     ap.add_argument("--fold-period", choices=("auto", "fine", "grid"), default="auto",
                     help="how the record and the runs are folded for the comparisons (diagnose's "
                     "--fold-period): auto (default) grid up to %g s of record (as checked on "
-                    "held-out records in sessions 16-18), fine beyond (the grid's smear outgrows "
+                    "held-out records), fine beyond (the grid's smear outgrows "
                     "the margin there)" % GRID_LENGTH_S)
     ap.add_argument("--window", type=float, default=WINDOW_DEG,
                     help="deg added either side of the phase's interval on each branch")

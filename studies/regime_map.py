@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The lubricated regime map (issue 24): the phase of the 6208's impedance at fexc = 10 kHz
+"""The lubricated regime map: the phase of the 6208's impedance at fexc = 10 kHz
 against the inner ring's speed and the oil's temperature, ISO VG 68 under the paper's load
 (F = 320 N), from runs of the real deck on a coarse grid (each 30 ms at dt = 1e-5 s, the
 values averaged over its last 2 ms). Writes into OUT:

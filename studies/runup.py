@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The run-up study (issue 17): the SKF 6208 from 200 to 500 rad/s over 0.3 s with a 1 deg
+"""The run-up study: the SKF 6208 from 200 to 500 rad/s over 0.3 s with a 1 deg
 inner-race defect. The plain spectrum smears the BPFI line over the band the speed sweeps;
 resampled at constant shaft angle (ohmdem-post orders, and diagnose, which does it by itself
 when the speed varies) the defect is one line at the BPFI order 7.851. Writes into OUT:

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The sizing study (issue 26): how well `ohmdem-post diagnose` sizes and places a race defect
+"""The sizing study: how well `ohmdem-post diagnose` sizes and places a race defect
 from what an instrument records of the electrical channel.
 
 The SKF 6208 of the detectability study (500 rad/s) is simulated with inner and outer defects of

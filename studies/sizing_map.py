@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The sizing map (issue 26): the error of `ohmdem-post diagnose`'s defect size against the
+"""The sizing map: the error of `ohmdem-post diagnose`'s defect size against the
 instrument's sampling rate and noise, per channel, for the detectability study's report.
 
 The scene is the sizing study's (studies/sizing.py: the 6208 at 500 rad/s under the radial load,

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The template-fit size (issue 26, `diagnose --size-method template --template-bank FILE`): a bank
+"""The template-fit size (`diagnose --size-method template --template-bank FILE`): a bank
 of folded pulses from short simulations of the sizing study's scene at known sizes (and, for an
 outer pit under the radial load, angles from the load direction), each acquired through the
 record's own chain, then the study's cases (studies/sizing.py; sizes no bank run has) sized by

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""A held-out check of the template-fit size (issue 26, `diagnose --size-method template`): new
+"""A held-out check of the template-fit size (`diagnose --size-method template`): new
 cases nobody looked at while the fit's constants were chosen, sized with every constant FROZEN
 (the misfit weights 2 % and 5 us, the refusal threshold reduced chi-square 10, the committed
 banks; no code in post/ changed, no bank rebuilt).

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The template fit's tables against today's sizing (issue 26): reads OUT/template.csv
+"""The template fit's tables against today's sizing: reads OUT/template.csv
 (studies/template_bank.py) and the sizing study's doc/report/sizing/sizing.csv ('width or chain
 curve': the same records), writes OUT/template_tables.md: the error per case at 10, 20, 50 kHz
 (low noise), and the coverage and the cases within 15 % per load and defect, low / high noise.

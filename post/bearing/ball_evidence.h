@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Ball or race (issue 25): a ball defect's impulses (2 BSF, a spall striking both races once per
+// Ball or race: a ball defect's impulses (2 BSF, a spall striking both races once per
 // spin turn) are modulated at the cage frequency FTF, since the ball carries load only while the
 // cage takes it through the load zone; an outer-race defect's impulses are not (the defect stands
 // in the load zone) and an inner-race defect's are modulated at the shaft rate. The FTF

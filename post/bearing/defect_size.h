@@ -12,7 +12,7 @@ namespace ohmdem::post {
 // The size estimate of `d` (its defect and matched frequency) from the record `s`.
 SizeEstimate estimate_size(const Signal &s, const Diagnosis &d, const BearingGeometry &g);
 
-// Issue 26: the size with an interval from the pulses' area (bearing/pulse_area.h) and the
+// the size with an interval from the pulses' area (bearing/pulse_area.h) and the
 // position where the record determines it; the rest reported as not determined.
 DefectLocation locate_defect(const Signal &s, const Diagnosis &d, const DiagnoseOptions &o);
 

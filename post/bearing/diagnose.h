@@ -41,7 +41,7 @@ struct DiagnoseOptions {
   // the size and place methods (locate/size_method.h); null: chosen by the record
   const SizeMethod *size_method = nullptr;
   const PlaceMethod *place_method = nullptr;
-  // issue 26, the size from the pulses' area: the load mode ("force", "fixed", "radial"; empty:
+  // the size from the pulses' area: the load mode ("force", "fixed", "radial"; empty:
   // unknown), the relative level jump of one lost ball path (0: the theory of a balanced load,
   // 1 / (Nb - 1), none under a radial load), the shaft angle per sample (rad) or null
   std::string load;
@@ -136,7 +136,7 @@ struct Diagnosis {
   // inner, outer, ball or cage when a family scores >= min_score; else "unidentified" when the
   // detection stage fired (a fault of unknown type); else "none"
   std::string defect = "none";
-  // "ambiguous" (issue 25): the best family scored but its fundamental lies within the
+  // "ambiguous": the best family scored but its fundamental lies within the
   // tolerance of a shaft harmonic (2 BSF = 3.988 fr for the CWRU fan-end 6203), where its comb
   // cannot be told from the machine's shaft lines; candidate names it and reason says why.
   // With "cage": candidate "ball" when a ball comb scores above chance too (possible ball

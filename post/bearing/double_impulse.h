@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race defect's size from an accelerometer record by the double-impulse method (issue 26).
+// A race defect's size from an accelerometer record by the double-impulse method.
 // A ball crossing a pit gives two events: the entry (the ball unloads as it rolls down the
 // leading edge: a low-frequency step) and the exit (it is loaded again at the far edge: an
 // impulse). Their delay times the ball's angular speed relative to the ring is the pit's angular

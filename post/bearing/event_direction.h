@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// An outer defect's angle from the load direction from a two-axis accelerometer (issue 26).
+// An outer defect's angle from the load direction from a two-axis accelerometer.
 // When a ball enters or leaves a pit of the outer race, its push on the ring changes along the
 // pit's radius, so the ring's acceleration in the bearing's plane jumps along that line: the
 // principal direction of the defect events' acceleration (their 2x2 covariance of the two

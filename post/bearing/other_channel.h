@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Two channels (issue 25): a sensor on each bearing of a shaft (the CWRU drive- and fan-end
+// Two channels: a sensor on each bearing of a shaft (the CWRU drive- and fan-end
 // accelerometers) hears both bearings; a defect's impulses reach the far sensor through the
 // housing, weaker. When this channel's impulses are coherent with the other channel's and stand
 // out more there, they are the other bearing's: this bearing reads `none` (impulses from the

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Issue 26: an outer-race defect's angle from the load direction under a radial load, from the
+// an outer-race defect's angle from the load direction under a radial load, from the
 // phase of its pulses within the ball-pass cycle. A healthy bearing under a radial load has a
 // smooth R modulation at BPFO (the load-zone's ball loads change as the balls pass the load
 // line, and R is largest when one ball sits on the line); a pulse occurs when a ball is at the

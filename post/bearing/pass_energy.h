@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race defect's size from an accelerometer record by the model's curve (issue 26): the energy
+// A race defect's size from an accelerometer record by the model's curve: the energy
 // of the ring's response to one defect pass, averaged over the passes, read off a curve of the
 // same energy against the size from short simulations of the same scene passed through the
 // same acquisition chain. Each pass's window is centred on its strongest event (searched within

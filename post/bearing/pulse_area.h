@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race defect's size from the area of its pulses in an electrical record (issue 26). While a
+// A race defect's size from the area of its pulses in an electrical record. While a
 // ball crosses the defect its path is broken and the level (R, or the instrument's voltage I R)
 // jumps by h times its value, h being the bearing's own model of one path lost; the jump lasts
 // tau = size / (angular speed of the ball relative to the ring). The anti-alias filter (unit
@@ -34,7 +34,7 @@ struct PulseAreaSettings {
   // the record's anti-alias filter's delay at 0 Hz (in the record's time unit): a pulse shows
   // this much after the ball crosses the pit, so a pass's shaft angle is read this much earlier
   double delay = 0;
-  // The model's curve from simulations of the same scene (issue 26): the mean over the passes
+  // The model's curve from simulations of the same scene: the mean over the passes
   // of the fixed-window area / level (window_rel_area_s below) against the size (deg), sizes
   // increasing, areas increasing. When given, the size is read off it (rel_height unused).
   std::vector<double> curve_size_deg, curve_rel_area_s;

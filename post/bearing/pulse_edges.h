@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race defect's size from the timing of its pulses' edges (issue 26), where the pulse area
+// A race defect's size from the timing of its pulses' edges, where the pulse area
 // fails: a ring free to move (the radial and force loads) drops into the gap a ball in the pit
 // leaves, its neighbours take the load within ~100 us and R returns to its level, then dips
 // below it, before the ball leaves the pit; past ~1 deg the area stops growing. The ball's entry

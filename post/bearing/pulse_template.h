@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race defect's size from the whole SHAPE of its pulse (issue 26): the record is folded at the
+// A race defect's size from the whole SHAPE of its pulse: the record is folded at the
 // defect frequency on a grid finer than its samples (the passes fall at non-commensurate
 // sub-sample phases, so the fold recovers the band-limited pulse at sub-sample resolution:
 // equivalent-time sampling), with each bin's standard error from the scatter of the samples that

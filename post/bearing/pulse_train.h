@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race comb: a defect's pulse train or a smooth modulation (issue 25)? A loaded healthy
+// A race comb: a defect's pulse train or a smooth modulation? A loaded healthy
 // bearing's compliance varies as its balls pass the load zone: a nearly sinusoidal modulation
 // at BPFO, whose comb is its fundamental with fast-falling harmonics and whose record stays
 // below a Gaussian's kurtosis. A defect's short pulses make a comb whose harmonics fall slowly

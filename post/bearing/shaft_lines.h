@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Shaft-harmonic lines of a spectrum (issue 25): the shaft frequency estimated from its
+// Shaft-harmonic lines of a spectrum: the shaft frequency estimated from its
 // harmonics (a tachometer off by a percent or two), and the bins those lines occupy, which a
 // defect family's comb may not claim: a family whose order lies near an integer (the CWRU
 // fan-end 6203: 2 BSF = 3.988 fr, BPFI = 4.947 fr, BPFO = 3.053 fr) would otherwise lock onto

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// An outer pit's templates between the bank's angles from the load direction (issue 26). The
+// An outer pit's templates between the bank's angles from the load direction. The
 // bank holds folds at several angles (the study's: every 2.5 deg from 0 to 60); a pit between
 // two of them has a pulse neither holds (held-out pits at 22.5 deg fitted the nearest of angles
 // 15 deg apart with a reduced chi-square of 14-39). Between two close angles the fold is taken

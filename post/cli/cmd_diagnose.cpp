@@ -261,7 +261,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
     throw Error(
         "diagnose: give the bearing (--bearing NAME of the catalog, or --nb --db --dp) or a "
         "run.json with it");
-  // order tracking (issue 17): an angle/speed column whose speed varies by more than --tolerance
+  // order tracking: an angle/speed column whose speed varies by more than --tolerance
   // switches the diagnosis to the angle domain
   const std::optional<ShaftAngle> sa = measured_shaft_angle(a, meta, s);
   if (!bc.fr && !sa)
@@ -526,7 +526,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
                                 " %, within the +-" + format_number(100 * o.speed_refine, 3) +
                                 " % --speed-refine allows)"
                           : " (the stated one)"));
-  // issue 25: the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
+  // the shaft frequency the spectrum's own shaft harmonics give (a tachometer off by
   // a percent or two), and the shaft and mains lines no family could claim
   m.emplace_back("shaft frequency from the spectrum (Hz)",
                  d.shaft_estimated
@@ -558,7 +558,7 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   if (o.baseline)
     m.emplace_back("baseline", a.get("--baseline") + " (at " + format_number(o.baseline->rate, 10) +
                                    " Hz, the record's rate)");
-  if (std::isfinite(d.band_kurtosis))  // issue 17: is the best band more than noise?
+  if (std::isfinite(d.band_kurtosis))  // is the best band more than noise?
     m.emplace_back("band kurtosis significant",
                    std::string(d.band_kurtosis_significant() ? "yes" : "no") + " (Gaussian-noise " +
                        "threshold " + format_number(d.band_kurtosis_threshold, 4) +

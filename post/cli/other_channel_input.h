@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// diagnose's second channels, recorded with the record: the other bearing's sensor (issue 25),
+// diagnose's second channels, recorded with the record: the other bearing's sensor,
 // as another variable of the same file (--other-channel) or another file (--other-file); the
-// accelerometer's second axis (issue 26, --across-column).
+// accelerometer's second axis (--across-column).
 #ifndef OHMDEM_POST_CLI_OTHER_CHANNEL_INPUT_H
 #define OHMDEM_POST_CLI_OTHER_CHANNEL_INPUT_H
 
@@ -20,7 +20,7 @@ void add_other_channel_options(Args &a);
 // option is given. Refused when it does not hold the record's rate and number of samples.
 std::optional<Signal> other_channel_input(const Args &a, const RunMetadata &meta, const Signal &s);
 
-// --across-column NAME: the accelerometer's second axis in the record's file (issue 26).
+// --across-column NAME: the accelerometer's second axis in the record's file.
 void add_across_options(Args &a);
 // That axis, read and checked as the other channel; nothing without the option.
 std::optional<Signal> across_input(const Args &a, const RunMetadata &meta, const Signal &s);

@@ -43,7 +43,7 @@ struct KurtogramCell {
 struct Kurtogram {
   std::vector<KurtogramCell> cells;  // every band of every level, by level then frequency
   KurtogramCell best;                // largest spectral kurtosis
-  // Significance of the best band (issue 17): its SK exceeds the level a Gaussian record
+  // Significance of the best band: its SK exceeds the level a Gaussian record
   // reaches with probability alpha / cells.size() in that band (Bonferroni over the bands
   // searched), so a noise record's best band is called significant with probability <= alpha.
   double alpha = 0.01;

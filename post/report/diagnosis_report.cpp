@@ -272,7 +272,7 @@ Table diagnosis_row(const Diagnosis &d)
     row.emplace_back(test.applicable ? test.value : NAN);
     row.emplace_back(test.applicable ? test.threshold : NAN);
   }
-  // issue 26: the size's interval and the position, appended
+  // the size's interval and the position, appended
   const DefectLocation &l = d.located;
   t.columns.insert(t.columns.end(),
                    {"size_area_deg", "size_low_deg", "size_high_deg", "position_deg",

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""An outer pit's angle from a two-axis accelerometer (studies/accel_outer_angle.py --tiny,
-issue 26): one 0.35 s run (a 1 deg outer pit 25 deg from the load direction, radial load), both
+"""An outer pit's angle from a two-axis accelerometer (studies/accel_outer_angle.py
+--tiny): one 0.35 s run (a 1 deg outer pit 25 deg from the load direction, radial load), both
 ring axes acquired at 20 kHz into one record and placed by diagnose --size-method accel-curve
---across-column V2. Checks the files, the angle within the issue's 15 deg (the study: within
+--across-column V2. Checks the files, the angle within the goal's 15 deg (the study: within
 3 deg), and that the interval holds it.
 Usage: accel_outer_angle_tests.py --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR"""
 import argparse

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """An inner pit's place from the accelerometer and from the electrical channel
-(studies/accel_position.py --tiny [--channel electrical], issue 26): one 0.35 s run (a 1 deg inner
+(studies/accel_position.py --tiny [--channel electrical]): one 0.35 s run (a 1 deg inner
 pit at 135 deg on the ring, radial load) acquired by the accelerometer, then by the R chain, at
 20 kHz with the deck's shaft angle, sized on the committed curves and placed by diagnose
 (--size-method accel-curve; the pulse area). Checks the files, the place within the issue's

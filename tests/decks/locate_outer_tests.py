@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The outer pit's branch, the second stage after diagnose (studies/locate_outer.py, issue 26).
+"""The outer pit's branch, the second stage after diagnose (studies/locate_outer.py).
 
 Parts without runs: the chain read from a record's header repeats the record sample for sample;
 the fold comparison (a pulse moved by a fraction of a bin aligns to chi2 ~ its noise, one 10 %
@@ -12,8 +12,8 @@ and the mirror pair; the distance from the load line of a pit not placed; the br
 p-values (their calibration recomputed from the committed tables, the predictive p's rate by
 Monte Carlo, the placement they allow). Then one run: a 1.5 deg pit 20 deg from the load
 direction (the branches 27.7 deg apart: this record's best run of the other branch has chi2 428
-against 10 for its own in the pulse's window, studies/locate_outer.py on the same record in
-session 24), acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to
+against 10 for its own in the pulse's window, studies/locate_outer.py on the same
+record), acquired at 20 kHz, 16 bits, low noise, located within --zone 25 (two branches) to
 1 deg; and the errors of a record not from acquire and of a scene without a radial load.
 Usage: locate_outer_tests.py --exe OHMDEM --post OHMDEM_POST --src SOURCE_DIR"""
 import argparse
@@ -258,11 +258,11 @@ def margin_rule(lo, src):
             (562.84, 0.03, -0.282, 0.786, 38)]
     check(lo.mirror_pair(wide, 1210) is None and
           lo.mirror_pair(wide, 1210, 170) == (27.668, -27.66), "a rejected branch is not counted")
-    # the folds' period and margin by the record's length and rate (sessions 24 and 27): the
+    # the folds' period and margin by the record's length and rate: the
     # margins are the committed scatter tables' largest chi2 in the pulse's window, rounded up to
     # a ten (doc/report/sizing/template/scatter_*.md: at 20 kHz grid folds 44 at 0.3 s, fine
     # ones 40 at 0.3 s and 73 at 1.2 s; at 50 kHz grid folds 1210 at 0.3 s; at 10 kHz grid folds
-    # 224 at 0.3 s, session 28)
+    # 224 at 0.3 s)
     tables = {("grid", 2e4): ["scatter_0.3_grid.md"],
               ("fine", 2e4): ["scatter_0.3_fine.md", "scatter_1.2_fine.md"],
               ("grid", 5e4): ["scatter_0.3_grid_r50000.md"],
@@ -410,7 +410,7 @@ def p_rule(lo, src):
     check(abs(lo.own_branch_p(25.0, bins=170) - lo.own_branch_p(10.0)) < 1e-12
           and lo.own_branch_p(10.0, bins=68) == lo.own_branch_p(10.0),
           "own_branch_p scales the chi2 to the calibration's bins")
-    # session 27's check at 50 kHz (locate_check_r50000_s27{a,b}.csv, 12 held-out records): the
+    # the check at 50 kHz (locate_check_r50000_s27{a,b}.csv, 12 held-out records): the
     # pit's own branch's best chi2 scaled to 68 bins agrees with the 16 at 20 kHz (Welch's t and
     # Levene's test at 0.05, as fixed before the runs); unscaled it does not (Welch's p 0.019)
     at50, scaled = held_out_chi2(src, ("r50000_s27a", "r50000_s27b"), own["bins"])
@@ -419,7 +419,7 @@ def p_rule(lo, src):
     check(len(at50) == 12 and welch > 0.05 and levene > 0.05 and raw < 0.05,
           f"50 kHz: {len(at50)} records, scaled Welch p {welch:.3f}, Levene p {levene:.3f}; "
           f"unscaled Welch p {raw:.3f}")
-    # session 28's check at 10 kHz (locate_check_r10000_s28{a,b}.csv, 12 held-out records, the
+    # the check at 10 kHz (locate_check_r10000_s28{a,b}.csv, 12 held-out records, the
     # same test fixed before the runs, no second look): the scaled chi2 differs from the 16 (at
     # least one of the two tests rejects), so the p-values are not used at 10 kHz
     at10, scaled = held_out_chi2(src, ("r10000_s28a", "r10000_s28b"), own["bins"])
@@ -454,8 +454,8 @@ def one_record(a, tmp):
     d = json.loads(r.stdout)
     print(json.dumps({k: d[k] for k in ("position_deg", "note", "candidates")}))
     # on its branch, within 1 deg: the pulse's window places the angle less sharply than the
-    # whole fold did (19.648 in session 25, 19.398 before its second look; 20.023 over the whole
-    # fold in session 17), since part of the angle's signature lies in the load zone's cycle
+    # whole fold did (19.648 in 19.398 before its second look; 20.023 over the whole
+    # fold), since part of the angle's signature lies in the load zone's cycle
     # after the pulse, which is also where two realizations of the scene differ
     check(d["branch_determined"] and abs(d["position_deg"] - 20.0) <= 1.0,
           f"the pit 20 deg from the load placed on its branch, within 1 deg: {d['position_deg']}")

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""A run-up of the bearing deck (issue 17): the inner ring from 200 to 500 rad/s over 0.3 s with
+"""A run-up of the bearing deck: the inner ring from 200 to 500 rad/s over 0.3 s with
 a 1 deg inner-race defect, through omega_start and through an equal-style variable. The shaft
 angle column is the integral of the speed column; diagnose
 resamples at constant shaft angle and finds the inner defect at the BPFI order 7.8515 (6208:

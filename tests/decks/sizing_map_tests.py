@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
-"""The sizing map of the detectability report (studies/sizing_map.py --tiny, issue 26): one
+"""The sizing map of the detectability report (studies/sizing_map.py --tiny): one
 0.35 s run (a 3 deg outer pit under the radial load) acquired by the accelerometer at 20 and
 50 kHz and sized by diagnose --size-method double-impulse, and by the electrical chain and sized
 by its pulse's shape on the committed radial outer banks (--size-method template). Checks the

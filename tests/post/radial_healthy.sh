@@ -1,6 +1,6 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Issue 25 item 5: a healthy 6208 under a radial load, its R acquired as a 20 kHz instrument
+# A healthy 6208 under a radial load, its R acquired as a 20 kHz instrument
 # records it (10 mA, 8 kHz anti-alias filter, 20 nV/sqrt(Hz)), must not read as a race defect:
 # its R varies smoothly at BPFO as the balls pass the load zone (kurtosis 2.0 at the default
 # speed and load, 2.71 at 300 rad/s and 640 N), no pulse train.

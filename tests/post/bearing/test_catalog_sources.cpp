@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// The sourced bearings of the catalog (inputs/bearings, issue 27) against what their data sets
+// The sourced bearings of the catalog (inputs/bearings) against what their data sets
 // publish: the defect-frequency multiples of CWRU (both ends) and MFPT, NTN's factors of the
 // 6201; factors from the command line (--factors); and diagnose with the MFPT NICE entry on
 // MFPT's measured records (../shared/data/bearing-real-mfpt, beside the source tree).

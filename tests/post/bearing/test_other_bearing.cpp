@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// diagnose with the other bearing on the shaft (issue 25): a pulse train at a defect frequency
+// diagnose with the other bearing on the shaft: a pulse train at a defect frequency
 // of the CWRU drive-end 6205 read on the fan-end 6203's channel is the other bearing's defect.
 #include <gtest/gtest.h>
 

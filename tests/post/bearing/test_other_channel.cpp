@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Two channels (issue 25): impulses heard on both sensors belong to the channel where they are
+// Two channels: impulses heard on both sensors belong to the channel where they are
 // the more impulsive (bearing/other_channel.h).
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// A race comb: pulse train or smooth modulation (bearing/pulse_train.h, issue 25).
+// A race comb: pulse train or smooth modulation (bearing/pulse_train.h).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -48,7 +48,7 @@ TEST(Cli, DiagnoseOurRunFromItsMetadata)
   }
 }
 
-// Issue 26: the size with its interval from the pulse area, in every format. The synthetic run
+// the size with its interval from the pulse area, in every format. The synthetic run
 // (run.json: load force, 13 balls) holds rectangles of 1/12 of the level lasting a 1 deg
 // crossing: the theory's jump 1/(Nb-1), so the area gives 1 deg.
 TEST(Cli, DiagnoseSizeIntervalAndPosition)
@@ -125,7 +125,7 @@ TEST(Cli, DiagnoseRefusesTheTheorysSizeWhenThePulseIsNotItsJump)
   EXPECT_NE(method.find("--size-curve"), std::string::npos) << method;
 }
 
-// Issue 26 on held-out simulated records (tests/post/data/sizing: the sizing study's runs of the
+// Size and place on held-out simulated records (tests/post/data/sizing: the sizing study's runs of the
 // 6208 at 500 rad/s, 50 um pits, acquired at 20 kHz, 16 bits, low noise, first 0.15 s; not used
 // to build the estimator). The reference is the size and place the deck was given; the bounds
 // are the errors doc/methods/size_pulse_area.md reports, so a change that degrades them fails here.
@@ -208,7 +208,7 @@ TEST(Cli, DiagnoseSizesHeldOutSimulatedRecords)
   place(diagnose("outer_2_radial_p135", "--pulse-height 0.4494"), 45 - 2 * 360.0 / 13);
 }
 
-// Issue 26, the pulses' edges: a held-out 3 deg inner pit under the radial load (same scene and
+// The pulses' edges: a held-out 3 deg inner pit under the radial load (same scene and
 // chain as above), whose area has stopped growing (the ring drops into the gap, doc/methods/size_pulse_area.md
 // "Size and position"): on the area's chain curve it reads far too small; on the width curve
 // (width_inner_radial_r20000_low.txt, the study's runs at sizes none of which is 3 deg) its
@@ -240,7 +240,7 @@ TEST(Cli, DiagnoseSizesFromTheEdgesWhereTheAreaStopsGrowing)
       << alone.out;
 }
 
-// Issue 26, the template fit on a held-out simulated record where the area and the width fail:
+// The template fit on a held-out simulated record where the area and the width fail:
 // a 2 deg inner pit under the `force` load (the ring tightens within 55 us; the area's curve read
 // it -83 %, the width saturates), the sizing study's run acquired at 20 kHz, 16 bits, low noise,
 // first 0.15 s. The bank is studies/template_bank.py's for that scene and chain (runs at 0.2 ...
@@ -317,7 +317,7 @@ TEST(Cli, DiagnoseRefusesABadTemplateBank)
           "the fold period must be grid or fine");
 }
 
-// The fold's period (issue 26): --fold-period fine states itself in the fold it writes, a bank
+// The fold's period: --fold-period fine states itself in the fold it writes, a bank
 // without a '# fold period:' line was folded on the grid and refuses a record folded otherwise,
 // a bank that states fine folds the record alike by itself, and a bad value names the option.
 TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
@@ -351,7 +351,7 @@ TEST(Cli, DiagnoseFoldPeriodFollowsTheBank)
       << bad.out;
 }
 
-// An inner pit's place on the ring from a once-per-revolution tachometer (issue 26: "a shaft
+// An inner pit's place on the ring from a once-per-revolution tachometer ("a shaft
 // angle: the deck's angle_inner, or a once-per-revolution tachometer column"): the held-out
 // 0.5 deg pit at 330 deg with its angle column turned into the pulse a keyphasor gives (5 V for
 // the first 10 deg of each turn). The tachometer's zero is the shaft's: the same place as the
@@ -399,7 +399,7 @@ TEST(Cli, DiagnosePlacesAnInnerPitFromATachoColumn)
 
 // A bank's template with bins no pass fell in (its run's period a near whole number of samples:
 // diagnose's fold gives those bins one error, 1000 times the largest other's) is left out of the
-// fit, and the size's method says which and what to do (issue 26, session 30: such a template
+// fit, and the size's method says which and what to do (such a template
 // fitted a record with empty bins of its own with no misfit).
 TEST(Cli, DiagnoseLeavesOutATemplateWithBinsNoPassFellIn)
 {

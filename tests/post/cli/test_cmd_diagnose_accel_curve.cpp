@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// `ohmdem-post diagnose --size-method accel-curve` (issue 26): an accelerometer record's size
+// `ohmdem-post diagnose --size-method accel-curve`: an accelerometer record's size
 // from the passes' energy on a model curve, end to end on a synthetic record, and its bad input.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// `ohmdem-post diagnose --across-column` (issue 26): an outer defect's angle from the load
+// `ohmdem-post diagnose --across-column`: an outer defect's angle from the load
 // direction from a two-axis accelerometer record, end to end, and its bad input. The record is
 // synthetic: at every outer-race pass (BPFO = Nb/2 fr (1 - d/D), the kinematic frequency) a
 // decaying ring along 30 deg from the first axis, with independent noise on each axis.

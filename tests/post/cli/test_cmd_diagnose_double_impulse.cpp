@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// `ohmdem-post diagnose --size-method double-impulse` (issue 26): the accelerometer's size from
+// `ohmdem-post diagnose --size-method double-impulse`: the accelerometer's size from
 // the delay between a ball's entry and exit events, end to end on a synthetic record; the
 // measured CWRU records (skipped when absent) and the option's bad input.
 #include <gtest/gtest.h>

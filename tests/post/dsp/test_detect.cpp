@@ -350,7 +350,7 @@ TEST(Detect, LinesTheBaselineHasTooIdentifyNothing)
   o.fr = fr;
   o.estimate_size = false;
   // without a baseline: the comb alone, a smooth modulation (sines, kurtosis < 3), is no
-  // pulse train: not taken as a defect (issue 25 item 5), the family named as the candidate
+  // pulse train: not taken as a defect, the family named as the candidate
   const Diagnosis alone = diagnose(healthy, o);
   EXPECT_NE(alone.defect, "outer");
   EXPECT_EQ(alone.candidate, "outer");

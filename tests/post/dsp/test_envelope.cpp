@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // Envelope (post/dsp/envelope.h): agreement with scipy.signal.hilbert, an AM carrier, an
 // impulse train through a resonance (with the kurtogram choosing the band), spectral kurtosis of
-// noise and its significance (issue 17).
+// noise and its significance.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,7 +103,7 @@ TEST(Envelope, SpectralKurtosisOfGaussianNoiseIsNearZero)
   for (const auto &c : kg.cells) EXPECT_NEAR(c.kurtosis, 0.0, 0.2) << c.lo << "-" << c.hi;
 }
 
-// Spectral kurtosis significance (issue 17): the Gaussian-noise threshold of the kurtogram's
+// Spectral kurtosis significance: the Gaussian-noise threshold of the kurtogram's
 // estimator, checked by its false-positive rate on seeded Gaussian records, per band and for the
 // best band of the whole kurtogram; impulses are significant.
 

@@ -39,7 +39,7 @@ Signal load_cwru_channel(const ohmdem::test::CwruRecord &rec, const char *variab
 
 TEST(Detect, KurtogramTreatsTheEndJumpAsBandSkDoes)
 {
-  // Issue 25 item 3. sig08 (48 kHz): the kurtogram on the raw record picked 23-24 kHz, the
+  // sig08 (48 kHz): the kurtogram on the raw record picked 23-24 kHz, the
   // nearly empty band below Nyquist whose kurtosis (1495 on FE_time, 1.38 on DE_time) came from
   // the jump between the record's end and start, a band whose band_sk (end zones treated) was
   // -0.004. Band selection now treats the end zones as the test does: the best band is not the

@@ -69,7 +69,7 @@ TEST(RealData, DiagnoseEveryMeasuredRecordAndPrint)
 
 TEST(RealData, HealthyFanEndChannelsNameNoFamily)
 {
-  // Issue 25 item 1. The FE_time channel of every CWRU record is the fan-end SKF 6203, healthy
+  // The FE_time channel of every CWRU record is the fan-end SKF 6203, healthy
   // (the faults were seeded in the drive-end 6205 or none). Its orders lie near integers
   // (2 BSF 3.988, BPFI 4.947, BPFO 3.053 fr): before, 13 of the 14 read `ball` (scores 0.61 to
   // 1, on the shaft harmonics 4, 8, 12 fr and the 60 Hz mains lines 120, 240, 360 Hz) and sig12
@@ -102,7 +102,7 @@ TEST(RealData, HealthyFanEndChannelsNameNoFamily)
 
 TEST(RealData, ShaftSpeedFromTheSpectrumOfMfptRecords)
 {
-  // Issue 25 (speed estimate): the MFPT rig's recorded 25 Hz is about 1 % above the true shaft
+  // The speed estimate: the MFPT rig's recorded 25 Hz is about 1 % above the true shaft
   // rate (its README: raw 1x line at 24.75-24.88 Hz, envelope lines 0.5-1.3 % low). The shaft
   // comb of each record gives the rate (the defect comb where no shaft comb stands out); every
   // inner and outer record is named right.
@@ -132,7 +132,7 @@ TEST(RealData, ShaftSpeedFromTheSpectrumOfMfptRecords)
 
 TEST(RealData, CageVerdictSaysPossibleBallDefect)
 {
-  // Issue 25 item 2: sig11 (drive end; kurtosis 2.98, FTF lines, a weak ball comb) read `cage`
+  // sig11 (drive end; kurtosis 2.98, FTF lines, a weak ball comb) read `cage`
   // with nothing more; FTF lines are also the cage modulation of a ball defect, which is
   // weaker and less periodic than a race's: the verdict now says so.
   const std::string dir = ohmdem::test::cwru_dir();
@@ -159,7 +159,7 @@ TEST(RealData, CageVerdictSaysPossibleBallDefect)
 
 TEST(RealData, BaselineAtAnotherRateIsRefused)
 {
-  // Issue 25 item 4: sig08 (healthy, 48 kHz) as the baseline of sig11 (12 kHz). Read with the
+  // sig08 (healthy, 48 kHz) as the baseline of sig11 (12 kHz). Read with the
   // record's --rate it was taken silently at 12 kHz (its lines at a quarter of their
   // frequencies); given its own rate it is refused with the remedy, and once taken to 12 kHz by
   // acquire it is accepted and the metadata says at which rate.

@@ -84,7 +84,7 @@ TEST(RealData, FanEndChannelsOfDriveEndFaultsNameTheOtherBearing)
 
 TEST(RealData, FanEndWithTheShared6203Name)
 {
-  // issue 27: the CWRU fan-end channel diagnosed by the shared names 6203 (its default is the
+  // the CWRU fan-end channel diagnosed by the shared names 6203 (its default is the
   // fan end's 6203-2RS_JEM) and 6205 reads as with the full names: the drive end's fault
   const std::string dir = ohmdem::test::cwru_dir();
   if (!ohmdem::test::cwru_present()) GTEST_SKIP() << dir << " not found";
@@ -126,7 +126,7 @@ TEST(RealData, MainsCombsMaskedAsGiven)
   EXPECT_EQ(fifty, none);
 }
 
-// --other-channel / --other-file (issue 25): the fan-end channels whose impulses are the drive
+// --other-channel / --other-file: the fan-end channels whose impulses are the drive
 // end's, the drive-end channels that must keep their verdicts, and bad input.
 std::string text_of(const Json &j, const char *key)
 {
