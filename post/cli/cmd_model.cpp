@@ -3,12 +3,17 @@
 // the record's own scene (its run.json and the header acquire wrote) by running the engine
 // `ohmdem` at known sizes, each run passed through the record's chain and folded, cached under
 // the user's cache folder keyed by the scene's values (cli/model_cache.h).
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <mutex>
@@ -21,15 +26,38 @@
 #include "core/error.h"
 #include "core/text_scan.h"
 
+extern char **environ;  // POSIX: the process environment, passed to the engine runs
+
 namespace ohmdem::post::cli {
 
 namespace {
 
-std::string quoted(const std::string &w)
+// Runs `argv` (argv[0] a path) with its standard output and error into `log`, no shell between:
+// the words come from run.json and the record's header. True when it exits 0.
+bool run_program(const std::vector<std::string> &argv, const std::string &log)
 {
-  std::string q = "'";
-  for (char c : w) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+  std::vector<char *> args;
+  for (const std::string &w : argv) args.push_back(const_cast<char *>(w.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t io;
+  posix_spawn_file_actions_init(&io);
+  posix_spawn_file_actions_addopen(&io, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
+  posix_spawn_file_actions_adddup2(&io, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, args[0], &io, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&io);
+  if (rc != 0) return false;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string> &b)
+{
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
 }
 
 // The fold's lines 'Y SE' of diagnose --pulse-fold-out, and its empty bins.
@@ -120,8 +148,9 @@ int run_model(const std::vector<std::string> &argv)
   const std::string deck = a.has("--deck") ? a.get("--deck") : default_deck();
   const std::string deck_dir = deck.substr(0, deck.find_last_of('/'));
   const std::string work = path + ".work";
-  if (std::system(("mkdir -p " + quoted(work)).c_str()) != 0)
-    throw Error("model: cannot create the work folder " + work);
+  std::error_code made;
+  std::filesystem::create_directories(work, made);
+  if (made) throw Error("model: cannot create the work folder " + work + ": " + made.message());
   const std::string self = self_executable();
   std::vector<int> ok(sizes.size(), 0);
   std::atomic<std::size_t> next{0}, done{0};
@@ -130,20 +159,22 @@ int run_model(const std::vector<std::string> &argv)
   auto worker = [&]() {
     for (std::size_t k = next++; k < sizes.size(); k = next++) {
       const std::string run = work + "/s" + std::to_string(k);
-      const std::string sim =
-          quoted(engine) + " -in " + quoted(deck) + " -var here " + quoted(deck_dir) +
-          " -var out " + quoted(run) + " -log " + quoted(run + ".log") + " -screen none" +
-          scene.deck_vars + " -var defect " + defect + " -var size " + format_number(sizes[k], 10) +
-          " > " + quoted(run + ".stdout") + " 2>&1";
-      const std::string acq = quoted(self) + " acquire " + quoted(run + "/signal.txt") +
-                              " --column R" + scene.acquire_args + " --name V --output " +
-                              quoted(run + ".V.txt") + " > /dev/null 2>&1";
-      const std::string fold = quoted(self) + " diagnose " + quoted(run + ".V.txt") +
-                               " --metadata " + quoted(run + "/run.json") +
-                               " --no-size --format json --assume-defect " + defect +
-                               " --pulse-fold-out " + quoted(run + ".fold") + " > /dev/null 2>&1";
-      ok[k] = std::system(sim.c_str()) == 0 && std::system(acq.c_str()) == 0 &&
-              std::system(fold.c_str()) == 0;
+      const std::vector<std::string> sim = joined(
+          {engine, "-in", deck, "-var", "here", deck_dir, "-var", "out", run, "-log", run + ".log",
+           "-screen", "none"},
+          joined(scene.deck_args, {"-var", "defect", defect, "-var", "size",
+                                   format_number(sizes[k], 10)}));
+      const std::vector<std::string> acq =
+          joined(joined({self, "acquire", run + "/signal.txt", "--column", "R"}, scene.acquire_args),
+                 {"--name", "V", "--output", run + ".V.txt"});
+      const std::vector<std::string> fold = {
+          self, "diagnose", run + ".V.txt", "--metadata", run + "/run.json", "--no-size",
+          "--format", "json", "--assume-defect", defect, "--pulse-fold-out", run + ".fold"};
+      ok[k] = run_program(sim, run + ".stdout") && run_program(acq, run + ".acquire.log") &&
+              run_program(fold, run + ".diagnose.log");
+      // the run's signal (~70 MB at 1 MHz) is not kept: the fold is what the bank needs
+      std::error_code gone;
+      std::filesystem::remove(run + "/signal.txt", gone);
       const std::size_t n = ++done;
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -180,6 +211,11 @@ int run_model(const std::vector<std::string> &argv)
     throw Error("model: fewer than 3 of the " + std::to_string(sizes.size()) +
                 " runs gave a fold (their logs: " + work + "): no bank");
   write_bank_file(path, scene, lowpass, bin, rows.str());
+  // the runs' logs are kept only when a size was left out (the messages above name them)
+  if (kept == sizes.size()) {
+    std::error_code gone;
+    std::filesystem::remove_all(work, gone);
+  }
   std::cout << path << "\n";
   return 0;
 }

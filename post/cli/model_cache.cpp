@@ -90,7 +90,7 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
   js << jin.rdbuf();
   const Json j = Json::parse(js.str(), meta.path);
   std::map<std::string, std::string> v;  // the scene's values, canonical
-  std::ostringstream deck;
+  std::vector<std::string> deck;
   // run.json's key -> the deck's variable: the bearing by its values ("custom"), never its name
   const std::pair<const char *, const char *> keys[] = {
       {"nb", "Nb"},         {"db", "Db"},           {"dext", "Dext"},
@@ -109,13 +109,14 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
     }
     const std::string text = x->is_number() ? format_number(x->number(), 17) : x->string();
     v[key] = text;
-    deck << " -var " << var << " " << text;
+    deck.insert(deck.end(), {"-var", var, text});
   }
   if (j.find("omega_start") && j.find("ramp") && j.find("ramp")->is_number() &&
       j.find("ramp")->number() != 0)
     throw Error("model: the record's run ramps its speed: a bank is made at a constant speed");
   const double tslide = std::atof(v["t_sliding_end"].c_str());
-  deck << " -var bearing custom -var position 90 -var tend " << format_number(tslide + length, 10);
+  deck.insert(deck.end(), {"-var", "bearing", "custom", "-var", "position", "90", "-var", "tend",
+                          format_number(tslide + length, 10)});
   // the chain, as the record's header states it
   auto h = header(record);
   auto need = [&](const std::string &k) -> const std::string & {
@@ -125,25 +126,26 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
                   "with ohmdem-post acquire)");
     return h[k];
   };
-  std::ostringstream acq;
-  acq << " --from " << format_number(tslide, 10);
-  acq << " --scale " << word_after("x" + need("scale"), "x") << " --offset " << need("offset");
+  std::vector<std::string> acq{"--from", format_number(tslide, 10), "--scale",
+                               word_after("x" + need("scale"), "x"), "--offset", need("offset")};
   const std::string &lp = need("lowpass");
   if (lp != "none")
-    acq << " --lowpass " << word_after(lp, "cut-off ") << " --order " << word_after(lp, "order ");
-  acq << " --rate " << need("sampling rate (Hz)");
+    acq.insert(acq.end(), {"--lowpass", word_after(lp, "cut-off "), "--order", word_after(lp, "order ")});
+  acq.insert(acq.end(), {"--rate", need("sampling rate (Hz)")});
   const std::string &noise = need("noise");
   if (noise != "none")
     // another draw of the same noise than the record's (its seed + 1000)
-    acq << " --noise-density " << word_after(noise, "(density ") << " --seed "
-        << std::atol(word_after(noise, "seed ").c_str()) + 1000;
+    acq.insert(acq.end(), {"--noise-density", word_after(noise, "(density "), "--seed",
+                           std::to_string(std::atol(word_after(noise, "seed ").c_str()) + 1000)});
   const std::string &adc = need("adc");
   if (adc != "none")
-    acq << " --bits " << word_after(adc, "") << " --range " << word_after(adc, "range ") << " "
-        << word_after(adc, " to ");
+    acq.insert(acq.end(), {"--bits", word_after(adc, ""), "--range", word_after(adc, "range "),
+                           word_after(adc, " to ")});
   Scene s;
   s.rate = need("sampling rate (Hz)");
-  v["chain"] = acq.str();
+  std::string chain;  // the arguments as one line: part of the key
+  for (const std::string &w : acq) chain += " " + w;
+  v["chain"] = chain;
   v["defect"] = defect;
   std::string sz;
   for (double x : sizes) sz += (sz.empty() ? "" : ",") + format_number(x, 10);
@@ -151,8 +153,8 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
   v["length_s"] = format_number(length, 10);
   for (const auto &[k, x] : v) s.text += k + " = " + x + "\n";
   s.key = hex64(fnv1a(s.text));
-  s.deck_vars = deck.str();
-  s.acquire_args = acq.str();
+  s.deck_args = deck;
+  s.acquire_args = acq;
   // the bank's own header: the geometry by value (template_bank_input.h reads it)
   return s;
 }

@@ -16,8 +16,10 @@ namespace ohmdem::post::cli {
 struct Scene {
   std::string text;          // "name = value" lines, sorted: what the key is made of
   std::string key;           // 16 hex digits of its 64-bit FNV-1a hash
-  std::string deck_vars;     // " -var NAME VALUE ..." for the engine (the defect's size apart)
-  std::string acquire_args;  // " --scale ... --rate ..." for acquire
+  // The engine's and acquire's arguments, one word each (they reach no shell): "-var NAME
+  // VALUE ..." (the defect and its size apart) and "--scale ... --rate ...".
+  std::vector<std::string> deck_args;
+  std::vector<std::string> acquire_args;
   std::string rate;          // the record's sampling rate (Hz), as its header states it
 };
 

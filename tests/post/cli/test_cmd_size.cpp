@@ -158,5 +158,29 @@ TEST(Size, ModelCacheKeyedByTheScenesValues)
   EXPECT_NE(none.out.find("needs its run.json"), std::string::npos) << none.out;
 }
 
+// The scene's words reach the engine as words, never through a shell: a run.json value holding
+// a command is one argument of the engine (here a script that records its arguments and fails),
+// and nothing runs it.
+TEST(Size, ModelRunsTheEngineWithoutAShell)
+{
+  const std::string dir = ohmdem::test::temp_dir().string() + "/model_no_shell";
+  const std::string args = dir + "/engine_args.txt";
+  const std::string engine = test::write_temp(
+      "model_no_shell_engine.sh",
+      "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done >> \"$ARGS_FILE\"\nexit 1\n");
+  const std::string meta = metadata_with("model_no_shell.json", "\"area\": \"greenwood\"",
+                                         "\"area\": \"greenwood;touch PWNED\"");
+  const CliRun r = test::shell("mkdir -p " + dir + " && cd " + dir + " && chmod +x " + engine +
+                               " && ARGS_FILE=" + args + " OHMDEM_CACHE=" + dir + "/cache " +
+                               std::string(OHMDEM_POST_EXE) + " model " + kData +
+                               "inner_2_force_p90_20kHz.txt --column V --metadata " + meta +
+                               " --engine " + engine + " --sizes 0.5,1,2 --jobs 1 2>&1");
+  EXPECT_NE(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("fewer than 3 of the 3 runs gave a fold"), std::string::npos) << r.out;
+  const std::string seen = read(args);
+  EXPECT_NE(seen.find("\ngreenwood;touch PWNED\n"), std::string::npos) << seen;
+  EXPECT_FALSE(std::ifstream(dir + "/PWNED").good());
+}
+
 }  // namespace
 }  // namespace ohmdem::post
