@@ -137,7 +137,10 @@ def run(a):
         if not script:
             continue
         r = subprocess.run(["bash", "-c", script], cwd=repo, capture_output=True, text=True,
-                           env=dict(os.environ, LC_ALL="C.UTF-8"))
+                           # the model cache of this copy: the user's own cache neither feeds
+                           # nor gets the README's banks
+                           env=dict(os.environ, LC_ALL="C.UTF-8",
+                                    OHMDEM_CACHE=os.path.join(work, "cache")))
         text = r.stdout + "\n" + r.stderr
         outputs = dict(re.findall(r"^@@@ (\d+) start\n(.*?)^@@@ \1 exit", r.stdout, re.S | re.M))
         statuses = dict(re.findall(r"^@@@ (\d+) exit (\d+)$", r.stdout, re.M))

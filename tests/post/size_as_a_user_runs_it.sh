@@ -12,6 +12,8 @@
 set -eu
 ohmdem=$1 post=$2 deck=$3 work=$4
 rm -rf "$work" && mkdir -p "$work"
+# a cache of this test's own: a bank of the same scene in the user's cache would size the demo
+export OHMDEM_CACHE="$work/cache"
 "$ohmdem" -in "$deck/in.bearing" -var here "$deck" -var out "$work/inner" -var defect inner \
   -var size 1 -var tend 0.2 > "$work/inner.log" 2>&1
 "$post" acquire "$work/inner/signal.txt" --from 0.015 --scale 0.01 --lowpass 8000 --rate 20000 \
@@ -22,7 +24,6 @@ rm -rf "$work" && mkdir -p "$work"
 "$post" diagnose "$work/inner/signal.txt" --format json > "$work/inner_r.json"
 # 3. The model data of the demo's own scene, made by the engine (four sizes) and
 #    cached by the scene's values: the same record sized on it within 15 %
-export OHMDEM_CACHE="$work/cache"
 bank=$("$post" model "$work/inner/U.txt" --sizes 0.7,0.85,1.05,1.3 2> "$work/model.err")
 test -f "$bank"
 grep -q "of 4 runs, .* s left" "$work/model.err"
