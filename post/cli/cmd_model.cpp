@@ -32,8 +32,9 @@ namespace ohmdem::post::cli {
 
 namespace {
 
-// Runs `argv` (argv[0] a path) with its standard output and error into `log`, no shell between:
-// the words come from run.json and the record's header. True when it exits 0.
+// Runs `argv` (argv[0] a path, or a name looked up on PATH) with its standard output and error
+// into `log`, no shell between: the words come from run.json and the record's header. True when
+// it exits 0.
 bool run_program(const std::vector<std::string> &argv, const std::string &log)
 {
   std::vector<char *> args;
