@@ -1,8 +1,10 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The instruments of the studies: the electrical channel (the deck's injected current, so that
-the instrument reads V = I R) and the accelerometers, each as a chain for `ohmdem-post acquire`.
-Imported by detectability.py, sizing.py and the studies built on them; it imports no study.
+the instrument reads V = I R) and the detectability study's 100 mV/g accelerometer, each as a
+chain for `ohmdem-post acquire` (the sizing studies' 10 mV/g one: sizing.ACC_SENSITIVITY and
+sizing.acquire_acc). Imported by detectability.py, sizing.py and the studies built on them; it
+imports no study.
 """
 import common
 
