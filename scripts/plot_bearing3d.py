@@ -13,12 +13,11 @@ Usage: plot_bearing3d.py OHMDEM OUT [--tend T]"""
 import argparse
 import os
 import subprocess
-import sys
 
 import numpy as np
 
-DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs", "bearing_6208",
-                    "in.bearing")
+import deck_run
+
 DEEP = dict(model="3d", bearing="6205-2RS_JEM", clearance=20e-6, Fr=0, lubricant="VG68",
             omega=500)
 ANGULAR = dict(model="3d", alpha0=25, preload=15e-6, Fr=800, lubricant="VG68", omega=500)
@@ -26,17 +25,7 @@ AXIAL_LOADS = (50, 100, 200, 500, 1000, 2000, 5000)  # N
 
 
 def run(exe, folder, **var):
-    os.makedirs(folder, exist_ok=True)
-    cmd = [exe, "-in", DECK, "-log", os.path.join(folder, "log.txt"), "-screen", "none",
-           "-var", "out", folder]
-    for k, v in var.items():
-        cmd += ["-var", k, str(v)]
-    if subprocess.run(cmd, cwd=folder).returncode != 0:
-        sys.exit(f"plot_bearing3d: {' '.join(cmd)} failed (see {folder}/log.txt)")
-    path = os.path.join(folder, "signal.txt")
-    names = open(path).readline().split()[1:]
-    data = np.loadtxt(path)
-    return {n: data[:, i] for i, n in enumerate(names)}
+    return deck_run.run("plot_bearing3d", exe, folder, **var)
 
 
 def gnuplot(script):

@@ -9,27 +9,16 @@ Usage: plot_lubricated_defect.py OHMDEM OUT [--from T0] [--to T1]"""
 import argparse
 import os
 import subprocess
-import sys
 
 import numpy as np
 
+import deck_run
+
 FIGURE = "lubricated_inner_defect.png"
-DECK = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs", "bearing_6208",
-                    "in.bearing")
 
 
 def run(exe, folder, **var):
-    os.makedirs(folder, exist_ok=True)
-    cmd = [exe, "-in", DECK, "-log", os.path.join(folder, "log.txt"), "-screen", "none",
-           "-var", "out", folder]
-    for k, v in var.items():
-        cmd += ["-var", k, str(v)]
-    if subprocess.run(cmd, cwd=folder).returncode != 0:
-        sys.exit(f"plot_lubricated_defect: {' '.join(cmd)} failed (see {folder}/log.txt)")
-    path = os.path.join(folder, "signal.txt")
-    names = open(path).readline().split()[1:]
-    data = np.loadtxt(path)
-    return {n: data[:, i] for i, n in enumerate(names)}
+    return deck_run.run("plot_lubricated_defect", exe, folder, **var)
 
 
 def main():

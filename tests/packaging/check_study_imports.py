@@ -69,11 +69,11 @@ def main(argv):
     if len(argv) != 2:
         print(__doc__)
         return 2
-    folder = os.path.join(argv[1], "studies")
-    found = cycles(graph(folder))
+    g = graph(os.path.join(argv[1], "studies"))
+    found = cycles(g)
     for c in found:
         print("studies: an import circle: " + " -> ".join(c))
-    print(f"study imports: {len(graph(folder))} studies, {len(found)} circle(s)")
+    print(f"study imports: {len(g)} studies, {len(found)} circle(s)")
     return 1 if found else 0
 
 
