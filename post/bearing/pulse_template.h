@@ -73,6 +73,9 @@ struct TemplateBank {
   double angle_error_deg = std::numeric_limits<double>::quiet_NaN();
   // false: the bank's interval was never measured to cover (a bank made without held-out runs)
   bool coverage_measured = true;
+  // what the bank's own held-out runs showed (ohmdem-post model); empty: a committed bank, whose
+  // coverage its report measured
+  std::string coverage_note;
 };
 
 struct TemplateFit {

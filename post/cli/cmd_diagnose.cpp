@@ -482,7 +482,8 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
     std::string cached;
     try {
       cached = cached_bank_path(record_scene(input_options(a).files.at(0), meta, sized,
-                                             default_bank_sizes(), kDefaultRunLength));
+                                             default_bank_sizes(), kDefaultRunLength,
+                                             kDefaultHeldOut));
     } catch (const Error &) {
       cached.clear();  // a scene the model command cannot make: nothing cached for it
     }

@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <chrono>
@@ -25,6 +26,7 @@
 #include "cli/model_cache.h"
 #include "core/error.h"
 #include "core/text_scan.h"
+#include "io/json.h"
 
 extern char **environ;  // POSIX: the process environment, passed to the engine runs
 
@@ -82,6 +84,89 @@ bool read_fold(const std::string &path, std::vector<std::string> &y, std::vector
   return y.size() >= 8 && empty >= 0;
 }
 
+// Sizes between the bank's (geometric midpoints of neighbours), n of them spread over its range.
+std::vector<double> held_out_sizes(const std::vector<double> &sizes, int n)
+{
+  std::vector<double> out;
+  const std::size_t gaps = sizes.size() - 1;
+  for (int j = 0; j < n; ++j) {
+    const std::size_t i =
+        n == 1 ? gaps / 2
+               : static_cast<std::size_t>(std::lround(static_cast<double>(j) *
+                                                      static_cast<double>(gaps - 1) / (n - 1)));
+    const double m = std::sqrt(sizes[i] * sizes[i + 1]);
+    if (out.empty() || m > out.back()) out.push_back(m);
+  }
+  return out;
+}
+
+// acquire's arguments with the noise seed moved by `by` (none to move without noise)
+std::vector<std::string> reseeded(std::vector<std::string> args, std::size_t by)
+{
+  for (std::size_t i = 0; i + 1 < args.size(); ++i)
+    if (args[i] == "--seed")
+      args[i + 1] = std::to_string(std::atol(args[i + 1].c_str()) + static_cast<long>(by));
+  return args;
+}
+
+// the engine's arguments with its end time moved `by` s earlier
+std::vector<std::string> shortened(std::vector<std::string> args, double by)
+{
+  for (std::size_t i = 0; i + 2 < args.size(); ++i)
+    if (args[i] == "-var" && args[i + 1] == "tend")
+      args[i + 2] = format_number(std::atof(args[i + 2].c_str()) - by, 10);
+  return args;
+}
+
+struct HeldOut {
+  int sized = 0, covered = 0;
+  double rms = 0;     // relative RMS error of the sizes given
+  std::string sizes;  // "TRUE->GIVEN [LO, HI]" per run
+};
+
+// The held-out records (work/hJ.V.txt) sized by `bank` as the user's record would be.
+HeldOut size_held_out(const std::string &self, const std::string &work, const std::string &bank,
+                      const std::string &defect, const std::vector<double> &held,
+                      const std::vector<int> &ok, std::size_t first)
+{
+  HeldOut h;
+  double sum2 = 0;
+  for (std::size_t j = 0; j < held.size(); ++j) {
+    const std::string run = work + "/h" + std::to_string(j);
+    std::string given = "-";
+    if (ok[first + j] &&
+        run_program({self, "size", run + ".V.txt", "--metadata", run + "/run.json", "--model", bank,
+                     "--assume-defect", defect, "--format", "json", "--output", run + ".size.json"},
+                    run + ".size.log")) {
+      std::ifstream in(run + ".size.json");
+      std::stringstream text;
+      text << in.rdbuf();
+      try {
+        const Json r = Json::parse(text.str(), run + ".size.json");
+        const Json *v = r.find("size_deg");
+        const Json *iv = r.find("size_interval_deg");
+        if (v && v->is_number()) {
+          const double e = v->number() / held[j] - 1;
+          sum2 += e * e;
+          ++h.sized;
+          given = format_number(v->number(), 3);
+          if (iv && iv->is_array() && iv->size() == 2 && (*iv)[0].is_number() &&
+              (*iv)[1].is_number()) {
+            given += " [" + format_number((*iv)[0].number(), 3) + ", " +
+                     format_number((*iv)[1].number(), 3) + "]";
+            if ((*iv)[0].number() <= held[j] && held[j] <= (*iv)[1].number()) ++h.covered;
+          }
+        }
+      } catch (const Error &) {
+        given = "-";
+      }
+    }
+    h.sizes += (h.sizes.empty() ? "" : ", ") + format_number(held[j], 3) + " -> " + given;
+  }
+  if (h.sized > 0) h.rms = std::sqrt(sum2 / h.sized);
+  return h;
+}
+
 }  // namespace
 
 int run_model(const std::vector<std::string> &argv)
@@ -95,13 +180,17 @@ int run_model(const std::vector<std::string> &argv)
          "PATH), --jobs at a time, with a progress line, and caches the bank under\n"
          "$OHMDEM_CACHE, else $XDG_CACHE_HOME/ohmdem, else ~/.cache/ohmdem, keyed by the scene's\n"
          "values (never a name); diagnose and size reuse it with no option. Its own error is\n"
-         "not measured (no held-out runs): the size it gives has no interval.\n"
+         "measured on --held-out runs at sizes between the bank's (another noise draw): their\n"
+         "sizes' relative RMS error widens every interval the bank gives, and the bank states\n"
+         "how many of their intervals held the truth; with --held-out 0 it gives no interval.\n"
          "Example: ohmdem-post model results/pit/V.txt --defect inner");
   add_input_options(a);
   a.section("Model");
   a.option("--defect", "KIND", "the race defect the bank is of: inner or outer", "inner");
   a.option("--sizes", "LIST", "the bank's sizes (deg, comma-separated, increasing; default: 14 "
            "from 0.2 to 3.64 deg, 25 % apart)");
+  a.option("--held-out", "N", "runs at sizes between the bank's that measure its error (0..8)",
+           "3");
   a.option("--jobs", "N", "engine runs at a time (1..64)", "2");
   a.option("--length", "S", "simulated time after the sliding phase of each run (s)", "0.3");
   a.option("--engine", "FILE", "the engine (default: ohmdem beside ohmdem-post, else on PATH)");
@@ -129,7 +218,13 @@ int run_model(const std::vector<std::string> &argv)
   const int jobs = static_cast<int>(a.integer_in("--jobs", 2, 1, 64, "a number of runs"));
   const double length =
       a.number_in("--length", kDefaultRunLength, Range::open(0.01, 100), "a duration", "s");
-  const Scene scene = record_scene(files[0], meta, defect, sizes, length);
+  const int n_held = static_cast<int>(
+      a.integer_in("--held-out", kDefaultHeldOut, 0, 8, "a number of runs"));
+  const std::vector<double> held = held_out_sizes(sizes, n_held);
+  const Scene scene = record_scene(files[0], meta, defect, sizes, length, n_held);
+  // a held-out run is as long as the record (at most --length): its scatter is the record's
+  const double held_length =
+      std::min(length, load_input(a, meta, 256, true).duration());
   const std::string path = cached_bank_path(scene);
   if (a.has("--print-key")) {
     std::cout << scene.key << " " << path << "\n";
@@ -153,26 +248,32 @@ int run_model(const std::vector<std::string> &argv)
   std::filesystem::create_directories(work, made);
   if (made) throw Error("model: cannot create the work folder " + work + ": " + made.message());
   const std::string self = self_executable();
-  std::vector<int> ok(sizes.size(), 0);
+  const std::size_t total = sizes.size() + held.size();
+  std::vector<int> ok(total, 0);
   std::atomic<std::size_t> next{0}, done{0};
   std::mutex print;
   const auto t0 = std::chrono::steady_clock::now();
   auto worker = [&]() {
-    for (std::size_t k = next++; k < sizes.size(); k = next++) {
-      const std::string run = work + "/s" + std::to_string(k);
+    for (std::size_t k = next++; k < total; k = next++) {
+      const bool bank_run = k < sizes.size();
+      const std::size_t j = bank_run ? k : k - sizes.size();
+      const std::string run = work + (bank_run ? "/s" : "/h") + std::to_string(j);
+      const double size = bank_run ? sizes[j] : held[j];
       const std::vector<std::string> sim = joined(
           {engine, "-in", deck, "-var", "here", deck_dir, "-var", "out", run, "-log", run + ".log",
            "-screen", "none"},
-          joined(scene.deck_args, {"-var", "defect", defect, "-var", "size",
-                                   format_number(sizes[k], 10)}));
-      const std::vector<std::string> acq =
-          joined(joined({self, "acquire", run + "/signal.txt", "--column", "R"}, scene.acquire_args),
-                 {"--name", "V", "--output", run + ".V.txt"});
+          joined(bank_run ? scene.deck_args : shortened(scene.deck_args, length - held_length),
+                 {"-var", "defect", defect, "-var", "size", format_number(size, 10)}));
+      // a held-out run is a record as the user's: another draw of the chain's noise
+      const std::vector<std::string> acq = joined(
+          joined({self, "acquire", run + "/signal.txt", "--column", "R"},
+                 bank_run ? scene.acquire_args : reseeded(scene.acquire_args, 2000 + j)),
+          {"--name", "V", "--output", run + ".V.txt"});
       const std::vector<std::string> fold = {
           self, "diagnose", run + ".V.txt", "--metadata", run + "/run.json", "--no-size",
           "--format", "json", "--assume-defect", defect, "--pulse-fold-out", run + ".fold"};
       ok[k] = run_program(sim, run + ".stdout") && run_program(acq, run + ".acquire.log") &&
-              run_program(fold, run + ".diagnose.log");
+              (!bank_run || run_program(fold, run + ".diagnose.log"));
       // the run's signal (~70 MB at 1 MHz) is not kept: the fold is what the bank needs
       std::error_code gone;
       std::filesystem::remove(run + "/signal.txt", gone);
@@ -180,9 +281,9 @@ int run_model(const std::vector<std::string> &argv)
       const double s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::lock_guard<std::mutex> lock(print);
-      std::cerr << "model: " << n << " of " << sizes.size() << " runs, " << format_number(s, 3)
+      std::cerr << "model: " << n << " of " << total << " runs, " << format_number(s, 3)
                 << " s, about "
-                << format_number(s / static_cast<double>(n) * static_cast<double>(sizes.size() - n), 3)
+                << format_number(s / static_cast<double>(n) * static_cast<double>(total - n), 3)
                 << " s left\n";
     }
   };
@@ -211,7 +312,29 @@ int run_model(const std::vector<std::string> &argv)
   if (kept < 3)
     throw Error("model: fewer than 3 of the " + std::to_string(sizes.size()) +
                 " runs gave a fold (their logs: " + work + "): no bank");
-  write_bank_file(path, scene, lowpass, bin, rows.str());
+  double model_error = 0;
+  std::string coverage = "not measured (no held-out runs)";
+  if (!held.empty()) {
+    // the bank's sizes of its held-out records: first without an error of its own, for the
+    // error; then with it, for how many intervals hold the truth
+    const std::string trial = work + "/bank_trial.txt";
+    write_bank_file(trial, scene, lowpass, bin, rows.str(), 0, "not measured (being measured)");
+    const HeldOut first = size_held_out(self, work, trial, defect, held, ok, sizes.size());
+    if (first.sized >= 2) {
+      model_error = std::min(0.99, first.rms);
+      write_bank_file(trial, scene, lowpass, bin, rows.str(), model_error, "being measured");
+      const HeldOut second = size_held_out(self, work, trial, defect, held, ok, sizes.size());
+      coverage = "its intervals held " + std::to_string(second.covered) + " of " +
+                 std::to_string(held.size()) + " held-out runs of " +
+                 format_number(held_length, 3) + " s (sizes " + second.sizes +
+                 " deg; relative RMS error " + format_number(100 * first.rms, 3) + " %)";
+    } else {
+      coverage = "not measured (" + std::to_string(first.sized) + " of " +
+                 std::to_string(held.size()) + " held-out runs sized)";
+    }
+    std::cerr << "model: held-out runs: " << coverage << "\n";
+  }
+  write_bank_file(path, scene, lowpass, bin, rows.str(), model_error, coverage);
   // the runs' logs are kept only when a size was left out (the messages above name them)
   if (kept == sizes.size()) {
     std::error_code gone;

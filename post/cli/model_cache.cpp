@@ -80,7 +80,7 @@ void make_dirs(const std::string &p)
 }  // namespace
 
 Scene record_scene(const std::string &record, const RunMetadata &meta, const std::string &defect,
-                   const std::vector<double> &sizes, double length)
+                   const std::vector<double> &sizes, double length, int held_out)
 {
   if (meta.path.empty())
     throw Error("model: the record's scene needs its run.json (--metadata FILE, or beside the "
@@ -151,6 +151,7 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
   for (double x : sizes) sz += (sz.empty() ? "" : ",") + format_number(x, 10);
   v["sizes_deg"] = sz;
   v["length_s"] = format_number(length, 10);
+  v["held_out"] = std::to_string(held_out);
   for (const auto &[k, x] : v) s.text += k + " = " + x + "\n";
   s.key = hex64(fnv1a(s.text));
   s.deck_args = deck;
@@ -180,7 +181,8 @@ std::string cached_bank_path(const Scene &s)
 }
 
 void write_bank_file(const std::string &path, const Scene &s, const std::string &lowpass,
-                     const std::string &bin, const std::string &rows)
+                     const std::string &bin, const std::string &rows, double model_error,
+                     const std::string &coverage)
 {
   PendingStream f(path);
   std::ostream &out = f.stream();
@@ -197,7 +199,8 @@ void write_bank_file(const std::string &path, const Scene &s, const std::string 
       << "# defect: " << value("defect") << "\n# load: " << value("load") << "\n"
       << "# sampling rate (Hz): " << s.rate << "\n# lowpass: " << lowpass << "\n"
       << "# bin (s): " << bin << "\n"
-      << "# model error: 0\n# coverage: not measured (no held-out runs)\n";
+      << "# model error: " << format_number(model_error, 6) << "\n# coverage: " << coverage
+      << "\n";
   std::istringstream lines(s.text);
   for (std::string l; std::getline(lines, l);) out << "# scene: " << l << "\n";
   out << "# SIZE_DEG ANGLE_DEG N Y_1..Y_N SE_1..SE_N\n" << rows;

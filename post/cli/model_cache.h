@@ -24,22 +24,28 @@ struct Scene {
 };
 
 // Throws Error naming what the record's header or run.json lacks.
+// `held_out`: the runs at sizes between the bank's that measure its own error (part of the key).
 Scene record_scene(const std::string &record, const RunMetadata &meta, const std::string &defect,
-                   const std::vector<double> &sizes, double length);
+                   const std::vector<double> &sizes, double length, int held_out);
 
 // $OHMDEM_CACHE, else $XDG_CACHE_HOME/ohmdem, else $HOME/.cache/ohmdem; the folder is made.
 std::string cache_dir();
 std::string cached_bank_path(const Scene &s);  // <cache>/banks/bank_<key>.txt
 
 // The bank's file, renamed onto `path` when whole: its header states the scene, its rows are
-// `rows` (studies/template_bank.py's form).
+// `rows` (studies/template_bank.py's form); `model_error` the relative RMS error of the sizes
+// the bank gave its held-out runs, `coverage` what they showed ("not measured ..." without).
 void write_bank_file(const std::string &path, const Scene &s, const std::string &lowpass,
-                     const std::string &bin, const std::string &rows);
+                     const std::string &bin, const std::string &rows, double model_error,
+                     const std::string &coverage);
 
 // The bank's sizes and run length when none are given (ohmdem-post model's defaults): 14 sizes
 // from 0.2 to 3.64 deg, 25 % apart, 0.3 s after the sliding phase.
 const std::vector<double> &default_bank_sizes();
 constexpr double kDefaultRunLength = 0.3;
+// Held-out runs when none are given: enough for an RMS error of the bank's sizes, few enough to
+// add a fifth to the bank's cost.
+constexpr int kDefaultHeldOut = 3;
 
 std::string self_executable();  // /proc/self/exe
 std::string find_engine();      // ohmdem beside this executable, else on PATH; empty: none

@@ -99,6 +99,7 @@ BankFile read_template_bank(const std::string &path)
         b.geometry = g;
       }
       if (key == "coverage" && v.rfind("not measured", 0) == 0) b.bank.coverage_measured = false;
+      else if (key == "coverage") b.bank.coverage_note = v;
       if (key == "lowpass") b.lowpass = filter_part(v);
       if (key == "sampling rate (Hz)") b.rate = number(path, key, v);
       if (key == "fold period") {

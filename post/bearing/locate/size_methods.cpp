@@ -154,7 +154,9 @@ class TemplateMethod : public SizeMethod {
     DefectLocation l = locate_by_template(s, found, o);
     if (l.valid && o.template_bank->coverage_measured)
       l.interval_coverage =
-          "nominal 95 %; covered 114 of 120 simulated pits over five chains";
+          o.template_bank->coverage_note.empty()
+              ? "nominal 95 %; covered 114 of 120 simulated pits over five chains"
+              : "nominal 95 %; " + o.template_bank->coverage_note;
     else if (l.valid)
       l.method += "; no interval: the bank's own error was never measured (no held-out runs)";
     return l;
