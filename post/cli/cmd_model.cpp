@@ -109,15 +109,6 @@ std::vector<std::string> reseeded(std::vector<std::string> args, std::size_t by)
   return args;
 }
 
-// the engine's arguments with its end time moved `by` s earlier
-std::vector<std::string> shortened(std::vector<std::string> args, double by)
-{
-  for (std::size_t i = 0; i + 2 < args.size(); ++i)
-    if (args[i] == "-var" && args[i + 1] == "tend")
-      args[i + 2] = format_number(std::atof(args[i + 2].c_str()) - by, 10);
-  return args;
-}
-
 struct HeldOut {
   int sized = 0, covered = 0;
   double rms = 0;     // relative RMS error of the sizes given
@@ -222,9 +213,6 @@ int run_model(const std::vector<std::string> &argv)
       a.integer_in("--held-out", kDefaultHeldOut, 0, 8, "a number of runs"));
   const std::vector<double> held = held_out_sizes(sizes, n_held);
   const Scene scene = record_scene(files[0], meta, defect, sizes, length, n_held);
-  // a held-out run is as long as the record (at most --length): its scatter is the record's
-  const double held_length =
-      std::min(length, load_input(a, meta, 256, true).duration());
   const std::string path = cached_bank_path(scene);
   if (a.has("--print-key")) {
     std::cout << scene.key << " " << path << "\n";
@@ -241,6 +229,13 @@ int run_model(const std::vector<std::string> &argv)
         "build). Build the engine (README, Install) and rerun, give it with --engine FILE, or "
         "make the bank where an engine runs (studies/template_bank.py) and give it to size or "
         "diagnose with --model FILE");
+  // a held-out run is as long as the record (at most --length): its scatter is the record's
+  const double held_length =
+      held.empty() ? length : std::min(length, load_input(a, meta, 256, true).duration());
+  const std::vector<std::string> held_deck_args =
+      held_length == length
+          ? scene.deck_args
+          : record_scene(files[0], meta, defect, sizes, held_length, n_held).deck_args;
   const std::string deck = a.has("--deck") ? a.get("--deck") : default_deck();
   const std::string deck_dir = deck.substr(0, deck.find_last_of('/'));
   const std::string work = path + ".work";
@@ -262,7 +257,7 @@ int run_model(const std::vector<std::string> &argv)
       const std::vector<std::string> sim = joined(
           {engine, "-in", deck, "-var", "here", deck_dir, "-var", "out", run, "-log", run + ".log",
            "-screen", "none"},
-          joined(bank_run ? scene.deck_args : shortened(scene.deck_args, length - held_length),
+          joined(bank_run ? scene.deck_args : held_deck_args,
                  {"-var", "defect", defect, "-var", "size", format_number(size, 10)}));
       // a held-out run is a record as the user's: another draw of the chain's noise
       const std::vector<std::string> acq = joined(
@@ -318,11 +313,12 @@ int run_model(const std::vector<std::string> &argv)
     // the bank's sizes of its held-out records: first without an error of its own, for the
     // error; then with it, for how many intervals hold the truth
     const std::string trial = work + "/bank_trial.txt";
-    write_bank_file(trial, scene, lowpass, bin, rows.str(), 0, "not measured (being measured)");
+    const std::string measuring = "being measured by ohmdem-post model";
+    write_bank_file(trial, scene, lowpass, bin, rows.str(), 0, measuring);
     const HeldOut first = size_held_out(self, work, trial, defect, held, ok, sizes.size());
     if (first.sized >= 2) {
       model_error = std::min(0.99, first.rms);
-      write_bank_file(trial, scene, lowpass, bin, rows.str(), model_error, "being measured");
+      write_bank_file(trial, scene, lowpass, bin, rows.str(), model_error, measuring);
       const HeldOut second = size_held_out(self, work, trial, defect, held, ok, sizes.size());
       coverage = "its intervals held " + std::to_string(second.covered) + " of " +
                  std::to_string(held.size()) + " held-out runs of " +
