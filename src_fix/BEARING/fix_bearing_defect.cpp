@@ -163,6 +163,13 @@ void FixBearingDefect::init()
           "keyword 'width' expects 0 with a model 2d race (its contacts have no place across "
           "the groove), got " +
           number_text(width_));
+  } else if (kind_ == Kind::Ball) {
+    // On a model 3d bearing the ball turns in space: its orientation carries the pit.
+    three_d_ = false;
+    for (int k = 0; k < modify->nfix; ++k) {
+      const auto *body = dynamic_cast<const ohmdem::BearingBody *>(modify->fix[k]);
+      if (body && body->surface().is_race() && body->surface().three_d) three_d_ = true;
+    }
   } else if (kind_ == Kind::Cage) {
     cage_ = find_body(target_, true);
     if (!cage_) fail("keyword 'cage' expects the ID of a fix bearing/cage, got '" + target_ + "'");
@@ -227,11 +234,22 @@ void FixBearingDefect::setup(int)
   }
 }
 
-// The ball's surface turns with it: integrate its spin (2D: about z only).
+// The ball's surface turns with it: integrate its spin about z (model 2d), and in model 3d its
+// orientation in space as well.
 void FixBearingDefect::post_integrate()
 {
   const int i = ball_ <= atom->map_tag_max ? atom->map(ball_) : -1;
-  double w = (i >= 0 && i < atom->nlocal) ? atom->omega[i][2] : 0.0;
+  const bool mine = i >= 0 && i < atom->nlocal;
+  if (three_d_) {
+    double w[3] = {0.0, 0.0, 0.0}, all[3];
+    if (mine)
+      for (int k = 0; k < 3; ++k) w[k] = atom->omega[i][k];
+    MPI_Allreduce(w, all, 3, MPI_DOUBLE, MPI_SUM, world);
+    orientation_.turn({all[0], all[1], all[2]}, update->dt);
+    spin_ += all[2] * update->dt;
+    return;
+  }
+  double w = mine ? atom->omega[i][2] : 0.0;
   if (comm->nprocs > 1) {
     double sum = 0.0;
     MPI_Allreduce(&w, &sum, 1, MPI_DOUBLE, MPI_SUM, world);
@@ -242,6 +260,10 @@ void FixBearingDefect::post_integrate()
 
 double FixBearingDefect::zone_centre() const
 {
+  if (kind_ == Kind::Ball && three_d_) {
+    const ohmdem::Vec3 c = orientation_.apply(ohmdem::ball_pit_centre(position_, track_));
+    return std::atan2(c.y, c.x);  // the azimuth of the pit's centre
+  }
   switch (kind_) {
     case Kind::Inner:
     case Kind::Outer:
@@ -305,6 +327,8 @@ double FixBearingDefect::recess(const ohmdem::BearingSurface &race, std::int64_t
 double FixBearingDefect::recess_at(const ohmdem::BearingSurface &race, std::int64_t tag, double dx,
                                    double dy, double alpha, bool &masked) const
 {
+  if (kind_ == Kind::Ball && three_d_)
+    return tag == ball_ && active() ? ball_recess_3d(race, dx, dy, alpha, masked) : 0.0;
   if (!(width_ > 0.0) || !(kind_ == Kind::Inner || kind_ == Kind::Outer))
     return recess(race, tag, dx, dy, masked);
   if (race.body != race_) return 0.0;
@@ -315,6 +339,25 @@ double FixBearingDefect::recess_at(const ohmdem::BearingSurface &race, std::int6
   const double s = race.groove * (alpha - track_);
   if (!ohmdem::in_pit(across, s)) return 0.0;  // beside the pit: not felt, not masked
   return std::min(recess(race, tag, dx, dy, masked), ohmdem::pit_recess(across, s));
+}
+
+// Model 3d, the defective ball's contact on `race` at contact angle alpha: its great-circle
+// distance on the ball from the pit's centre, carried by the ball's orientation. The contact's
+// direction is taken in the bearing plane and alpha (a tilted ring's mrad left out).
+double FixBearingDefect::ball_recess_3d(const ohmdem::BearingSurface &race, double dx, double dy,
+                                        double alpha, bool &masked) const
+{
+  const double rho = std::hypot(dx, dy);
+  if (!(rho > 0.0)) return 0.0;
+  const ohmdem::Vec3 n = ohmdem::contact_direction({dx / rho, dy / rho, 0.0}, alpha, race.inner());
+  const ohmdem::Vec3 c = orientation_.apply(ohmdem::ball_pit_centre(position_, track_));
+  ohmdem::Pit pit;
+  pit.depth = depth_;
+  pit.width = arc_ > 0.0 ? arc_ : ball_radius_ * size_;
+  pit.ball_radius = ball_radius_;
+  const double s = ball_radius_ * ohmdem::angle_between(n, c);
+  if (ohmdem::in_pit(pit, s)) masked = true;
+  return ohmdem::pit_recess(pit, s);
 }
 
 // The same arc offset and width as recess(), for the lubricated gap (a query: the mechanics do
@@ -354,19 +397,39 @@ double FixBearingDefect::compute_vector(int n)
   return n == 1 ? spin_ / kDeg : 0.0;
 }
 
+// The record: the spin and the kind, and for a ball of a model 3d bearing its orientation
+// (the kind's code then plus kOriented, so that a planar record keeps its two values).
+namespace {
+constexpr int kOriented = 16;
+}
+
 void FixBearingDefect::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[2] = {spin_, static_cast<double>(kind_)};
-  const int size = 2 * sizeof(double);
+  const bool oriented = kind_ == Kind::Ball && three_d_;
+  const double list[6] = {spin_,          static_cast<double>(static_cast<int>(kind_) +
+                                                              (oriented ? kOriented : 0)),
+                          orientation_.w, orientation_.x,
+                          orientation_.y, orientation_.z};
+  const int n = oriented ? 6 : 2;
+  const int size = n * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list, sizeof(double), 2, fp);
+  fwrite(list, sizeof(double), n, fp);
 }
 
 void FixBearingDefect::restart(char *buf)
 {
   const double *list = reinterpret_cast<const double *>(buf);
-  if (static_cast<int>(list[1]) != static_cast<int>(kind_))
+  int code = static_cast<int>(list[1]);
+  const bool oriented = code >= kOriented;
+  if (oriented) code -= kOriented;
+  if (code != static_cast<int>(kind_))
     error->fix_error(FLERR, this, "restart data is for another kind of defect");
   spin_ = list[0];
+  if (oriented) {
+    orientation_.w = list[2];
+    orientation_.x = list[3];
+    orientation_.y = list[4];
+    orientation_.z = list[5];
+  }
 }

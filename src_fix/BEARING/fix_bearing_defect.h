@@ -19,6 +19,7 @@ FixStyle(bearing/defect,FixBearingDefect)
 #include <string>
 #include <vector>
 
+#include "contact/ball_pit_3d.h"
 #include "fix.h"
 #include "support/bearing_surface.h"
 
@@ -72,8 +73,14 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
   double start_ = 0;                           // time from which the defect exists (s)
   int pocket_ = 0, side_ = 1;                  // cage defect
   double spin_ = 0;  // ball defect: the ball's rotation angle about z (rad)
+  // Ball defect on a model 3d bearing: the ball's orientation in space, and the pit's centre in
+  // its body frame (position and track: azimuth and latitude at the start).
+  bool three_d_ = false;
+  ohmdem::BallOrientation orientation_;
+  double ball_recess_3d(const ohmdem::BearingSurface &race, double dx, double dy, double alpha,
+                        bool &masked) const;
   double width_ = 0;  // race pit, model 3d: its extent across the raceway (m); 0: the whole track
-  double track_ = 0;  // the contact angle of its centre line (rad)
+  double track_ = 0;  // the contact angle of its centre line (rad); a ball pit: its latitude
   double ball_radius_ = 0;
   bool warned_wide_ = false;  // the wide-zone warning, once per fix
 };

@@ -267,10 +267,14 @@ void FixBearingRace::ring_half_kick(double dt)
 void FixBearingRace::ring_acceleration(double &ax, double &ay) const
 {
   ax = ay = 0.0;
-  if (settings_.load != Load::Radial) return;
+  double lx = load_fx_, ly = load_fy_;
+  if (settings_.on_housing())
+    housing_force(lx, ly);  // model 3d: the outer ring on its housing
+  else if (settings_.load != Load::Radial)
+    return;
   const double mass = settings_.ring_mass, damp = settings_.ring_damp;
-  ax = (load_fx_ - fx_ - damp * vcx_) / mass;
-  ay = (load_fy_ - fy_ - damp * vcy_) / mass;
+  ax = (lx - fx_ - damp * vcx_) / mass;
+  ay = (ly - fy_ - damp * vcy_) / mass;
 }
 
 void FixBearingRace::initial_integrate(int)

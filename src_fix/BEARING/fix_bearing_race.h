@@ -175,6 +175,7 @@ class FixBearingRace : public FixBearingBody {
   void post_force_3d();
   void initial_integrate_3d();
   void ring_half_kick_3d(double dt);
+  void housing_force(double &hx, double &hy) const;  // model 3d, outer ring on its housing
   double compute_vector_3d(int n);
   // The members a restart record holds, in file order, for a RestartWriter or RestartReader
   // (support/global_restart.h); `side` is the record's race side and model (side_code()).
@@ -184,6 +185,7 @@ class FixBearingRace : public FixBearingBody {
   // The defects' recess under ball i's contact at contact angle alpha (rad), as defect_recess.
   double defect_recess_3d(int i, double alpha, bool &in_zone) const;
   std::unique_ptr<ohmdem::RaceContactModel3d> model3d_;
+  const FixBearingRace *other_race_ = nullptr;  // the bearing's other race (build_model_3d)
   double cz_ = 0, vcz_ = 0;                          // axial position and velocity of the centre
   double tilt_[2] = {0, 0}, tilt_rate_[2] = {0, 0};  // the axis' tilt (rotation vector x, y)
   double tilt_inertia_ = 0, tilt_damp_ = 0;          // kg m^2, N m s

@@ -103,9 +103,11 @@ void FixBearingRace::build_model_3d()
   tilt_damp_ = m3.tilt_damp >= 0.0 ? m3.tilt_damp : 0.5 * s.ring_damp * r2;
 
   // With the other race: one clearance and one nominal angle, a play the grooves can hold.
+  other_race_ = nullptr;
   for (int k = 0; k < modify->nfix; ++k) {
     auto *other = dynamic_cast<FixBearingRace *>(modify->fix[k]);
     if (!other || other == this || other->settings_.inner == s.inner) continue;
+    other_race_ = other;
     const ohmdem::RaceSettings::Model3d &o3 = other->settings_.model3d;
     if (o3.clearance != m3.clearance || o3.alpha0 != m3.alpha0)
       error->fix_error(FLERR, this,
@@ -305,9 +307,17 @@ void FixBearingRace::initial_integrate_3d()
   }
 }
 
-// Half a velocity-Verlet kick: the radius (load force, settle) as in model 2d, the ring free
-// in space (load radial): its centre under F d + Fa z (z held with preload) and its tilt under
-// M about z x d, each against the balls' reactions and the viscous damping.
+// The housing's spring on the outer ring's centre (N): back toward the axis it was mounted on.
+void FixBearingRace::housing_force(double &hx, double &hy) const
+{
+  hx = -settings_.model3d.housing * (cx_ - axis_x_);
+  hy = -settings_.model3d.housing * (cy_ - axis_y_);
+}
+
+// Half a velocity-Verlet kick: the radius (load force, settle) as in model 2d; the outer ring on
+// its housing: its centre in the plane under the housing's spring; the ring free in space (load
+// radial): its centre under F d + Fa z (z held with preload) and its tilt under M about z x d;
+// each against the balls' reactions and the viscous damping.
 void FixBearingRace::ring_half_kick_3d(double dt)
 {
   const double h = 0.5 * dt;
@@ -316,6 +326,11 @@ void FixBearingRace::ring_half_kick_3d(double dt)
   const ohmdem::RaceSettings::Model3d &m3 = settings_.model3d;
   if ((load == Load::Force || load == Load::Settle) && !frozen_) {
     u_dot_ += h * (load_force_ - radial_sum_ - damp * u_dot_) / mass;
+  } else if (settings_.on_housing()) {
+    double hx = 0.0, hy = 0.0;
+    housing_force(hx, hy);
+    vcx_ += h * (hx - fx_ - damp * vcx_) / mass;
+    vcy_ += h * (hy - fy_ - damp * vcy_) / mass;
   } else if (load == Load::Radial) {
     vcx_ += h * (load_fx_ - fx_ - damp * vcx_) / mass;
     vcy_ += h * (load_fy_ - fy_ - damp * vcy_) / mass;
@@ -334,10 +349,11 @@ double FixBearingRace::compute_vector_3d(int n)
       return alpha_mean_;
     case 1:
       return alpha_max_;
-    case 2:
-      return (cx_ - axis_x_) * ux + (cy_ - axis_y_) * uy;
+    case 2:  // relative to the other ring: it moves on a housing
+      return (cx_ - (other_race_ ? other_race_->cx_ : axis_x_)) * ux +
+             (cy_ - (other_race_ ? other_race_->cy_ : axis_y_)) * uy;
     case 3:
-      return cz_;
+      return cz_ - (other_race_ ? other_race_->cz_ : 0.0);
     case 4:
       return -tilt_[0] * uy + tilt_[1] * ux;  // about z x d
     case 5:

@@ -38,7 +38,8 @@ void check_load(StyleArgs &a, RaceSettings &s, bool have_force, bool have_settle
     s.load_fy = s.load_force * s.dir_uy;
   }
   if (s.dynamic() && s.ring_mass <= 0.0)
-    a.fail("mass", "a positive ring mass (kg): required by load force, fixed settle and radial",
+    a.fail("mass",
+           "a positive ring mass (kg): required by load force, fixed settle, radial and housing",
            "nothing");
 }
 
@@ -132,8 +133,8 @@ RaceSettings parse_race_settings(LAMMPS_NS::Error *error, int narg, char **arg, 
   if (s.race_type > ntypes)
     a.fail("type", "an atom type between 1 and ntypes = " + std::to_string(ntypes),
            std::to_string(s.race_type).c_str());
+  check_race_3d(a, s);  // first: a 3D keyword under model 2d is named as such
   check_load(a, s, have_force, have_settle, have_interference, dir_x, dir_y);
-  check_race_3d(a, s);
   // Model 3d takes F = 0 (a ring under an axial load or moment alone); model 2d does not.
   if (have_force && s.force_var.empty() && !(s.load_force > 0.0) && !s.model3d.on)
     a.fail("force", "the load magnitude F > 0 (N), or v_NAME", "0");

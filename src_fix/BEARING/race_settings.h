@@ -44,14 +44,18 @@ struct RaceSettings {
     double preload = 0;            // (m)
     double tilt_inertia = 0;       // kg m^2 (0: mass * radius^2 / 2)
     double tilt_damp = -1;         // N m s (< 0: damp * radius^2 / 2)
+    double housing = 0;  // outer ring: its housing's radial stiffness (N/m; 0: the ring held)
     int given = 0;                 // which of its keywords were given (race_settings_3d.cpp)
   } model3d;
 
   // The ring's radius or centre moves under a force: it has a mass.
   bool dynamic() const
   {
-    return load == RaceLoad::Force || load == RaceLoad::Settle || load == RaceLoad::Radial;
+    return load == RaceLoad::Force || load == RaceLoad::Settle || load == RaceLoad::Radial ||
+           on_housing();
   }
+  // Model 3d, outer ring: its centre free in the plane on the housing's spring.
+  bool on_housing() const { return model3d.housing > 0.0; }
 };
 
 // The arguments after "fix ID group bearing/race"; stops the run (error->all) with the

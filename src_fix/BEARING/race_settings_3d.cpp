@@ -21,13 +21,14 @@ enum Given {
   kMoment = 32,
   kPreload = 64,
   kInertia = 128,
-  kTiltDamp = 256
+  kTiltDamp = 256,
+  kHousing = 512
 };
 }  // namespace
 
 const char *race_keywords_3d()
 {
-  return "model clearance alpha0 shoulder axial moment preload inertia tilt_damp";
+  return "model clearance alpha0 shoulder axial moment preload inertia tilt_damp housing";
 }
 
 bool parse_race_keyword_3d(StyleArgs &a, const std::string &kw, RaceSettings &s)
@@ -75,6 +76,10 @@ bool parse_race_keyword_3d(StyleArgs &a, const std::string &kw, RaceSettings &s)
   } else if (kw == "tilt_damp") {
     m.tilt_damp = a.non_negative(kw, "the viscous damping of the ring's tilt, >= 0 (N m s)");
     m.given |= kTiltDamp;
+  } else if (kw == "housing") {
+    m.housing = a.non_negative(
+        kw, "the housing's radial stiffness under the outer ring, >= 0 (N/m; 0: the ring held)");
+    m.given |= kHousing;
   } else {
     return false;
   }
@@ -87,9 +92,9 @@ void check_race_3d(StyleArgs &a, RaceSettings &s)
   const int given = m.given;
   if (m.shoulder == 0.0) m.shoulder = 0.5 * kPi;
   if (!m.on) {
-    const char *names[] = {"clearance", "alpha0",  "shoulder", "axial",
-                           "moment",    "preload", "inertia",  "tilt_damp"};
-    for (int k = 0; k < 8; ++k)
+    const char *names[] = {"clearance", "alpha0",  "shoulder",  "axial",  "moment",
+                           "preload",   "inertia", "tilt_damp", "housing"};
+    for (int k = 0; k < 9; ++k)
       if (given & (kClearance << k))
         a.fail(names[k], "model 3d (the keyword belongs to the 3D bearing)", "model 2d");
     return;
@@ -105,6 +110,15 @@ void check_race_3d(StyleArgs &a, RaceSettings &s)
              "radial with axial, moment, preload, inertia or tilt_damp (the ring free in "
              "space)",
              "another mode");
+  if (s.on_housing() && s.inner)
+    a.fail("housing",
+           "a stiffness on the outer race only (the shaft is free under load radial)",
+           std::to_string(m.housing).c_str());
+  if (s.on_housing() && s.load != RaceLoad::None)
+    a.fail("load",
+           "none with housing (the outer ring's centre is held by the housing's spring, not "
+           "loaded)",
+           "another mode");
   if (m.preload_set && m.axial != 0.0)
     a.fail("preload",
            "none with an axial force: the axial position is held (preload) or "

@@ -305,6 +305,71 @@ def test_defect_width(r):
           f"the same pit on the path (track 13 deg): masked, R up {runs['on_path'][1]:.1%}")
 
 
+def masked_events(sig, t0):
+    """The times at which the defective ball's contacts enter its pit (n_masked rising from 0)
+    after t0."""
+    t, on = sig["time"], sig["n_masked"] > 0
+    rise = np.nonzero(on[1:] & ~on[:-1])[0] + 1
+    return t[rise][t[rise] > t0]
+
+
+def test_ball_defect(r):
+    # A 20 deg pit on ball 1 (position 0: outward at the start), rolling at 500 rad/s under
+    # 1000 N axial with a 20 um clearance (alpha 14.5 deg). The ball turns about its rolling
+    # axis, across its contact line: a pit on the contact line at the start (latitude alpha)
+    # lies on the path of both contacts and meets one every half turn of the ball in the cage's
+    # frame, 1 / (2 BSF) apart with BSF = w_c (dm/D)(1 + gamma) / (2 pi); a pit at the ball's
+    # pole (latitude 90 deg, 14.5 deg from the rolling axis) is never met. (The ball's spin
+    # about its contact line, 0.05 of its rolling, tilts its axis of rotation by 2.8 deg: the
+    # contact opposite the one the pit starts on passes 5.6 deg from the pit's centre, so that a
+    # pit of 10 deg meets only one contact a turn.)
+    base = dict(omega=500, Fr=0, Fa=1000, clearance=20e-6, defect="ball", size=20, position=0,
+                tend=0.06, nout=10)
+    _, _, on_path = run3d(r, "ball_on_path", dtrack=14.5, **base)
+    _, _, pole = run3d(r, "ball_pole", dtrack=90, **base)
+    w = on_path["time"] > 0.03
+    a = np.radians(0.5 * (on_path["alpha_inner_mean"][w] + on_path["alpha_outer_mean"][w]).mean())
+    g = DB * math.cos(a) / DPW
+    bsf = on_path["omega_balls"][w].mean() * DPW / DB * (1 + g) / (2 * math.pi)
+    ev = masked_events(on_path, 0.03)
+    period = (ev[-1] - ev[0]) / (len(ev) - 1) if len(ev) > 1 else math.inf
+    check(len(ev) >= 10 and abs(period * 2 * bsf - 1) < 0.01,
+          f"a pit on the contact path: {len(ev)} contacts met, {period * 1e3:.4f} ms apart, "
+          f"1 / (2 BSF) = {1e3 / (2 * bsf):.4f} ms at alpha {math.degrees(a):.2f} deg "
+          f"({period * 2 * bsf - 1:+.2e})")
+    check(np.all(pole["n_masked"] == 0),
+          "a pit at the ball's pole (14.5 deg from its rolling axis) is never met")
+    # The ball's orientation goes through restart files and across processes: a run split by
+    # write_restart/read_restart and a run on 2 processes give the single run's rows.
+    case = dict(model="3d", dt=DT, omega=500, Fa=1000, clearance=20e-6, defect="ball", size=20,
+                dtrack=14.5, nout=10)
+    one, _ = r.run("ball_one", tend=0.008, **case)
+    two, _ = r.run("ball_two", tend=0.008, nprocs=2, **case)
+    first, _ = r.run("ball_restart_first", deck=os.path.join(os.path.dirname(__file__),
+                                                             "in.restart_first"),
+                     bearing_deck=r.deck, tend=0.004, **case)
+    second, _ = r.run("ball_restart_second", tend=0.008, start="restart",
+                      restart_file=os.path.join(first, "half.restart"), **case)
+    a = open(os.path.join(one, "signal.txt")).read().splitlines()
+    b = open(os.path.join(two, "signal.txt")).read().splitlines()
+    rows = open(os.path.join(second, "signal.txt")).read().splitlines()
+    masked = sum(float(x.split()[10]) > 0 for x in a[1:])
+    check(a == b and len(rows) > 1 and a[-(len(rows) - 1):] == rows[1:] and masked > 0,
+          f"the pit on a 3D ball: 1 and 2 processes and a run split by a restart give the same "
+          f"{len(a) - 1} rows ({masked} with the pit met)")
+    # The planar limit: no clearance, no axial load, a radial one; the pit on the equator
+    # meets the contacts as model 2d's ball pit does.
+    planar = dict(omega=500, F=2000, defect="ball", size=10, position=0, tend=0.04, nout=10,
+                  dt=DT)
+    o2, _ = r.run("ball_planar_2d", load="radial", **planar)
+    _, _, s3 = run3d(r, "ball_planar_3d", Fr=2000, **planar)
+    e2, e3 = masked_events(read_signal(o2), 0.02), masked_events(s3, 0.02)
+    p2, p3 = (np.diff(e).mean() if len(e) > 1 else math.inf for e in (e2, e3))
+    check(len(e3) >= 6 and abs(len(e3) - len(e2)) <= 1 and abs(p3 / p2 - 1) < 0.01,
+          f"planar limit: model 3d meets the pit {len(e3)} times, {p3 * 1e3:.4f} ms apart; "
+          f"model 2d {len(e2)} times, {p2 * 1e3:.4f} ms apart ({p3 / p2 - 1:+.1e})")
+
+
 def test_post_frequencies(r):
     # ohmdem-post takes the contact angle (--contact-angle, as --beta) and a model 3d run's
     # run.json gives it the run's mean angle: Harris' frequencies with cos(alpha) [H, ch. 1]:
@@ -448,6 +513,6 @@ if __name__ == "__main__":
                     "angular_contact": test_angular_contact, "planar_limit": test_planar_limit,
                     "kinematics": test_kinematics, "stability": test_stability,
                     "errors": test_errors, "mpi_restart": test_mpi_restart,
-                    "defect_width": test_defect_width,
+                    "defect_width": test_defect_width, "ball_defect": test_ball_defect,
                     "post_frequencies": test_post_frequencies, "lubricated": test_lubricated},
                    "ohmdem3d_")
