@@ -378,6 +378,21 @@ bool FixBearingDefect::pit_near(const ohmdem::BearingSurface &race, double dx, d
   return true;
 }
 
+// Model 3d: beside a pit narrower than the track (recess_at's test across the groove) the
+// contact's film does not meet it.
+bool FixBearingDefect::pit_near_at(const ohmdem::BearingSurface &race, double dx, double dy,
+                                   double alpha, double reach, ohmdem::PitView &pit) const
+{
+  if (width_ > 0.0 && (kind_ == Kind::Inner || kind_ == Kind::Outer)) {
+    ohmdem::Pit across;
+    across.width = width_;
+    across.depth = depth_;
+    across.ball_radius = race.ball_radius;
+    if (!ohmdem::in_pit(across, race.groove * (alpha - track_))) return false;
+  }
+  return pit_near(race, dx, dy, reach, pit);
+}
+
 // The broken bar separates pocket K from its neighbour on `side`: it is the wall on that side
 // of pocket K and the opposite wall of the neighbour.
 bool FixBearingDefect::breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const

@@ -52,6 +52,8 @@ class FixBearingDefect : public Fix, public ohmdem::BearingDefect {
                    double alpha, bool &masked) const override;
   bool pit_near(const ohmdem::BearingSurface &race, double dx, double dy, double reach,
                 ohmdem::PitView &pit) const override;
+  bool pit_near_at(const ohmdem::BearingSurface &race, double dx, double dy, double alpha,
+                   double reach, ohmdem::PitView &pit) const override;
   bool breaks_wall(const ohmdem::BearingSurface &cage, int pocket, int side) const override;
 
  private:

@@ -420,6 +420,7 @@ double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surfac
 
 bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const
 {
+  if (three_d()) return defect_pit_3d(i, reach, pit, rest);
   const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;  // as defect_recess
   bool found = false, in_zone = false;
   for (const auto *d : defects_) {

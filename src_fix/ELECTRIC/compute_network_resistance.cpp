@@ -137,13 +137,6 @@ void ComputeNetworkResistance::init()
       error->all(FLERR,
                  "compute network/resistance: keyword 'lubricant' needs pair no: particle-"
                  "particle contacts in oil are not modelled (a bearing's balls do not touch)");
-    // Model 3d: the closed form with each contact's film at its contact angle
-    // (lubricated_bearing_3d.cpp); not yet its general network, breakdown or pits.
-    for (const FixBearingRace *race : contacts_->races())
-      if (race->three_d() && (lube_.network || lube_.breakdown > 0.0 || race->has_defects()))
-        error->all(FLERR,
-                   "compute network/resistance: keyword 'lubricant' with model 3d races takes "
-                   "the closed form (closedform yes), no breakdown and no defects");
     lubricated_->init(context_);
   }
   choose_paths();

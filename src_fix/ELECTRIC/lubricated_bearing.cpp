@@ -29,13 +29,6 @@ namespace lub = ohmdem::lubrication;
 
 namespace {
 
-// A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
-// the pit's centre is at -offset.
-lub::PitStrip pit_strip(const ohmdem::PitView &p)
-{
-  return {-p.offset - 0.5 * p.width, -p.offset + 0.5 * p.width, p.depth, p.ball_radius};
-}
-
 // The gap between a ball and a race it does not press (m), along the line through the ring
 // centre.
 double race_gap(const double *x, double r, const FixBearingRace &race)
@@ -286,8 +279,19 @@ void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gat
   for (const PitFix &f : pit_fixes_)
     lub::contact_over_pit(film_[f.side].input(), f.fn, f.rest, pit_strip(f.pit),
                           films_[f.side][f.index]);
-  // ... and the balls: each its two contacts in series. The records only where this step
-  // needs them (breakdown changes them; the network and an export read them); else when read.
+  combine<Kernel>(context, gather, hmin, lambda_min);
+}
+
+// The balls of this evaluation (balls_in_, films_, idle_): each its two contacts in series,
+// broken down where the excitation breaks a film, and the bearing's admittance, from the
+// general network or the balls in parallel in tag order.
+template <class Kernel>
+void LubricatedBearing::combine(const ResistanceContext &context, bool gather,
+                                const double hmin[2], double lambda_min)
+{
+  const std::size_t nballs = balls_in_.size();
+  // The records only where this step needs them (breakdown changes them; the network and an
+  // export read them); else when read.
   const bool breakdown = settings_.breakdown > 0.0;
   if (breakdown || settings_.network || gather) build_records();
   balls_.resize(nballs);
@@ -353,6 +357,9 @@ void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gat
   y_bearing_ = y_bearing;
   current_ = context.current;
 }
+
+template void LubricatedBearing::combine<lub::PlainKernel>(const ResistanceContext &, bool,
+                                                          const double[2], double);
 
 void LubricatedBearing::impedance(LubricatedResult &out) const
 {

@@ -20,12 +20,20 @@
 #include "lubrication/bearing_kernels.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/lubricant.h"
+#include "lubrication/pit_gap.h"
 #include "lubrication/race_admittance.h"
 #include "pointers.h"
 #include "support/bearing_surface.h"
 #include "support/race_contact_view.h"
 
 namespace LAMMPS_NS {
+
+// A race pit in the contact's rolling coordinate x (from the contact point along the raceway):
+// the pit's centre is at -offset.
+inline ohmdem::lubrication::PitStrip pit_strip(const ohmdem::PitView &p)
+{
+  return {-p.offset - 0.5 * p.width, -p.offset + 0.5 * p.width, p.depth, p.ball_radius};
+}
 
 // The keywords of compute network/resistance that concern the lubricant.
 struct LubricationSettings {
@@ -99,6 +107,11 @@ class LubricatedBearing : protected Pointers {
   // evaluate() with the settings' kernel (lib/lubrication/bearing_kernels.h).
   template <class Kernel>
   void evaluate_with(const ResistanceContext &context, bool gather, const double *g_dry);
+  // The end of an evaluation, both models: the balls from their contacts (breakdown, series),
+  // the bearing's admittance (the network or the ordered sum), the films' minima.
+  template <class Kernel>
+  void combine(const ResistanceContext &context, bool gather, const double hmin[2],
+               double lambda_min);
   // Ball i's contact with race `side` (its row `view`, its entrainment speed): a race the ball
   // does not press gets an idle record (the gap's capacitance), else the contact's inputs go
   // into the race's batch (g_ball: the ball's dry, metallic conductance between its two
@@ -114,8 +127,12 @@ class LubricatedBearing : protected Pointers {
   double ball_dry_conductance(const ResistanceContext &context, int i);
   // Model 3d races (lubricated_bearing_3d.cpp): each contact its own effective radii, ellipse
   // and entrainment speed at its contact angle (FixBearingRace::film_geometry_3d), its
-  // admittance from lub::contact_admittance; evaluate()'s records and sums as in model 2d.
+  // admittance from lub::contact_admittance; the balls, breakdown and network as in model 2d
+  // (combine()).
   void evaluate_3d(const ResistanceContext &context, bool gather, const double *g_dry);
+  // Model 3d: ball i's dry (metallic) conductance between the races where the closed form has
+  // none this step (the general network, an export step, a ball on one race).
+  double ball_dry_conductance_3d(const ResistanceContext &context, int i) const;
 
   LubricationSettings settings_;
   double omega_ = 0;  // 2 pi fexc

@@ -6,8 +6,9 @@
 // compute's area model, as model 2d's films) and the
 // entrainment speed of its surfaces past the moving contact point in the rolling direction
 // (contact/race_contact_3d.h); a race the ball does not press gets the capacitance of its gap
-// along the contact line. The balls' two contacts in series, the balls in parallel in tag order,
-// as in model 2d. doc/methods/bearing_3d.md, "Lubricated contacts".
+// along the contact line. The balls' two contacts in series (broken down where the excitation
+// breaks a film), the balls in parallel in tag order or the general network, as in model 2d.
+// doc/methods/bearing_3d.md, "Lubricated contacts".
 #include <mpi.h>
 
 #include <algorithm>
@@ -21,10 +22,61 @@
 #include "ELECTRIC/lubricated_bearing.h"
 #include "ELECTRIC/lubricated_network.h"
 #include "atom.h"
+#include "conduction/ball_between_races_3d.h"
 #include "lubrication/contact_admittance.h"
+#include "lubrication/pit_contact.h"
 
 using namespace LAMMPS_NS;
 namespace lub = ohmdem::lubrication;
+
+// Both spots pressed: the closed form's own conductance (ball_resistances_3d with the same
+// spots, ellipses and conductivities, so the network and the closed form agree to the bit); one
+// pressed: the ball facing that race on both sides (its spot and the point opposite), as model
+// 2d's ball_dry_conductance; neither: 0.
+double LubricatedBearing::ball_dry_conductance_3d(const ResistanceContext &context, int i) const
+{
+  const double gamma = context.gamma_type[atom->type[i]];
+  const ohmdem::RaceContactView v[2] = {race_[0]->contact_of(i), race_[1]->contact_of(i)};
+  const bool pressed[2] = {v[0].fn() > 0.0, v[1].fn() > 0.0};
+  if (!(gamma > 0.0) || !(pressed[0] || pressed[1])) return 0.0;
+  const int a = pressed[0] ? 0 : 1, b = pressed[1] ? 1 : 0;
+  const double *x = atom->x[i];
+  const double u[3] = {v[a].point_x() - x[0], v[a].point_y() - x[1], v[a].point_z() - x[2]};
+  double w[3] = {v[b].point_x() - x[0], v[b].point_y() - x[1], v[b].point_z() - x[2]};
+  if (a == b)
+    for (int k = 0; k < 3; ++k) w[k] = -u[k];
+  const ohmdem::AreaModel area = context.contacts->area_model();
+  const ohmdem::BallResistances3d r = ohmdem::ball_resistances_3d(
+      context.model, gamma, atom->radius[i], context.gamma_type[race_[a]->race_type()],
+      context.gamma_type[race_[b]->race_type()], race_[a]->ellipse_of(i, area),
+      race_[b]->ellipse_of(i, area), u, w);
+  return 1.0 / r.total();
+}
+
+namespace {
+
+// The race constants contact_over_pit and idle_over_pit read, for one contact of model 3d (its
+// own radii and ellipse at its contact angle).
+lub::RaceInput race_input_3d(const FixBearingRace::FilmGeometry &fg,
+                             const LubricationSettings &settings, const lub::LubricantState &oil)
+{
+  lub::RaceInput r;
+  r.rx = fg.rx;
+  r.ry = fg.ry;
+  r.e_prime = fg.e_prime;
+  const double cbrt_fn = fg.pressed ? std::cbrt(fg.fn) : 0.0;
+  r.a_coef = cbrt_fn > 0.0 ? fg.a / cbrt_fn : 0.0;
+  r.b_coef = cbrt_fn > 0.0 ? fg.b / cbrt_fn : 0.0;
+  r.eta = oil.eta;
+  r.alpha = oil.alpha;
+  r.sigma = settings.roughness;
+  r.r_wet = settings.wetted;
+  r.eps_r = oil.eps_r;
+  r.resistivity = oil.resistivity;
+  return r;
+}
+
+}  // namespace
 
 void LubricatedBearing::evaluate_3d(const ResistanceContext &context, bool gather,
                                     const double *g_dry)
@@ -38,23 +90,32 @@ void LubricatedBearing::evaluate_3d(const ResistanceContext &context, bool gathe
   for (auto &f : films_) f.clear();
   for (int i = 0; i < atom->nlocal; ++i) {
     if (!(atom->mask[i] & context.groupbit)) continue;
-    // The closed form's conductance of this step (model 3d: always the closed form); none: 0.
-    const double g_ball = g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : 0.0;
+    // The closed form's conductance of this step where it has one.
+    const double g_ball =
+        g_dry && !std::isnan(g_dry[i]) ? g_dry[i] : ball_dry_conductance_3d(context, i);
     int ref[2] = {0, 0};
     for (int side = 0; side < 2; ++side) {
       const FixBearingRace &race = *race_[side];
       const FixBearingRace::FilmGeometry fg =
           race.film_geometry_3d(i, context.contacts->area_model());
+      // A race pit within the wetted circle is a strip across the raceway, as in model 2d
+      // (beside a narrow pit the film does not meet it); the other defects' recess (a ball's
+      // pit) under the contact over the whole circle.
+      double rest = 0.0;
+      const bool near_pit = race.has_defects() && race.pit_near(i, settings_.wetted, pit_, rest);
+      const lub::RaceInput frame = near_pit ? race_input_3d(fg, settings_, state_) : lub::RaceInput();
       if (!fg.pressed) {
         LubricatedContact &out = idle_.emplace_back();
         out.tag = static_cast<std::int64_t>(atom->tag[i]);
         out.side = side;
-        const double gap = std::max(fg.gap, 0.0);
-        out.c = lub::idle_gap_capacitance(gap, fg.rx, fg.ry, settings_.wetted, state_.eps_r,
-                                          settings_.roughness);
+        // Over a pit the ball lifted off the pit's surface: no closer than the nominal surface.
+        const double gap = std::max(fg.gap, 0.0) + rest;
+        out.c = near_pit ? lub::idle_over_pit(frame, gap, pit_strip(pit_))
+                         : lub::idle_gap_capacitance(gap, fg.rx, fg.ry, settings_.wetted,
+                                                     state_.eps_r, settings_.roughness);
         out.y = {0.0, omega() * out.c};
-        out.h_central = out.h_min = gap;
-        out.lambda = gap / settings_.roughness;
+        out.h_central = out.h_min = near_pit ? gap + lub::strip_recess(pit_strip(pit_), 0.0) : gap;
+        out.lambda = out.h_min / settings_.roughness;
         ref[side] = -static_cast<int>(idle_.size());
         continue;
       }
@@ -73,8 +134,10 @@ void LubricatedBearing::evaluate_3d(const ResistanceContext &context, bool gathe
       in.r_wet = settings_.wetted;
       in.eps_r = state_.eps_r;
       in.resistivity = state_.resistivity;
-      in.g_dry = race.contact_of(i).conducts() ? 2.0 * g_ball : 0.0;
-      const lub::ContactAdmittance c = lub::contact_admittance(in);
+      in.g_dry = race.contact_of(i).conducts() ? 2.0 * g_ball : 0.0;  // a defect zone: no metal
+      in.recess = rest;
+      lub::ContactAdmittance c = lub::contact_admittance(in);
+      if (near_pit) lub::contact_over_pit(frame, fg.fn, rest, pit_strip(pit_), c);
       const int k = inner_[side];
       hmin[k] = std::min(hmin[k], c.film.minimum);
       lambda_min = std::min(lambda_min, c.lambda);
@@ -84,24 +147,5 @@ void LubricatedBearing::evaluate_3d(const ResistanceContext &context, bool gathe
     balls_in_[nballs++] = {static_cast<std::int64_t>(atom->tag[i]), {ref[0], ref[1]}};
   }
   balls_in_.resize(nballs);
-  if (gather) build_records();
-  balls_.resize(nballs);
-  for (std::size_t n = 0; n < nballs; ++n) {
-    std::complex<double> y[2];
-    for (int side = 0; side < 2; ++side) {
-      const int r = balls_in_[n].ref[side];
-      y[side] = r < 0 ? idle_[-1 - r].y : films_[side][r].y(omega());
-    }
-    const std::complex<double> s = y[0] + y[1];
-    const std::complex<double> ball = s == 0.0 ? 0.0 : y[0] * y[1] / s;
-    balls_[n].tag = balls_in_[n].tag;
-    balls_[n].v = {ball.real(), ball.imag()};
-  }
-  if (gather) network_->gather(contacts_, world);
-  const auto sum = ohmdem::ordered_sum<2>(gather_.gather(balls_, world));
-  local_min_[0] = hmin[0];
-  local_min_[1] = hmin[1];
-  local_min_[2] = lambda_min;
-  y_bearing_ = {sum[0], sum[1]};
-  current_ = context.current;
+  combine<lub::PlainKernel>(context, gather, hmin, lambda_min);
 }

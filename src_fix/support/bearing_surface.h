@@ -68,6 +68,15 @@ class BearingDefect {
     (void)race, (void)dx, (void)dy, (void)reach, (void)pit;
     return false;
   }
+  // Model 3d: the same for a contact at the contact angle alpha (rad): a pit with an extent
+  // across the raceway that the contact runs beside is not near it. A defect without that
+  // extent answers pit_near().
+  virtual bool pit_near_at(const BearingSurface &race, double dx, double dy, double alpha,
+                           double reach, PitView &pit) const
+  {
+    (void)alpha;
+    return pit_near(race, dx, dy, reach, pit);
+  }
   // Whether the wall on `side` (+1 leading, -1 trailing, in the sense of increasing angle) of
   // pocket `pocket` of `cage` is broken.
   virtual bool breaks_wall(const BearingSurface &cage, int pocket, int side) const = 0;
