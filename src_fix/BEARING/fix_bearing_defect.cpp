@@ -422,10 +422,9 @@ void FixBearingDefect::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
   const bool oriented = kind_ == Kind::Ball && three_d_;
-  const double list[6] = {spin_,          static_cast<double>(static_cast<int>(kind_) +
-                                                              (oriented ? kOriented : 0)),
-                          orientation_.w, orientation_.x,
-                          orientation_.y, orientation_.z};
+  const double code = static_cast<int>(kind_) + (oriented ? kOriented : 0);
+  const double list[6] = {spin_,          code,           orientation_.w,
+                          orientation_.x, orientation_.y, orientation_.z};
   const int n = oriented ? 6 : 2;
   const int size = n * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);

@@ -188,7 +188,7 @@ class FixBearingRace : public FixBearingBody {
   bool defect_pit_3d(int i, double reach, ohmdem::PitView &pit, double &rest) const;
   double contact_angle_3d(int i) const;  // rad, before the recess, in this ring's frame
   std::unique_ptr<ohmdem::RaceContactModel3d> model3d_;
-  const FixBearingRace *other_race_ = nullptr;  // the bearing's other race (build_model_3d)
+  const FixBearingRace *other_race_ = nullptr;       // the bearing's other race (build_model_3d)
   double cz_ = 0, vcz_ = 0;                          // axial position and velocity of the centre
   double tilt_[2] = {0, 0}, tilt_rate_[2] = {0, 0};  // the axis' tilt (rotation vector x, y)
   double tilt_inertia_ = 0, tilt_damp_ = 0;          // kg m^2, N m s

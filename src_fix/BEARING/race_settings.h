@@ -44,7 +44,7 @@ struct RaceSettings {
     double preload = 0;            // (m)
     double tilt_inertia = 0;       // kg m^2 (0: mass * radius^2 / 2)
     double tilt_damp = -1;         // N m s (< 0: damp * radius^2 / 2)
-    double housing = 0;  // outer ring: its housing's radial stiffness (N/m; 0: the ring held)
+    double housing = 0;            // outer ring: the housing's stiffness (N/m; 0: the ring held)
     int given = 0;                 // which of its keywords were given (race_settings_3d.cpp)
   } model3d;
 

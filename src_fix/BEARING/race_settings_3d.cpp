@@ -111,8 +111,7 @@ void check_race_3d(StyleArgs &a, RaceSettings &s)
              "space)",
              "another mode");
   if (s.on_housing() && s.inner)
-    a.fail("housing",
-           "a stiffness on the outer race only (the shaft is free under load radial)",
+    a.fail("housing", "a stiffness on the outer race only (the shaft is free under load radial)",
            std::to_string(m.housing).c_str());
   if (s.on_housing() && s.load != RaceLoad::None)
     a.fail("load",

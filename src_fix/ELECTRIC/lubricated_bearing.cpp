@@ -286,8 +286,8 @@ void LubricatedBearing::evaluate_with(const ResistanceContext &context, bool gat
 // broken down where the excitation breaks a film, and the bearing's admittance, from the
 // general network or the balls in parallel in tag order.
 template <class Kernel>
-void LubricatedBearing::combine(const ResistanceContext &context, bool gather,
-                                const double hmin[2], double lambda_min)
+void LubricatedBearing::combine(const ResistanceContext &context, bool gather, const double hmin[2],
+                                double lambda_min)
 {
   const std::size_t nballs = balls_in_.size();
   // The records only where this step needs them (breakdown changes them; the network and an
@@ -359,7 +359,7 @@ void LubricatedBearing::combine(const ResistanceContext &context, bool gather,
 }
 
 template void LubricatedBearing::combine<lub::PlainKernel>(const ResistanceContext &, bool,
-                                                          const double[2], double);
+                                                           const double[2], double);
 
 void LubricatedBearing::impedance(LubricatedResult &out) const
 {

@@ -103,7 +103,8 @@ void LubricatedBearing::evaluate_3d(const ResistanceContext &context, bool gathe
       // pit) under the contact over the whole circle.
       double rest = 0.0;
       const bool near_pit = race.has_defects() && race.pit_near(i, settings_.wetted, pit_, rest);
-      const lub::RaceInput frame = near_pit ? race_input_3d(fg, settings_, state_) : lub::RaceInput();
+      const lub::RaceInput frame =
+          near_pit ? race_input_3d(fg, settings_, state_) : lub::RaceInput();
       if (!fg.pressed) {
         LubricatedContact &out = idle_.emplace_back();
         out.tag = static_cast<std::int64_t>(atom->tag[i]);

@@ -503,7 +503,8 @@ def test_lubricated_network(r):
         for step in (1000, 2000, 3000, 4000):
             k = int(np.argmin(np.abs(s["time"] - step * DT)))
             z = ngspice_z(os.path.join(out, f"netlist.{step}.cir"), 0.1)
-            worst = max(worst, abs(abs(z) / s["Zabs"][k] - 1), abs(np.angle(z) / s["Zphase"][k] - 1))
+            worst = max(worst, abs(abs(z) / s["Zabs"][k] - 1),
+                        abs(np.angle(z) / s["Zphase"][k] - 1))
         check(worst < 1e-9, f"model 3d in oil: ngspice's .ac |Z| and phase are the compute's "
               f"(worst {worst:.1e}, 4 steps)")
     else:

@@ -57,9 +57,10 @@ def test_static(r):
 def test_natural_frequency(r):
     # Light damping on both rings and a 40 um clearance against +-10 um of common motion, so
     # that the balls outside the load zone mostly keep off the rings through the swing (those
-    # beside it touch at times, which the linear model leaves out). The linear model: dofs y_o (outer ring, +y), y_i (shaft, +y) and r_j (loaded ball j,
-    # outward); ball j at c_j = cos(angle from +y): outer compression r_j - c_j y_o, inner
-    # c_j y_i - r_j; the housing K y_o^2 / 2.
+    # beside it touch at times, which the linear model leaves out). The linear model: dofs
+    # y_o (outer ring, +y), y_i (shaft, +y) and r_j (loaded ball j, outward); ball j at
+    # c_j = cos(angle from +y): outer compression r_j - c_j y_o, inner c_j y_i - r_j; the
+    # housing K y_o^2 / 2.
     Fr, K, C, Pd = 500.0, 5e7, 20.0, 40e-6
     tend = 0.008
     out, _, sig = run3d(r, "natural", Fr=Fr, housing=K, Chousing=C, Cinner=C, clearance=Pd,

@@ -67,6 +67,6 @@ TEST(BallPit3d, ContactDirectionsFollowTheTorusSign)
   expect_near(in, -1.0 * out, 1e-16);
   EXPECT_NEAR(ohmdem::angle_between(out, in), M_PI, 1e-12);
   EXPECT_NEAR(ohmdem::angle_between(out, ohmdem::ball_pit_centre(0.0, alpha)), 0.0, 1e-12);
-  EXPECT_NEAR(ohmdem::angle_between(ohmdem::ball_pit_centre(0.3, 0.0), {0.0, 0.0, 1.0}),
-              0.5 * M_PI, 1e-15);
+  EXPECT_NEAR(ohmdem::angle_between(ohmdem::ball_pit_centre(0.3, 0.0), {0.0, 0.0, 1.0}), 0.5 * M_PI,
+              1e-15);
 }
