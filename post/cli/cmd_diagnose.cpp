@@ -281,7 +281,9 @@ int run_located(const std::vector<std::string> &argv, bool size_only)
   o.estimate_size = !a.has("--no-size");
   o.load = a.has("--load") ? a.get("--load") : meta.load.value_or("");
   if (!o.load.empty() && o.load != "force" && o.load != "fixed" && o.load != "radial")
-    throw Error("diagnose: --load must be force, fixed or radial, got '" + o.load + "'");
+    throw Error(std::string("diagnose: ") +
+                (a.has("--load") ? "--load" : meta.path + "'s \"load\"") +
+                " must be force, fixed or radial, got '" + o.load + "'");
   if (a.has("--pulse-height"))
     o.pulse_height = a.number_in("--pulse-height", 0, Range::open(0, 10), "a relative jump");
   if (sa) o.shaft_angle = &sa->theta;

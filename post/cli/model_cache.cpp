@@ -89,6 +89,10 @@ Scene record_scene(const std::string &record, const RunMetadata &meta, const std
   std::stringstream js;
   js << jin.rdbuf();
   const Json j = Json::parse(js.str(), meta.path);
+  if (const Json *m = j.find("model"); m && m->is_string() && m->string() == "3d")
+    throw Error("model: " + meta.path +
+                " is a model 3d run's: banks and curves are made of the planar scene (model 2d) "
+                "only");
   std::map<std::string, std::string> v;  // the scene's values, canonical
   std::vector<std::string> deck;
   // run.json's key -> the deck's variable: the bearing by its values ("custom"), never its name

@@ -56,6 +56,10 @@ RunMetadata read_run_metadata(const std::string &path)
   m.bearing = text(j, "bearing", path);
   m.defect = text(j, "defect", path);
   m.load = text(j, "load", path);
+  if (m.load && *m.load == "shaft") {
+    const std::optional<double> fr = number(j, "Fr", path);
+    m.load = fr && *fr > 0.0 ? "radial" : "force";
+  }
   m.omega_inner = number(j, "omega_inner", path);
   m.nb = count(j, "nb", path);
   m.db = number(j, "db", path);

@@ -11,6 +11,9 @@ namespace ohmdem::post {
 
 struct RunMetadata {
   std::string path;  // empty when no metadata was found
+  // load: force, fixed or radial; a model 3d run's "shaft" (its shaft under Fr, Fa, M, the
+  // outer ring held or on its housing) reads as the load zone it makes: radial with Fr > 0,
+  // else force (an axial load or preload loads every ball alike).
   std::optional<std::string> bearing, defect, load;
   std::optional<std::string> catalog_name;  // the -var bearing NAME the run started from
   std::optional<double> omega_inner;        // shaft angular speed (rad/s)

@@ -13,6 +13,8 @@
                     for the planar ring.
   mpi               1 and 2 processes, and a run split by write_restart/read_restart, give the
                     same signal to the last bit.
+  diagnose          ohmdem-post diagnose names an outer pit of a 3D run from R and from the
+                    outer ring's acceleration, with the run.json beside the record.
 
 Usage: housing3d_tests.py TEST --exe OHMDEM --src SOURCE_DIR
 """
@@ -122,6 +124,29 @@ def test_mpi(r):
           f"{len(a) - 1} rows")
 
 
+def test_diagnose(r):
+    # As a user runs it: a 1 deg outer pit in the load zone (+y, position 90) of the 3D bearing
+    # under Fr 1000 N and Fa 300 N on its housing; `ohmdem-post diagnose` with the run.json
+    # beside the record (its "load": "shaft" read as the radial load it is) names the outer race
+    # from R and from the housing's acceleration.
+    import subprocess
+    post = os.path.join(os.path.dirname(r.exe), "ohmdem-post")
+    out, _, _ = run3d(r, "diagnose", Fr=1000, Fa=300, clearance=10e-6, housing=5e7,
+                      defect="outer", size=1, position=90, tend=0.2, nout=10)
+    for column in ("R", "acc_along"):
+        res = subprocess.run([post, "diagnose", os.path.join(out, "signal.txt"), "--column",
+                              column], capture_output=True, text=True)
+        verdict = [l for l in res.stdout.splitlines() if l.startswith("defect:")]
+        check(res.returncode == 0 and verdict and verdict[0].split()[1] == "outer",
+              f"diagnose --column {column} of a model 3d run on its housing: "
+              f"{verdict[0] if verdict else res.stderr.strip()[-200:]}")
+    # The model data of a size are the planar scene's: `model` refuses the 3D record by name.
+    res = subprocess.run([post, "model", os.path.join(out, "signal.txt")], capture_output=True,
+                         text=True)
+    check(res.returncode != 0 and "is a model 3d run's" in res.stderr,
+          f"model refuses a model 3d record: {res.stderr.strip()[-160:]}")
+
+
 if __name__ == "__main__":
     run_named_test({"static": test_static, "natural_frequency": test_natural_frequency,
-                    "mpi": test_mpi}, "ohmdem_housing_")
+                    "mpi": test_mpi, "diagnose": test_diagnose}, "ohmdem_housing_")
