@@ -92,9 +92,9 @@ struct BandKurtosis {
   double sk = kNaN, m = 0, m_eff = 0;
 };
 
-BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
+// The band's complex envelope at baseband, ends included (empty below 8 bins).
+std::vector<Complex> band_envelope(const std::vector<double> &x, double rate, Band band)
 {
-  BandKurtosis b;
   // the end jump treated as the kurtogram treats it (envelope.h): the band the kurtogram
   // chose is judged on the statistic it was chosen by
   const std::size_t n = x.size();
@@ -105,10 +105,20 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
   const double hi = band.hi > 0 ? band.hi : rate / 2;
   const auto k1 = static_cast<std::size_t>(std::max(1.0, std::ceil(band.lo / df)));
   const auto k2 = std::min(X.size() - 1, static_cast<std::size_t>(std::floor(hi / df)));
-  if (k2 < k1 + 7) return b;
+  if (k2 < k1 + 7) return {};
   std::vector<Complex> full(X.begin() + static_cast<long>(k1),
                             X.begin() + static_cast<long>(k2) + 1);
   cfft(full, +1);
+  return full;
+}
+
+BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band,
+                           const std::vector<Complex> *given)
+{
+  BandKurtosis b;
+  const std::vector<Complex> made = given ? std::vector<Complex>() : band_envelope(x, rate, band);
+  const std::vector<Complex> &full = given ? *given : made;
+  if (full.empty()) return b;
   const std::size_t guard = end_guard(full.size());
   const std::vector<Complex> c(full.begin() + static_cast<long>(guard),
                                full.end() - static_cast<long>(guard));
@@ -165,7 +175,7 @@ DetectionTest gaussian_band(const std::vector<double> &x, double rate, const Det
   DetectionTest t;
   t.name = "band_sk";
   t.reference = "gaussian";
-  const BandKurtosis b = band_kurtosis(x, rate, opt.band);
+  const BandKurtosis b = band_kurtosis(x, rate, opt.band, opt.band_envelope);
   t.value = b.sk;
   t.samples = b.m_eff;
   if (!(b.m_eff >= 8) || !std::isfinite(b.sk)) {
