@@ -69,7 +69,10 @@ double kurtosis_effective_samples(const std::vector<double> &x)
   return static_cast<double>(n) / s;
 }
 
-double white_floor_ratio(const std::vector<double> &x)
+namespace {
+
+// white_floor_ratio with the record's standard deviation sd given
+double white_floor_ratio(const std::vector<double> &x, double sd)
 {
   // second differences of disjoint triples, (x_3i - 2 x_3i+1 + x_3i+2)/sqrt(6): N(0, sigma^2)
   // for white noise of sigma, ~(2 pi f/fs)^2 for a smooth component of frequency f
@@ -80,8 +83,14 @@ double white_floor_ratio(const std::vector<double> &x)
     d[i] = std::fabs(x[3 * i] - 2 * x[3 * i + 1] + x[3 * i + 2]) / std::sqrt(6.0);
   std::nth_element(d.begin(), d.begin() + static_cast<long>(h / 2), d.end());
   const double sigma_w = d[h / 2] / 0.6744897501960817;  // Phi^-1(3/4): MAD of N(0, 1)
-  const double sd = indicators(x).std;
   return sd > 0 ? sigma_w / sd : 0;
+}
+
+}  // namespace
+
+double white_floor_ratio(const std::vector<double> &x)
+{
+  return white_floor_ratio(x, indicators(x).std);
 }
 
 namespace {
@@ -135,12 +144,12 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band,
   return b;
 }
 
-DetectionTest gaussian_kurtosis(const std::vector<double> &x, double p)
+// ind: the indicators of x (detect's, computed once)
+DetectionTest gaussian_kurtosis(const std::vector<double> &x, const Indicators &ind, double p)
 {
   DetectionTest t;
   t.name = "kurtosis";
   t.reference = "gaussian";
-  const Indicators ind = indicators(x);
   t.value = ind.kurtosis;
   t.samples = kurtosis_effective_samples(x);
   // scipy.stats.kurtosistest asks for n >= 20 (the Anscombe-Glynn approximation below that)
@@ -156,12 +165,11 @@ DetectionTest gaussian_kurtosis(const std::vector<double> &x, double p)
   return t;
 }
 
-DetectionTest gaussian_crest(const std::vector<double> &x, double p)
+DetectionTest gaussian_crest(const std::vector<double> &x, const Indicators &ind, double p)
 {
   DetectionTest t;
   t.name = "crest";
   t.reference = "gaussian";
-  const Indicators ind = indicators(x);
   t.value = ind.peak / ind.std;  // x is mean-removed: peak |x - mean| / sigma
   t.samples = static_cast<double>(x.size());
   t.threshold = crest_threshold(t.samples, p);
@@ -297,15 +305,17 @@ Detection detect(const std::vector<double> &x, double rate, const DetectOptions 
   check_probability(opt.false_alarm, "{detect.false_alarm}");
   if (x.size() < 256) throw Error("detection needs at least 256 samples");
   Detection d;
-  d.white_floor = white_floor_ratio(x);
+  const Indicators ind = indicators(x);  // the three statistics below read them
+  d.white_floor = white_floor_ratio(x, ind.std);
   d.gaussian_applicable = d.white_floor >= kMinWhiteFloor;
   d.gaussian_note = d.gaussian_applicable
                         ? "white noise floor " + format_number(d.white_floor, 3) + " of the spread"
                         : "no noise floor (white floor " + format_number(d.white_floor, 3) +
                               " of the spread < " + format_number(kMinWhiteFloor) +
                               "): a deterministic record, judged only against {detect.baseline}";
-  std::vector<DetectionTest> g = {gaussian_kurtosis(x, opt.false_alarm),
-                                  gaussian_crest(x, opt.false_alarm), gaussian_band(x, rate, opt)};
+  std::vector<DetectionTest> g = {gaussian_kurtosis(x, ind, opt.false_alarm),
+                                  gaussian_crest(x, ind, opt.false_alarm),
+                                  gaussian_band(x, rate, opt)};
   for (auto &t : g) {
     if (!d.gaussian_applicable && t.applicable) {
       t.applicable = false;
