@@ -151,9 +151,14 @@ PassAutocorrelation pass_autocorrelation(const std::vector<double> &x, double ra
     for (std::size_t i = 0; i < len; ++i) mean += (seg[i] = e[mx - half + i]);
     mean /= static_cast<double>(len);
     for (double &v : seg) v -= mean;
+    // r[m] = sum over i ascending of seg[i] seg[i + m]: the lags side by side (the same sums
+    // in the same order, a loop that vectorises)
     std::vector<double> r(half + 1, 0.0);
-    for (std::size_t m = 0; m <= half; ++m)
-      for (std::size_t i = 0; i + m < len; ++i) r[m] += seg[i] * seg[i + m];
+    for (std::size_t i = 0; i < len; ++i) {
+      const double si = seg[i];
+      const std::size_t lags = std::min(half, len - 1 - i);
+      for (std::size_t m = 0; m <= lags; ++m) r[m] += si * seg[i + m];
+    }
     return r;
   };
   const auto end = static_cast<double>(e.size()) - period - static_cast<double>(half) - 1;
