@@ -120,8 +120,9 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   d.band_kurtosis = std::numeric_limits<double>::quiet_NaN();
   std::size_t bands_searched = 1;
   const double min_bw = std::min(s.rate / 4, 1.1 * opt.harmonics * fmax);
+  std::vector<std::complex<double>> band_envelope;  // the kurtogram's, for band_sk
   if (!(d.band.hi > d.band.lo)) {
-    const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw);
+    const Kurtogram kg = kurtogram(x, s.rate, opt.kurtogram_levels, min_bw, band_envelope);
     d.band = {kg.best.lo, kg.best.hi};
     d.band_kurtosis = kg.best.kurtosis;
     bands_searched = kg.cells.size();
@@ -133,6 +134,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
   dopt.false_alarm = opt.false_alarm;
   dopt.band = d.band;
   dopt.bands_searched = bands_searched;
+  if (!band_envelope.empty()) dopt.band_envelope = &band_envelope;
   std::vector<double> base;
   if (opt.baseline) {
     if (std::fabs(opt.baseline->rate / s.rate - 1) > 1e-9)
@@ -143,6 +145,7 @@ Diagnosis diagnose(const Signal &s, const DiagnoseOptions &opt)
     detrend(base.data(), base.size(), Detrend::Mean);
   }
   d.detection = detect(x, s.rate, dopt, opt.baseline ? &base : nullptr);
+  std::vector<std::complex<double>>().swap(band_envelope);
 
   // stage 2: identification; the envelope (a temporary) is freed once its spectrum is
   // analysed: lower peak memory

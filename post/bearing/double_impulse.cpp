@@ -23,10 +23,17 @@ std::vector<double> ar_residual(const std::vector<double> &x, int p)
   double mean = 0;
   for (double v : x) mean += v;
   mean /= static_cast<double>(n);
-  std::vector<double> r(static_cast<std::size_t>(p) + 1, 0.0);
-  for (int k = 0; k <= p; ++k)
-    for (std::size_t i = static_cast<std::size_t>(k); i < n; ++i)
-      r[k] += (x[i] - mean) * (x[i - k] - mean);
+  const auto order = static_cast<std::size_t>(p);
+  std::vector<double> xm(n);
+  for (std::size_t i = 0; i < n; ++i) xm[i] = x[i] - mean;
+  // r[k] = sum over i of xm[i] xm[i - k], i ascending: the lags side by side, not one after
+  // the other (the same sums, in the same order, with independent additions)
+  std::vector<double> r(order + 1, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double *back = xm.data() + i;
+    const std::size_t lags = std::min(order, i);
+    for (std::size_t k = 0; k <= lags; ++k) r[k] += back[0] * *(back - k);
+  }
   if (!(r[0] > 0)) return std::vector<double>(n, 0.0);
   // Levinson-Durbin: a[0] = 1, prediction error e; a tiny diagonal load keeps it stable on
   // records that are nearly a sum of a few sines
@@ -44,11 +51,18 @@ std::vector<double> ar_residual(const std::vector<double> &x, int p)
     e *= 1 - k * k;
     if (!(e > 0)) break;
   }
+  // out[i] = sum over j ascending of a[j] xm[i - j]; blocks of samples take one coefficient at
+  // a time (the same sums, in the same order, a loop that vectorises)
   std::vector<double> out(n, 0.0);
-  for (std::size_t i = static_cast<std::size_t>(p); i < n; ++i) {
-    double v = 0;
-    for (int j = 0; j <= p; ++j) v += a[j] * (x[i - j] - mean);
-    out[i] = v;
+  constexpr std::size_t kBlock = 1024;
+  for (std::size_t i0 = order; i0 < n; i0 += kBlock) {
+    const std::size_t i1 = std::min(n, i0 + kBlock);
+    for (std::size_t j = 0; j <= order; ++j) {
+      const double aj = a[j];
+      const double *in = xm.data() + i0 - j;
+      double *o = out.data() + i0;
+      for (std::size_t i = 0; i < i1 - i0; ++i) o[i] += aj * in[i];
+    }
   }
   return out;
 }
@@ -137,9 +151,14 @@ PassAutocorrelation pass_autocorrelation(const std::vector<double> &x, double ra
     for (std::size_t i = 0; i < len; ++i) mean += (seg[i] = e[mx - half + i]);
     mean /= static_cast<double>(len);
     for (double &v : seg) v -= mean;
+    // r[m] = sum over i ascending of seg[i] seg[i + m]: the lags side by side (the same sums
+    // in the same order, a loop that vectorises)
     std::vector<double> r(half + 1, 0.0);
-    for (std::size_t m = 0; m <= half; ++m)
-      for (std::size_t i = 0; i + m < len; ++i) r[m] += seg[i] * seg[i + m];
+    for (std::size_t i = 0; i < len; ++i) {
+      const double si = seg[i];
+      const std::size_t lags = std::min(half, len - 1 - i);
+      for (std::size_t m = 0; m <= lags; ++m) r[m] += si * seg[i + m];
+    }
     return r;
   };
   const auto end = static_cast<double>(e.size()) - period - static_cast<double>(half) - 1;

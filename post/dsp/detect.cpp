@@ -69,7 +69,10 @@ double kurtosis_effective_samples(const std::vector<double> &x)
   return static_cast<double>(n) / s;
 }
 
-double white_floor_ratio(const std::vector<double> &x)
+namespace {
+
+// white_floor_ratio with the record's standard deviation sd given
+double white_floor_ratio(const std::vector<double> &x, double sd)
 {
   // second differences of disjoint triples, (x_3i - 2 x_3i+1 + x_3i+2)/sqrt(6): N(0, sigma^2)
   // for white noise of sigma, ~(2 pi f/fs)^2 for a smooth component of frequency f
@@ -80,8 +83,14 @@ double white_floor_ratio(const std::vector<double> &x)
     d[i] = std::fabs(x[3 * i] - 2 * x[3 * i + 1] + x[3 * i + 2]) / std::sqrt(6.0);
   std::nth_element(d.begin(), d.begin() + static_cast<long>(h / 2), d.end());
   const double sigma_w = d[h / 2] / 0.6744897501960817;  // Phi^-1(3/4): MAD of N(0, 1)
-  const double sd = indicators(x).std;
   return sd > 0 ? sigma_w / sd : 0;
+}
+
+}  // namespace
+
+double white_floor_ratio(const std::vector<double> &x)
+{
+  return white_floor_ratio(x, indicators(x).std);
 }
 
 namespace {
@@ -92,9 +101,9 @@ struct BandKurtosis {
   double sk = kNaN, m = 0, m_eff = 0;
 };
 
-BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
+// The band's complex envelope at baseband, ends included (empty below 8 bins).
+std::vector<Complex> band_envelope(const std::vector<double> &x, double rate, Band band)
 {
-  BandKurtosis b;
   // the end jump treated as the kurtogram treats it (envelope.h): the band the kurtogram
   // chose is judged on the statistic it was chosen by
   const std::size_t n = x.size();
@@ -105,10 +114,20 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
   const double hi = band.hi > 0 ? band.hi : rate / 2;
   const auto k1 = static_cast<std::size_t>(std::max(1.0, std::ceil(band.lo / df)));
   const auto k2 = std::min(X.size() - 1, static_cast<std::size_t>(std::floor(hi / df)));
-  if (k2 < k1 + 7) return b;
+  if (k2 < k1 + 7) return {};
   std::vector<Complex> full(X.begin() + static_cast<long>(k1),
                             X.begin() + static_cast<long>(k2) + 1);
   cfft(full, +1);
+  return full;
+}
+
+BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band,
+                           const std::vector<Complex> *given)
+{
+  BandKurtosis b;
+  const std::vector<Complex> made = given ? std::vector<Complex>() : band_envelope(x, rate, band);
+  const std::vector<Complex> &full = given ? *given : made;
+  if (full.empty()) return b;
   const std::size_t guard = end_guard(full.size());
   const std::vector<Complex> c(full.begin() + static_cast<long>(guard),
                                full.end() - static_cast<long>(guard));
@@ -125,12 +144,12 @@ BandKurtosis band_kurtosis(const std::vector<double> &x, double rate, Band band)
   return b;
 }
 
-DetectionTest gaussian_kurtosis(const std::vector<double> &x, double p)
+// ind: the indicators of x (detect's, computed once)
+DetectionTest gaussian_kurtosis(const std::vector<double> &x, const Indicators &ind, double p)
 {
   DetectionTest t;
   t.name = "kurtosis";
   t.reference = "gaussian";
-  const Indicators ind = indicators(x);
   t.value = ind.kurtosis;
   t.samples = kurtosis_effective_samples(x);
   // scipy.stats.kurtosistest asks for n >= 20 (the Anscombe-Glynn approximation below that)
@@ -146,12 +165,11 @@ DetectionTest gaussian_kurtosis(const std::vector<double> &x, double p)
   return t;
 }
 
-DetectionTest gaussian_crest(const std::vector<double> &x, double p)
+DetectionTest gaussian_crest(const std::vector<double> &x, const Indicators &ind, double p)
 {
   DetectionTest t;
   t.name = "crest";
   t.reference = "gaussian";
-  const Indicators ind = indicators(x);
   t.value = ind.peak / ind.std;  // x is mean-removed: peak |x - mean| / sigma
   t.samples = static_cast<double>(x.size());
   t.threshold = crest_threshold(t.samples, p);
@@ -165,7 +183,7 @@ DetectionTest gaussian_band(const std::vector<double> &x, double rate, const Det
   DetectionTest t;
   t.name = "band_sk";
   t.reference = "gaussian";
-  const BandKurtosis b = band_kurtosis(x, rate, opt.band);
+  const BandKurtosis b = band_kurtosis(x, rate, opt.band, opt.band_envelope);
   t.value = b.sk;
   t.samples = b.m_eff;
   if (!(b.m_eff >= 8) || !std::isfinite(b.sk)) {
@@ -287,15 +305,17 @@ Detection detect(const std::vector<double> &x, double rate, const DetectOptions 
   check_probability(opt.false_alarm, "{detect.false_alarm}");
   if (x.size() < 256) throw Error("detection needs at least 256 samples");
   Detection d;
-  d.white_floor = white_floor_ratio(x);
+  const Indicators ind = indicators(x);  // the three statistics below read them
+  d.white_floor = white_floor_ratio(x, ind.std);
   d.gaussian_applicable = d.white_floor >= kMinWhiteFloor;
   d.gaussian_note = d.gaussian_applicable
                         ? "white noise floor " + format_number(d.white_floor, 3) + " of the spread"
                         : "no noise floor (white floor " + format_number(d.white_floor, 3) +
                               " of the spread < " + format_number(kMinWhiteFloor) +
                               "): a deterministic record, judged only against {detect.baseline}";
-  std::vector<DetectionTest> g = {gaussian_kurtosis(x, opt.false_alarm),
-                                  gaussian_crest(x, opt.false_alarm), gaussian_band(x, rate, opt)};
+  std::vector<DetectionTest> g = {gaussian_kurtosis(x, ind, opt.false_alarm),
+                                  gaussian_crest(x, ind, opt.false_alarm),
+                                  gaussian_band(x, rate, opt)};
   for (auto &t : g) {
     if (!d.gaussian_applicable && t.applicable) {
       t.applicable = false;

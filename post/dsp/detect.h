@@ -38,6 +38,9 @@ struct DetectOptions {
   Band band;                          // envelope band tested by band_sk (and band energy)
   std::size_t bands_searched = 1;     // kurtogram cells the band was chosen among (Bonferroni)
   std::size_t baseline_windows = 16;  // the baseline is split into this many windows
+  // the band's complex envelope as kurtogram() made it from this record (its best_envelope,
+  // when the band is its best), or null: band_sk then transforms the record itself
+  const std::vector<std::complex<double>> *band_envelope = nullptr;
 };
 
 struct Detection {

@@ -137,8 +137,11 @@ std::vector<double> end_jump_removed(const std::vector<double> &x)
   return y;
 }
 
-Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
-                    double fmin, double alpha)
+namespace {
+
+Kurtogram kurtogram_of(const std::vector<double> &x, double rate, int max_level,
+                       double min_bandwidth, double fmin, double alpha,
+                       std::vector<Complex> *best_envelope)
 {
   const std::size_t n = x.size();
   if (n < 64) throw Error("a kurtogram needs at least 64 samples, got " + std::to_string(n));
@@ -183,7 +186,10 @@ Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, do
       const double m = static_cast<double>(kept);
       KurtogramCell cell{nbands, lo, hi, s2 > 0 ? (s4 / m) / ((s2 / m) * (s2 / m)) - 2 : 0, kept};
       kg.cells.push_back(cell);
-      if (cell.kurtosis > kg.best.kurtosis) kg.best = cell;
+      if (cell.kurtosis > kg.best.kurtosis) {
+        kg.best = cell;
+        if (best_envelope) c.swap(*best_envelope);
+      }
     }
   }
   if (kg.cells.empty()) throw Error("kurtogram: no band wide enough (signal too short?)");
@@ -191,6 +197,20 @@ Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, do
   kg.threshold = sk_threshold(kg.best.samples, alpha / static_cast<double>(kg.cells.size()));
   kg.significant = kg.best.kurtosis > kg.threshold;
   return kg;
+}
+
+}  // namespace
+
+Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
+                    double fmin, double alpha)
+{
+  return kurtogram_of(x, rate, max_level, min_bandwidth, fmin, alpha, nullptr);
+}
+
+Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
+                    std::vector<Complex> &best_envelope)
+{
+  return kurtogram_of(x, rate, max_level, min_bandwidth, 0, 0.01, &best_envelope);
 }
 
 }  // namespace ohmdem::post

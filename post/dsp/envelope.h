@@ -4,6 +4,7 @@
 #ifndef OHMDEM_POST_ENVELOPE_H
 #define OHMDEM_POST_ENVELOPE_H
 
+#include <complex>
 #include <cstddef>
 #include <vector>
 
@@ -72,6 +73,11 @@ double sk_threshold(std::size_t m, double alpha);
 // value the detection test computes for it.
 Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
                     double fmin = 0, double alpha = 0.01);
+// The same (fmin 0, alpha 0.01), and the best band's complex envelope at baseband, ends
+// included, into best_envelope: the band_sk test's, which then need not transform the record
+// again.
+Kurtogram kurtogram(const std::vector<double> &x, double rate, int max_level, double min_bandwidth,
+                    std::vector<std::complex<double>> &best_envelope);
 
 }  // namespace ohmdem::post
 

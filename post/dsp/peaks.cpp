@@ -81,7 +81,7 @@ Peak refine_peak(const Spectrum &s, std::size_t k)
   if (!(m0 > 0) || m0 < ml || m0 < mr) return p;
   const int side = mr >= ml ? 1 : -1;
   const double r = (side > 0 ? mr : ml) / m0;
-  auto K = [&](double u) { return window_kernel(s.window, s.segment, s.nfft, u); };
+  const WindowKernel K(s.window, s.segment, s.nfft);
   auto g = [&](double d) { return K(1 - d) / K(d); };
   double d = 0;
   if (r >= 1) {

@@ -23,6 +23,17 @@ std::vector<double> make_window(WindowKind w, std::size_t n);
 // |W(u)| / W(0): magnitude of the window's DFT at an offset of u bins of an nfft-point
 // transform (closed form for cosine sums; nfft >= n when zero padded). 1 at u = 0.
 double window_kernel(WindowKind w, std::size_t n, std::size_t nfft, double u);
+// The same kernel with W(0) computed once (a peak's refinement evaluates it ~120 times).
+class WindowKernel {
+ public:
+  WindowKernel(WindowKind w, std::size_t n, std::size_t nfft);
+  double operator()(double u) const;
+
+ private:
+  WindowKind w_;
+  std::size_t n_, nfft_;
+  double norm0_;  // |W(0)|
+};
 
 // Half-width of the main lobe in bins of the unpadded transform (1 rect, 2 hann/hamming, ...).
 double main_lobe_half_width(WindowKind w);

@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <set>
 #include <tuple>
@@ -261,8 +260,11 @@ std::vector<unsigned char> slurp(const std::string &path)
 {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path + ": cannot open: " + std::strerror(errno));
-  std::vector<unsigned char> b((std::istreambuf_iterator<char>(in)),
-                               std::istreambuf_iterator<char>());
+  // a block at a time: byte by byte through an istreambuf_iterator cost as much as the reading
+  std::vector<unsigned char> b;
+  char block[1 << 16];
+  while (in.read(block, sizeof block) || in.gcount() > 0)
+    b.insert(b.end(), block, block + in.gcount());
   if (in.bad()) throw Error(path + ": cannot be read: " + std::strerror(errno));
   return b;
 }
