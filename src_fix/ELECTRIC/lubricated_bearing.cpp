@@ -85,12 +85,7 @@ void LubricatedBearing::set_geometry(const ResistanceContext &context)
     in.e_prime = 2.0 * hertz.E_eff();
     in.a_coef = unit.a;
     in.b_coef = unit.b;
-    in.eta = state_.eta;
-    in.alpha = state_.alpha;
-    in.sigma = settings_.roughness;
-    in.r_wet = settings_.wetted;
-    in.eps_r = state_.eps_r;
-    in.resistivity = state_.resistivity;
+    set_oil(in, settings_, state_);
     film_[side] = lub::RaceAdmittance(in);
     inner_[side] = races[k]->is_inner() ? 0 : 1;
   }

@@ -52,6 +52,18 @@ struct LubricationSettings {
   bool on() const { return lubricant != "none"; }
 };
 
+// A race's constants that are the oil's and the settings' (both models' RaceInput).
+inline void set_oil(ohmdem::lubrication::RaceInput &in, const LubricationSettings &settings,
+                    const ohmdem::lubrication::LubricantState &oil)
+{
+  in.eta = oil.eta;
+  in.alpha = oil.alpha;
+  in.sigma = settings.roughness;
+  in.r_wet = settings.wetted;
+  in.eps_r = oil.eps_r;
+  in.resistivity = oil.resistivity;
+}
+
 // The global outputs 9-15 of the compute.
 struct LubricatedResult {
   double z_abs = 0, z_phase = 0, c_parallel = 0, r_parallel = 0;

@@ -67,12 +67,7 @@ lub::RaceInput race_input_3d(const FixBearingRace::FilmGeometry &fg,
   const double cbrt_fn = fg.pressed ? std::cbrt(fg.fn) : 0.0;
   r.a_coef = cbrt_fn > 0.0 ? fg.a / cbrt_fn : 0.0;
   r.b_coef = cbrt_fn > 0.0 ? fg.b / cbrt_fn : 0.0;
-  r.eta = oil.eta;
-  r.alpha = oil.alpha;
-  r.sigma = settings.roughness;
-  r.r_wet = settings.wetted;
-  r.eps_r = oil.eps_r;
-  r.resistivity = oil.resistivity;
+  set_oil(r, settings, oil);
   return r;
 }
 
