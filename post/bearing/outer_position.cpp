@@ -152,7 +152,9 @@ OuterPosition outer_position(const std::vector<double> &x, double rate, double f
   p.se_deg = se * to_deg;
   // the centroid of a pulse whose height changes along the crossing lies anywhere within it
   const double half_crossing = std::isfinite(crossing_s) ? 0.5 * 360 * f / nb * crossing_s : 0;
-  p.half_width_deg = student_t_isf(0.025, kPhaseBlocks - 1) * p.se_deg + half_crossing;
+  p.half_width_deg = std::hypot(student_t_isf(0.025, kPhaseBlocks - 1) * p.se_deg,
+                                normal_isf(0.025) * kSystematicDeg) +
+                     half_crossing;
   p.rel_modulation = all.rel_amplitude;
   p.valid = true;
   return p;
