@@ -420,14 +420,16 @@ double FixBearingRace::defect_recess(int i, const ohmdem::BearingSurface &surfac
 
 bool FixBearingRace::defect_pit(int i, double reach, ohmdem::PitView &pit, double &rest) const
 {
-  if (three_d()) return defect_pit_3d(i, reach, pit, rest);
   const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;  // as defect_recess
+  // model 3d: where across the groove the contact lies (the _at queries of a planar race are
+  // the plain ones)
+  const double alpha = three_d() ? contact_angle_3d(i, ring_motion_3d()) : 0.0;
   bool found = false, in_zone = false;
   for (const auto *d : defects_) {
-    if (!found && d->pit_near(defect_surface_, dx, dy, reach, pit))
+    if (!found && d->pit_near_at(defect_surface_, dx, dy, alpha, reach, pit))
       found = true;
     else
-      rest += d->recess(defect_surface_, atom->tag[i], dx, dy, in_zone);
+      rest += d->recess_at(defect_surface_, atom->tag[i], dx, dy, alpha, in_zone);
   }
   return found;
 }

@@ -184,9 +184,9 @@ class FixBearingRace : public FixBearingBody {
   bool reapply_restored_forces_3d();
   // The defects' recess under ball i's contact at contact angle alpha (rad), as defect_recess.
   double defect_recess_3d(int i, double alpha, bool &in_zone) const;
-  // defect_pit at ball i's contact angle of this step's geometry (as post_force_3d's recess).
-  bool defect_pit_3d(int i, double reach, ohmdem::PitView &pit, double &rest) const;
-  double contact_angle_3d(int i) const;  // rad, before the recess, in this ring's frame
+  // Ball i's contact angle with this ring in its position `ring` (rad, before the recess, in
+  // the ring's frame): where across the groove a defect meets the contact.
+  double contact_angle_3d(int i, const ohmdem::RingMotion3d &ring) const;
   std::unique_ptr<ohmdem::RaceContactModel3d> model3d_;
   const FixBearingRace *other_race_ = nullptr;       // the bearing's other race (build_model_3d)
   double cz_ = 0, vcz_ = 0;                          // axial position and velocity of the centre

@@ -179,7 +179,7 @@ void FixBearingRace::post_force_3d()
     if (!defects_.empty()) {
       // Where across the groove the contact lies: its contact angle before the recess.
       bool in_zone = false;
-      recess = defect_recess_3d(i, contact_angle_3d(i), in_zone);
+      recess = defect_recess_3d(i, contact_angle_3d(i, ring), in_zone);
       out[MASKED] = in_zone ? 1.0 : 0.0;
       masked += in_zone;
     }
@@ -396,28 +396,13 @@ FixBearingRace::FilmGeometry FixBearingRace::film_geometry_3d(int i, ohmdem::Are
   return f;
 }
 
-double FixBearingRace::contact_angle_3d(int i) const
+double FixBearingRace::contact_angle_3d(int i, const ohmdem::RingMotion3d &ring) const
 {
-  const ohmdem::RingMotion3d ring = ring_motion_3d();
   const Vec3 rel{atom->x[i][0] - cx_, atom->x[i][1] - cy_, atom->x[i][2] - cz_};
   ohmdem::TorusGroove g = model3d_->groove;
   g.centre_radius += settings_.inner ? u_ : -u_;
   const auto geo = ohmdem::torus_geometry(g, ring.tilted ? ring.tilt.apply_transpose(rel) : rel);
   return std::atan2(geo.sin_alpha, geo.cos_alpha);
-}
-
-bool FixBearingRace::defect_pit_3d(int i, double reach, ohmdem::PitView &pit, double &rest) const
-{
-  const double dx = atom->x[i][0] - cx_, dy = atom->x[i][1] - cy_;
-  const double alpha = contact_angle_3d(i);
-  bool found = false, in_zone = false;
-  for (const auto *d : defects_) {
-    if (!found && d->pit_near_at(defect_surface_, dx, dy, alpha, reach, pit))
-      found = true;
-    else
-      rest += d->recess_at(defect_surface_, atom->tag[i], dx, dy, alpha, in_zone);
-  }
-  return found;
 }
 
 double FixBearingRace::defect_recess_3d(int i, double alpha, bool &in_zone) const

@@ -21,36 +21,23 @@
 #include "ELECTRIC/contact_set.h"
 #include "ELECTRIC/lubricated_bearing.h"
 #include "ELECTRIC/lubricated_network.h"
+#include "ELECTRIC/resistance_path_closed_form.h"
 #include "atom.h"
-#include "conduction/ball_between_races_3d.h"
 #include "lubrication/contact_admittance.h"
 #include "lubrication/pit_contact.h"
 
 using namespace LAMMPS_NS;
 namespace lub = ohmdem::lubrication;
 
-// Both spots pressed: the closed form's own conductance (ball_resistances_3d with the same
-// spots, ellipses and conductivities, so the network and the closed form agree to the bit); one
-// pressed: the ball facing that race on both sides (its spot and the point opposite), as model
-// 2d's ball_dry_conductance; neither: 0.
+// Both spots pressed: the closed form's own conductance (ball_between_3d, so the network and
+// the closed form agree to the bit); one pressed: the ball facing that race on both sides, as
+// model 2d's ball_dry_conductance; neither: 0.
 double LubricatedBearing::ball_dry_conductance_3d(const ResistanceContext &context, int i) const
 {
-  const double gamma = context.gamma_type[atom->type[i]];
-  const ohmdem::RaceContactView v[2] = {race_[0]->contact_of(i), race_[1]->contact_of(i)};
-  const bool pressed[2] = {v[0].fn() > 0.0, v[1].fn() > 0.0};
-  if (!(gamma > 0.0) || !(pressed[0] || pressed[1])) return 0.0;
-  const int a = pressed[0] ? 0 : 1, b = pressed[1] ? 1 : 0;
-  const double *x = atom->x[i];
-  const double u[3] = {v[a].point_x() - x[0], v[a].point_y() - x[1], v[a].point_z() - x[2]};
-  double w[3] = {v[b].point_x() - x[0], v[b].point_y() - x[1], v[b].point_z() - x[2]};
-  if (a == b)
-    for (int k = 0; k < 3; ++k) w[k] = -u[k];
-  const ohmdem::AreaModel area = context.contacts->area_model();
-  const ohmdem::BallResistances3d r = ohmdem::ball_resistances_3d(
-      context.model, gamma, atom->radius[i], context.gamma_type[race_[a]->race_type()],
-      context.gamma_type[race_[b]->race_type()], race_[a]->ellipse_of(i, area),
-      race_[b]->ellipse_of(i, area), u, w);
-  return 1.0 / r.total();
+  const bool pressed[2] = {race_[0]->contact_of(i).fn() > 0.0, race_[1]->contact_of(i).fn() > 0.0};
+  if (!(context.gamma_type[atom->type[i]] > 0.0) || !(pressed[0] || pressed[1])) return 0.0;
+  const FixBearingRace &a = *race_[pressed[0] ? 0 : 1], &b = *race_[pressed[1] ? 1 : 0];
+  return 1.0 / ball_between_3d(context, a, b, *atom, i).total();
 }
 
 namespace {

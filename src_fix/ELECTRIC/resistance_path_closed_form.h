@@ -14,12 +14,21 @@
 #include "ELECTRIC/resistance_context.h"
 #include "ELECTRIC/resistance_path.h"
 #include "common/ordered_reduce.h"
+#include "conduction/ball_between_races_3d.h"
 #include "conduction/conduction_model.h"
 #include "pointers.h"
 
 namespace LAMMPS_NS {
 
 class FixBearingRace;
+class Atom;
+
+// Model 3d: local atom i's resistances between races a and b, its spots as they are in space
+// (resistance_path_closed_form_3d.cpp); with a == b, the ball facing that race on both sides
+// (its spot and the point opposite).
+ohmdem::BallResistances3d ball_between_3d(const ResistanceContext &context,
+                                          const FixBearingRace &a, const FixBearingRace &b,
+                                          const Atom &atom, int i);
 
 class ClosedFormPath : public ResistancePath, protected Pointers {
  public:

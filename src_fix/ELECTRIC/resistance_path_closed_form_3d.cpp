@@ -19,24 +19,24 @@
 
 using namespace LAMMPS_NS;
 
-namespace {
-
 // Ball i's resistances between the two races (its contact vectors from its centre in space).
-ohmdem::BallResistances3d ball_between(const ResistanceContext &context, const FixBearingRace &hi,
-                                       const FixBearingRace &lo, const Atom &atom, int i)
+ohmdem::BallResistances3d LAMMPS_NS::ball_between_3d(const ResistanceContext &context,
+                                                     const FixBearingRace &a,
+                                                     const FixBearingRace &b, const Atom &atom,
+                                                     int i)
 {
-  const ohmdem::RaceContactView ch = hi.contact_of(i), cl = lo.contact_of(i);
+  const ohmdem::RaceContactView ca = a.contact_of(i), cb = b.contact_of(i);
   const double *x = atom.x[i];
-  const double u[3] = {ch.point_x() - x[0], ch.point_y() - x[1], ch.point_z() - x[2]};
-  const double w[3] = {cl.point_x() - x[0], cl.point_y() - x[1], cl.point_z() - x[2]};
+  const double u[3] = {ca.point_x() - x[0], ca.point_y() - x[1], ca.point_z() - x[2]};
+  double w[3] = {cb.point_x() - x[0], cb.point_y() - x[1], cb.point_z() - x[2]};
+  if (&a == &b)
+    for (int k = 0; k < 3; ++k) w[k] = -u[k];
   const ohmdem::AreaModel area = context.contacts->area_model();
   return ohmdem::ball_resistances_3d(context.model, context.gamma_type[atom.type[i]],
-                                     atom.radius[i], context.gamma_type[hi.race_type()],
-                                     context.gamma_type[lo.race_type()], hi.ellipse_of(i, area),
-                                     lo.ellipse_of(i, area), u, w);
+                                     atom.radius[i], context.gamma_type[a.race_type()],
+                                     context.gamma_type[b.race_type()], a.ellipse_of(i, area),
+                                     b.ellipse_of(i, area), u, w);
 }
-
-}  // namespace
 
 bool ClosedFormPath::evaluate_3d(double *phi, PathResult &result)
 {
@@ -64,7 +64,7 @@ bool ClosedFormPath::evaluate_3d(double *phi, PathResult &result)
       continue;
     }
     const double g =
-        races_conduct ? 1.0 / ball_between(context_, race_hi, race_lo, *atom, i).total() : 0.0;
+        races_conduct ? 1.0 / ball_between_3d(context_, race_hi, race_lo, *atom, i).total() : 0.0;
     phi[i] = 0.5;
     g_local_[i] = g;
     balls_[nballs++] = {tag, {g, 1.0, 0.0}};
@@ -103,7 +103,7 @@ void ClosedFormPath::contact_flows_3d(std::vector<ohmdem::ContactFlow> &rows)
       rows.push_back(ohmdem::idle_race_flow(tag, on_hi ? 1 : -1, r, false));
       continue;
     }
-    const ohmdem::BallResistances3d r = ball_between(context_, race_hi, race_lo, *atom, i);
+    const ohmdem::BallResistances3d r = ball_between_3d(context_, race_hi, race_lo, *atom, i);
     ohmdem::ContactFlow two[2];
     ohmdem::ball_between_races_flows(tag, 1.0 / r.total(), v, constriction, r.hi, r.lo, two);
     rows.push_back(two[0]);
